@@ -1,0 +1,497 @@
+#include "freespace/geometry/mesh.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <initializer_list>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include <boost/multiprecision/gmp.hpp>
+
+#include "freespace/input_error.h"
+
+namespace freespace {
+namespace {
+
+using Index = std::uint32_t;
+using Rational = boost::multiprecision::mpq_rational;
+
+constexpr Index kNoIndex = std::numeric_limits<Index>::max();
+
+// A component whose |volume| is at most this fraction of its bounding box volume
+// encloses nothing: the rest is rounding error.
+constexpr double kNoVolumeFraction = 1e-12;
+
+// ---------------------------------------------------------------------------
+// Message text
+
+// Shortest decimal text that reads back as the same double ("0.1", "-inf"); every
+// NaN prints as "nan" (its sign means nothing).
+std::string formatNumber(double value) {
+  if (std::isnan(value)) return "nan";
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::string(buffer, end);
+}
+
+std::string formatPoint(const Point3& point) {
+  return "(" + formatNumber(point.x()) + ", " + formatNumber(point.y()) + ", " +
+         formatNumber(point.z()) + ")";
+}
+
+// "; vertex 3 is at (0, 0, 1), vertex 8 at (1, 0, 1)": where the vertices named by a
+// message are, since welded indices do not appear in the user's file.
+std::string vertexLocations(const std::vector<Point3>& vertices,
+                            std::initializer_list<Index> indices) {
+  std::string text;
+  std::vector<Index> listed;
+  for (Index index : indices) {
+    if (std::find(listed.begin(), listed.end(), index) != listed.end()) continue;
+    text += listed.empty() ? "; vertex " + std::to_string(index) + " is at "
+                           : ", vertex " + std::to_string(index) + " at ";
+    text += formatPoint(vertices[index]);
+    listed.push_back(index);
+  }
+  return text;
+}
+
+std::string edgeName(Index low, Index high) {
+  return "edge (" + std::to_string(low) + ", " + std::to_string(high) + ")";
+}
+
+// ---------------------------------------------------------------------------
+// Checks on the raw soup
+
+void requireFiniteCoordinates(const TriangleSoup& soup, const std::string& source) {
+  for (std::size_t v = 0; v < soup.vertices.size(); ++v) {
+    for (int axis = 0; axis < 3; ++axis) {
+      const double coordinate = soup.vertices[v][axis];
+      if (!std::isfinite(coordinate)) {
+        throw InputError(source, "vertex " + std::to_string(v) +
+                                     " has a non-finite coordinate (" +
+                                     formatNumber(coordinate) + ")");
+      }
+    }
+  }
+}
+
+void requireTriangles(const TriangleSoup& soup, const std::string& source) {
+  if (soup.triangles.empty()) throw InputError(source, "contains no triangles");
+}
+
+void requireIndicesInRange(const TriangleSoup& soup, const std::string& source) {
+  const std::size_t vertexCount = soup.vertices.size();
+  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
+    for (Index index : soup.triangles[t]) {
+      if (index >= vertexCount) {
+        throw InputError(source, "triangle " + std::to_string(t) + " refers to vertex " +
+                                     std::to_string(index) + ", but there are only " +
+                                     std::to_string(vertexCount) + " vertices");
+      }
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Welding
+
+struct Surface {
+  std::vector<Point3> vertices;
+  std::vector<TriangleIndices> triangles;
+};
+
+bool lexicographicallyLess(const Point3& a, const Point3& b) {
+  if (a.x() != b.x()) return a.x() < b.x();
+  if (a.y() != b.y()) return a.y() < b.y();
+  return a.z() < b.z();
+}
+
+// Merges vertices with identical coordinates and drops unused ones; the kept
+// vertices stay in the order of their first appearance in the soup.
+Surface weldIdenticalVertices(const TriangleSoup& soup) {
+  const std::size_t soupSize = soup.vertices.size();
+  std::vector<bool> used(soupSize, false);
+  for (const TriangleIndices& triangle : soup.triangles) {
+    for (Index index : triangle) used[index] = true;
+  }
+
+  std::vector<Index> byPosition;
+  for (Index v = 0; v < soupSize; ++v) {
+    if (used[v]) byPosition.push_back(v);
+  }
+  std::sort(byPosition.begin(), byPosition.end(), [&](Index a, Index b) {
+    const Point3& p = soup.vertices[a];
+    const Point3& q = soup.vertices[b];
+    if (lexicographicallyLess(p, q)) return true;
+    if (lexicographicallyLess(q, p)) return false;
+    return a < b;
+  });
+
+  // Each used soup vertex points to the first soup vertex at the same position.
+  std::vector<Index> firstAtPosition(soupSize, kNoIndex);
+  for (std::size_t i = 0; i < byPosition.size(); ++i) {
+    const bool startsRun =
+        i == 0 || soup.vertices[byPosition[i]] != soup.vertices[byPosition[i - 1]];
+    firstAtPosition[byPosition[i]] = startsRun ? byPosition[i] : firstAtPosition[byPosition[i - 1]];
+  }
+
+  Surface surface;
+  std::vector<Index> weldedIndex(soupSize, kNoIndex);
+  for (Index v = 0; v < soupSize; ++v) {
+    if (used[v] && firstAtPosition[v] == v) {
+      weldedIndex[v] = static_cast<Index>(surface.vertices.size());
+      surface.vertices.push_back(soup.vertices[v]);
+    }
+  }
+  surface.triangles.reserve(soup.triangles.size());
+  for (const TriangleIndices& triangle : soup.triangles) {
+    TriangleIndices welded;
+    for (int corner = 0; corner < 3; ++corner) {
+      welded[corner] = weldedIndex[firstAtPosition[triangle[corner]]];
+    }
+    surface.triangles.push_back(welded);
+  }
+  return surface;
+}
+
+// ---------------------------------------------------------------------------
+// Zero-area and duplicate triangles
+
+// Component k of (b - a) x (c - a) is u[i] v[j] - u[j] v[i]: a 2D orientation
+// determinant. Computed in doubles it is wrong by less than 3.0000000000000018 eps
+// (|u[i] v[j]| + |u[j] v[i]|) (Shewchuk's orient2d bound) when no product under- or
+// overflows; 8 eps leaves room for a non-default rounding mode.
+bool crossProductClearlyNonZero(const Point3& a, const Point3& b, const Point3& c) {
+  constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;
+  constexpr double kErrorFactor = 8 * kUnitRoundoff;
+  constexpr double kSmallestSafeMagnitude = 1e-280;
+  const Point3 u = b - a;
+  const Point3 v = c - a;
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3;
+    const int j = (k + 2) % 3;
+    const double left = u[i] * v[j];
+    const double right = u[j] * v[i];
+    const double magnitude = std::abs(left) + std::abs(right);
+    if (std::isfinite(magnitude) && magnitude >= kSmallestSafeMagnitude &&
+        std::abs(left - right) > kErrorFactor * magnitude) {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool crossProductExactlyZero(const Point3& a, const Point3& b, const Point3& c) {
+  Rational u[3];
+  Rational v[3];
+  for (int k = 0; k < 3; ++k) {
+    const Rational origin(a[k]);
+    u[k] = Rational(b[k]) - origin;
+    v[k] = Rational(c[k]) - origin;
+  }
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3;
+    const int j = (k + 2) % 3;
+    if (u[i] * v[j] != u[j] * v[i]) return false;
+  }
+  return true;
+}
+
+bool hasZeroArea(const Surface& surface, const TriangleIndices& triangle) {
+  const auto [a, b, c] = triangle;
+  if (a == b || b == c || c == a) return true;
+  const Point3& p = surface.vertices[a];
+  const Point3& q = surface.vertices[b];
+  const Point3& r = surface.vertices[c];
+  return !crossProductClearlyNonZero(p, q, r) && crossProductExactlyZero(p, q, r);
+}
+
+void requireNonZeroAreas(const Surface& surface, const std::string& source) {
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+    const TriangleIndices& triangle = surface.triangles[t];
+    if (!hasZeroArea(surface, triangle)) continue;
+    const auto [a, b, c] = triangle;
+    throw InputError(source, "triangle " + std::to_string(t) + " (vertices " +
+                                 std::to_string(a) + ", " + std::to_string(b) + ", " +
+                                 std::to_string(c) + ") has zero area" +
+                                 vertexLocations(surface.vertices, {a, b, c}));
+  }
+}
+
+// Whether two triangles on the same three vertices run through them the same way.
+bool sameOrientation(const TriangleIndices& first, const TriangleIndices& second) {
+  const auto start = std::find(second.begin(), second.end(), first[0]) - second.begin();
+  return second[(start + 1) % 3] == first[1];
+}
+
+void requireDistinctTriangles(const Surface& surface, const std::string& source) {
+  std::vector<std::pair<TriangleIndices, Index>> byVertexSet;
+  byVertexSet.reserve(surface.triangles.size());
+  for (Index t = 0; t < surface.triangles.size(); ++t) {
+    TriangleIndices vertexSet = surface.triangles[t];
+    std::sort(vertexSet.begin(), vertexSet.end());
+    byVertexSet.emplace_back(vertexSet, t);
+  }
+  std::sort(byVertexSet.begin(), byVertexSet.end());
+
+  // Report the duplicate whose second triangle comes first in the soup.
+  std::pair<Index, Index> duplicate{kNoIndex, kNoIndex};
+  for (std::size_t i = 1; i < byVertexSet.size(); ++i) {
+    const bool sameSet = byVertexSet[i].first == byVertexSet[i - 1].first;
+    const bool secondOfRun = i < 2 || byVertexSet[i - 2].first != byVertexSet[i].first;
+    if (sameSet && secondOfRun && byVertexSet[i].second < duplicate.second) {
+      duplicate = {byVertexSet[i - 1].second, byVertexSet[i].second};
+    }
+  }
+  if (duplicate.first == kNoIndex) return;
+
+  const TriangleIndices& first = surface.triangles[duplicate.first];
+  const TriangleIndices& second = surface.triangles[duplicate.second];
+  const auto [a, b, c] = first;
+  const std::string orientationNote =
+      sameOrientation(first, second) ? ""
+                                     : " in opposite orientations (a double-sided surface?)";
+  throw InputError(source, "triangles " + std::to_string(duplicate.first) + " and " +
+                               std::to_string(duplicate.second) +
+                               " use the same three vertices (" + std::to_string(a) + ", " +
+                               std::to_string(b) + ", " + std::to_string(c) + ")" +
+                               orientationNote + vertexLocations(surface.vertices, {a, b, c}));
+}
+
+// ---------------------------------------------------------------------------
+// Edges: manifold, closed, consistently oriented
+
+// One side of an undirected edge: the triangle and the direction it runs along it.
+struct EdgeUse {
+  Index low;   // the edge's vertices, low < high
+  Index high;
+  Index triangle;
+  bool lowToHigh;
+};
+
+// Edge uses sorted by edge, then by triangle.
+std::vector<EdgeUse> sortedEdgeUses(const std::vector<TriangleIndices>& triangles) {
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * triangles.size());
+  for (Index t = 0; t < triangles.size(); ++t) {
+    for (int corner = 0; corner < 3; ++corner) {
+      const Index from = triangles[t][corner];
+      const Index to = triangles[t][(corner + 1) % 3];
+      uses.push_back({std::min(from, to), std::max(from, to), t, from < to});
+    }
+  }
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) {
+    if (a.low != b.low) return a.low < b.low;
+    if (a.high != b.high) return a.high < b.high;
+    return a.triangle < b.triangle;
+  });
+  return uses;
+}
+
+// Calls visit(first, count) for the run of uses of each edge.
+template <typename Visitor>
+void forEachEdge(const std::vector<EdgeUse>& uses, Visitor visit) {
+  std::size_t first = 0;
+  while (first < uses.size()) {
+    std::size_t end = first + 1;
+    while (end < uses.size() && uses[end].low == uses[first].low &&
+           uses[end].high == uses[first].high) {
+      ++end;
+    }
+    visit(first, end - first);
+    first = end;
+  }
+}
+
+// Edges shared by more than two triangles are reported before open edges: they
+// are the cause, open edges often only a consequence.
+void requireEdgeManifold(const std::vector<EdgeUse>& uses, const std::vector<Point3>& vertices,
+                         const std::string& source) {
+  forEachEdge(uses, [&](std::size_t first, std::size_t count) {
+    const EdgeUse& edge = uses[first];
+    if (count > 2) {
+      throw InputError(source, edgeName(edge.low, edge.high) + " is shared by " +
+                                   std::to_string(count) + " triangles" +
+                                   vertexLocations(vertices, {edge.low, edge.high}));
+    }
+  });
+  forEachEdge(uses, [&](std::size_t first, std::size_t count) {
+    const EdgeUse& edge = uses[first];
+    if (count == 1) {
+      throw InputError(source, edgeName(edge.low, edge.high) +
+                                   " borders only one triangle: the surface is not closed" +
+                                   vertexLocations(vertices, {edge.low, edge.high}));
+    }
+  });
+}
+
+// Assumes every edge has exactly two uses (requireEdgeManifold passed).
+void requireConsistentOrientation(const std::vector<EdgeUse>& uses,
+                                  const std::vector<Point3>& vertices,
+                                  const std::string& source) {
+  for (std::size_t i = 0; i < uses.size(); i += 2) {
+    const EdgeUse& one = uses[i];
+    const EdgeUse& other = uses[i + 1];
+    if (one.lowToHigh == other.lowToHigh) {
+      throw InputError(source, "triangles " + std::to_string(one.triangle) + " and " +
+                                   std::to_string(other.triangle) +
+                                   " have inconsistent orientation across " +
+                                   edgeName(one.low, one.high) +
+                                   vertexLocations(vertices, {one.low, one.high}));
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------
+// Components
+
+class DisjointSets {
+ public:
+  explicit DisjointSets(std::size_t size) : parent_(size) {
+    for (Index i = 0; i < size; ++i) parent_[i] = i;
+  }
+
+  Index find(Index element) {
+    while (parent_[element] != element) {
+      parent_[element] = parent_[parent_[element]];
+      element = parent_[element];
+    }
+    return element;
+  }
+
+  void unite(Index a, Index b) {
+    const Index rootA = find(a);
+    const Index rootB = find(b);
+    parent_[std::max(rootA, rootB)] = std::min(rootA, rootB);
+  }
+
+ private:
+  std::vector<Index> parent_;
+};
+
+// Component of each triangle through shared edges (every edge has two uses),
+// numbered in the order of each component's first triangle.
+std::vector<Index> connectedComponents(std::size_t triangleCount,
+                                       const std::vector<EdgeUse>& uses) {
+  DisjointSets sets(triangleCount);
+  for (std::size_t i = 0; i < uses.size(); i += 2) sets.unite(uses[i].triangle, uses[i + 1].triangle);
+
+  std::vector<Index> componentOfRoot(triangleCount, kNoIndex);
+  std::vector<Index> component(triangleCount);
+  Index componentCount = 0;
+  for (Index t = 0; t < triangleCount; ++t) {
+    Index& numbered = componentOfRoot[sets.find(t)];
+    if (numbered == kNoIndex) numbered = componentCount++;
+    component[t] = numbered;
+  }
+  return component;
+}
+
+struct ComponentSummary {
+  Box3 bounds;
+  Index representative = kNoIndex;
+  double signedVolume = 0;
+};
+
+// Bounds, first vertex and signed volume (sum of det(v0, v1, v2) / 6, taken
+// relative to the bounding box's min corner for accuracy, dividing once at the end)
+// of each component.
+std::vector<ComponentSummary> summarizeComponents(const Surface& surface,
+                                                  const std::vector<Index>& componentOf) {
+  const Index componentCount =
+      componentOf.empty() ? 0 : *std::max_element(componentOf.begin(), componentOf.end()) + 1;
+  std::vector<ComponentSummary> components(componentCount);
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+    ComponentSummary& component = components[componentOf[t]];
+    if (component.representative == kNoIndex) component.representative = surface.triangles[t][0];
+    for (Index v : surface.triangles[t]) component.bounds.extend(surface.vertices[v]);
+  }
+  for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
+    ComponentSummary& component = components[componentOf[t]];
+    const Point3& origin = component.bounds.min();
+    const auto [a, b, c] = surface.triangles[t];
+    const Point3 p = surface.vertices[a] - origin;
+    const Point3 q = surface.vertices[b] - origin;
+    const Point3 r = surface.vertices[c] - origin;
+    component.signedVolume += p.dot(q.cross(r));
+  }
+  for (ComponentSummary& component : components) component.signedVolume /= 6;
+  return components;
+}
+
+void requireVolume(const ComponentSummary& component, Index index, const std::string& source) {
+  const std::string name = "component " + std::to_string(index);
+  if (!std::isfinite(component.signedVolume)) {
+    throw InputError(source, name + " is too large: its volume overflows");
+  }
+  const double boxVolume = component.bounds.volume();
+  if (!(std::abs(component.signedVolume) > kNoVolumeFraction * boxVolume)) {
+    throw InputError(source, name + " encloses no volume");
+  }
+}
+
+void flipTriangles(std::vector<TriangleIndices>& triangles, const std::vector<Index>& componentOf,
+                   Index component) {
+  for (std::size_t t = 0; t < triangles.size(); ++t) {
+    if (componentOf[t] == component) std::swap(triangles[t][1], triangles[t][2]);
+  }
+}
+
+}  // namespace
+
+Mesh Mesh::fromSoup(const TriangleSoup& soup, const std::string& sourceName,
+                    std::vector<std::string>* warnings) {
+  requireFiniteCoordinates(soup, sourceName);
+  requireTriangles(soup, sourceName);
+  requireIndicesInRange(soup, sourceName);
+  Surface surface = weldIdenticalVertices(soup);
+  requireNonZeroAreas(surface, sourceName);
+  requireDistinctTriangles(surface, sourceName);
+  const std::vector<EdgeUse> edgeUses = sortedEdgeUses(surface.triangles);
+  requireEdgeManifold(edgeUses, surface.vertices, sourceName);
+  requireConsistentOrientation(edgeUses, surface.vertices, sourceName);
+
+  Mesh mesh;
+  mesh.triangleComponent_ = connectedComponents(surface.triangles.size(), edgeUses);
+  const std::vector<ComponentSummary> components =
+      summarizeComponents(surface, mesh.triangleComponent_);
+  for (Index c = 0; c < components.size(); ++c) {
+    const ComponentSummary& component = components[c];
+    requireVolume(component, c, sourceName);
+    if (component.signedVolume < 0) {
+      flipTriangles(surface.triangles, mesh.triangleComponent_, c);
+      if (warnings) {
+        warnings->push_back(sourceName + ": component " + std::to_string(c) +
+                            " was inside-out and has been flipped");
+      }
+    }
+    mesh.componentBounds_.push_back(component.bounds);
+    mesh.componentVertex_.push_back(component.representative);
+    mesh.componentVolume_.push_back(std::abs(component.signedVolume));
+  }
+  mesh.vertices_ = std::move(surface.vertices);
+  mesh.triangles_ = std::move(surface.triangles);
+  return mesh;
+}
+
+Box3 Mesh::bounds() const {
+  Box3 box;
+  for (const Box3& componentBox : componentBounds_) box.extend(componentBox);
+  return box;
+}
+
+double Mesh::volume() const {
+  double total = 0;
+  for (double componentVolume : componentVolume_) total += componentVolume;
+  return total;
+}
+
+Mesh Mesh::translated(const Point3& offset, const std::string& sourceName) const {
+  TriangleSoup soup{vertices_, triangles_};
+  for (Point3& vertex : soup.vertices) vertex += offset;
+  return fromSoup(soup, sourceName);
+}
+
+}  // namespace freespace
