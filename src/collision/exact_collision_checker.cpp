@@ -1,0 +1,150 @@
+#include "freespace/collision/exact_collision_checker.h"
+
+#include <map>
+#include <vector>
+
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+
+#include "closed_triangle_tests.h"
+#include "placed_pair.h"
+
+namespace freespace {
+
+namespace {
+
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+using TreePoint = bg::model::point<double, 3, bg::cs::cartesian>;
+using TreeBox = bg::model::box<TreePoint>;
+using TreeEntry = std::pair<TreeBox, std::uint32_t>;  // box, world triangle
+using TriangleTree = bgi::rtree<TreeEntry, bgi::rstar<16>>;
+
+using detail::kRobotPoint;
+using detail::PlacedPair;
+using detail::PointId;
+using Tests = detail::ClosedTriangleTests<PlacedPair, PointId>;
+
+TreeBox treeBox(const Box3& box) {
+  return {TreePoint(box.min().x(), box.min().y(), box.min().z()),
+          TreePoint(box.max().x(), box.max().y(), box.max().z())};
+}
+
+Tests::Triangle worldTriangle(const Mesh& world, std::uint32_t triangle) {
+  const TriangleIndices& t = world.triangles()[triangle];
+  return {t[0], t[1], t[2]};
+}
+
+Tests::Triangle robotTriangle(const Mesh& robot, std::uint32_t triangle) {
+  const TriangleIndices& t = robot.triangles()[triangle];
+  return {t[0] | kRobotPoint, t[1] | kRobotPoint, t[2] | kRobotPoint};
+}
+
+TriangleTree buildTree(const Mesh& world) {
+  std::vector<TreeEntry> entries;
+  entries.reserve(world.triangles().size());
+  for (std::uint32_t i = 0; i < world.triangles().size(); ++i) {
+    Box3 box;
+    for (std::uint32_t vertex : world.triangles()[i]) box.extend(world.vertices()[vertex]);
+    entries.emplace_back(treeBox(box), i);
+  }
+  return TriangleTree(entries.begin(), entries.end());  // bulk loading
+}
+
+}  // namespace
+
+struct ExactCollisionChecker::Impl {
+  Impl(const Mesh& robotMesh, const Mesh& worldMesh)
+      : robot(robotMesh), world(worldMesh), worldTree(buildTree(world)) {
+    robotComponentTriangles.resize(robot.componentCount());
+    for (std::uint32_t i = 0; i < robot.triangles().size(); ++i) {
+      robotComponentTriangles[robot.triangleComponents()[i]].push_back(i);
+    }
+  }
+
+  bool surfacesIntersect(PlacedPair& pair, Tests& tests) const;
+  bool robotInsideWorld(PlacedPair& pair, Tests& tests) const;
+  bool worldInsideRobot(PlacedPair& pair, Tests& tests) const;
+
+  Mesh robot;
+  Mesh world;
+  TriangleTree worldTree;
+  std::vector<std::vector<std::uint32_t>> robotComponentTriangles;
+  mutable std::atomic<std::uint64_t> evaluated{0};
+  mutable std::atomic<std::uint64_t> exact{0};
+};
+
+bool ExactCollisionChecker::Impl::surfacesIntersect(PlacedPair& pair, Tests& tests) const {
+  std::vector<TreeEntry> candidates;
+  for (std::uint32_t i = 0; i < robot.triangles().size(); ++i) {
+    candidates.clear();
+    worldTree.query(bgi::intersects(treeBox(pair.robotTriangleBounds(i))), std::back_inserter(candidates));
+    for (const TreeEntry& candidate : candidates) {
+      if (tests.trianglesIntersect(robotTriangle(robot, i), worldTriangle(world, candidate.second))) return true;
+    }
+  }
+  return false;
+}
+
+/// With the surfaces disjoint, each robot component is wholly inside or wholly
+/// outside each world component: one vertex decides. Winding numbers are counted
+/// along a ray in +x (ClosedTriangleTests::rayCrossing).
+bool ExactCollisionChecker::Impl::robotInsideWorld(PlacedPair& pair, Tests& tests) const {
+  const double rayEnd = world.bounds().max().x();
+  std::vector<TreeEntry> candidates;
+  for (std::uint32_t vertex : robot.componentRepresentatives()) {
+    const PointId q = vertex | kRobotPoint;
+    Box3 ray = pair.bounds(q);
+    if (ray.min().x() > rayEnd) continue;
+    ray.max().x() = rayEnd;
+    candidates.clear();
+    worldTree.query(bgi::intersects(treeBox(ray)), std::back_inserter(candidates));
+    std::map<std::uint32_t, int> windingByComponent;
+    bool onSurface = false;
+    for (const TreeEntry& candidate : candidates) {
+      const int crossing = tests.rayCrossing(q, worldTriangle(world, candidate.second), onSurface);
+      windingByComponent[world.triangleComponents()[candidate.second]] += crossing;
+    }
+    if (onSurface) return true;
+    for (const auto& [component, winding] : windingByComponent) {
+      if (winding != 0) return true;
+    }
+  }
+  return false;
+}
+
+bool ExactCollisionChecker::Impl::worldInsideRobot(PlacedPair& pair, Tests& tests) const {
+  const Box3 robotBounds = pair.robotBounds();
+  for (std::uint32_t q : world.componentRepresentatives()) {
+    if (!robotBounds.contains(world.vertices()[q])) continue;
+    for (const std::vector<std::uint32_t>& triangles : robotComponentTriangles) {
+      int winding = 0;
+      bool onSurface = false;
+      for (std::uint32_t triangle : triangles) winding += tests.rayCrossing(q, robotTriangle(robot, triangle), onSurface);
+      if (onSurface || winding != 0) return true;
+    }
+  }
+  return false;
+}
+
+ExactCollisionChecker::ExactCollisionChecker(const Mesh& robot, const Mesh& world)
+    : impl_(std::make_unique<Impl>(robot, world)) {}
+
+ExactCollisionChecker::~ExactCollisionChecker() = default;
+
+bool ExactCollisionChecker::inCollision(const Pose2& pose) const {
+  RoundingScope rounding;
+  PlacedPair pair(impl_->robot, impl_->world, pose);
+  Tests tests(pair);
+  const bool collides = impl_->surfacesIntersect(pair, tests) || impl_->robotInsideWorld(pair, tests) ||
+                        impl_->worldInsideRobot(pair, tests);
+  impl_->evaluated.fetch_add(pair.evaluatedCount(), std::memory_order_relaxed);
+  impl_->exact.fetch_add(pair.exactCount(), std::memory_order_relaxed);
+  return collides;
+}
+
+ExactCollisionChecker::PredicateCounts ExactCollisionChecker::predicateCounts() const {
+  return {impl_->evaluated.load(), impl_->exact.load()};
+}
+
+}  // namespace freespace
