@@ -1,0 +1,61 @@
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "freespace/geometry/mesh.h"
+
+namespace freespace {
+
+/// A configuration of the robot: translation (x, y) and rotation theta (radians)
+/// about the robot's own vertical axis.
+struct Pose2 {
+  double x = 0;
+  double y = 0;
+  double theta = 0;
+};
+
+/// An OMPL.app planar problem (.cfg file). Mesh paths are stored as written in the
+/// file (relative to the .cfg's folder) and resolved by loadProblem.
+struct PlanarProblem {
+  std::string name;
+  std::string robot;
+  std::string world;
+  Pose2 start;
+  Pose2 goal;
+  std::optional<Eigen::AlignedBox2d> volume;  // volume.min.x/y, volume.max.x/y
+  std::string objective;                       // optional
+  std::optional<double> objectiveThreshold;    // objective.threshold
+  double timeLimit = 10.0;                     // [benchmark] time_limit (s)
+  double memLimit = 10000.0;                   // [benchmark] mem_limit (MB)
+  unsigned runCount = 10;                      // [benchmark] run_count
+  std::vector<std::string> planners;           // [planner] keys, in file order
+};
+
+/// Reads a .cfg. Missing required keys (robot, world, start.x/y/theta,
+/// goal.x/y/theta) and malformed values are InputError; unknown sections and keys
+/// are appended to `warnings`.
+PlanarProblem readProblem(const std::string& cfgPath, std::vector<std::string>* warnings = nullptr);
+
+/// Writes a .cfg that readProblem (and OMPL.app) reads back. Refuses to overwrite an
+/// existing file unless `overwrite` is set.
+void writeProblem(const PlanarProblem& problem, const std::string& cfgPath, bool overwrite = false);
+
+/// A problem with its meshes loaded. As in OMPL.app, the robot is re-centred at the
+/// average of its vertices with the centre's z set to 0: centre = (mean x, mean y, 0)
+/// is subtracted, so the robot turns about the vertical line through its average
+/// and its heights are unchanged.
+struct LoadedProblem {
+  PlanarProblem problem;
+  std::string cfgPath;
+  Mesh robot;
+  Mesh world;
+  Point3 robotCentre = Point3::Zero();  // subtracted from the robot's vertices
+};
+
+LoadedProblem loadProblem(const std::string& cfgPath, std::vector<std::string>* warnings = nullptr);
+
+}  // namespace freespace

@@ -1,0 +1,121 @@
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "freespace/input_error.h"
+#include "freespace/problem/planar_problem.h"
+#include "temp_dir.h"
+
+using namespace freespace;
+using freespace::testing::TempDir;
+
+namespace {
+
+void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+const char* kCubeObj =
+    "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+    "f 1 3 2\nf 2 3 4\nf 5 6 7\nf 6 8 7\nf 1 2 5\nf 2 6 5\nf 3 7 4\nf 4 7 8\nf 1 5 3\nf 3 5 7\nf 2 4 6\nf 4 8 6\n";
+
+std::string errorOf(const std::string& path) {
+  try {
+    readProblem(path);
+  } catch (const InputError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Problem, ReadsOmplAppKeys) {
+  TempDir dir;
+  writeText(dir.file("p.cfg"),
+            "[problem]\nname = test\nrobot = r.obj\nworld = w.obj\n"
+            "start.x = 1.5\nstart.y = -2\nstart.theta = 0.25\ngoal.x = 3\ngoal.y = 4\ngoal.theta = -3.1\n"
+            "volume.min.x = -10\nvolume.min.y = -11\nvolume.max.x = 12\nvolume.max.y = 13\n"
+            "[benchmark]\ntime_limit = 5\nmem_limit = 1000\nrun_count = 7\n"
+            "[planner]\nrrtconnect =\nprm =\n");
+  std::vector<std::string> warnings;
+  const PlanarProblem problem = readProblem(dir.file("p.cfg"), &warnings);
+  EXPECT_EQ(problem.name, "test");
+  EXPECT_EQ(problem.robot, "r.obj");
+  EXPECT_EQ(problem.world, "w.obj");
+  EXPECT_EQ(problem.start.x, 1.5);
+  EXPECT_EQ(problem.start.y, -2);
+  EXPECT_EQ(problem.start.theta, 0.25);
+  EXPECT_EQ(problem.goal.theta, -3.1);
+  ASSERT_TRUE(problem.volume.has_value());
+  EXPECT_EQ(problem.volume->min().y(), -11);
+  EXPECT_EQ(problem.volume->max().x(), 12);
+  EXPECT_EQ(problem.timeLimit, 5);
+  EXPECT_EQ(problem.runCount, 7u);
+  EXPECT_EQ(problem.planners, (std::vector<std::string>{"rrtconnect", "prm"}));
+  EXPECT_TRUE(warnings.empty());
+}
+
+TEST(Problem, MissingRequiredKeyIsAnError) {
+  TempDir dir;
+  writeText(dir.file("p.cfg"), "[problem]\nrobot = r.obj\nworld = w.obj\nstart.x = 0\nstart.y = 0\n"
+                               "goal.x = 1\ngoal.y = 1\ngoal.theta = 0\n");
+  EXPECT_EQ(errorOf(dir.file("p.cfg")), dir.file("p.cfg") + ": missing required key 'start.theta' in [problem]");
+  writeText(dir.file("q.cfg"), "[benchmark]\nrun_count = 3\n");
+  EXPECT_EQ(errorOf(dir.file("q.cfg")), dir.file("q.cfg") + ": missing section [problem]");
+}
+
+TEST(Problem, BadValuesAndSyntaxAreErrors) {
+  TempDir dir;
+  writeText(dir.file("p.cfg"), "[problem]\nrobot = r.obj\nworld = w.obj\nstart.x = abc\nstart.y = 0\n"
+                               "start.theta = 0\ngoal.x = 1\ngoal.y = 1\ngoal.theta = 0\n");
+  EXPECT_EQ(errorOf(dir.file("p.cfg")), dir.file("p.cfg") + ": [problem] start.x = 'abc' is not a finite number");
+  writeText(dir.file("s.cfg"), "[problem\nrobot = r.obj\n");
+  EXPECT_NE(errorOf(dir.file("s.cfg")).find(dir.file("s.cfg") + ": line 1"), std::string::npos);
+  EXPECT_EQ(errorOf(dir.file("none.cfg")), dir.file("none.cfg") + ": cannot open file");
+}
+
+TEST(Problem, UnknownKeysAreWarnings) {
+  TempDir dir;
+  writeText(dir.file("p.cfg"), "[problem]\nrobot = r.obj\nworld = w.obj\nstart.x = 0\nstart.y = 0\n"
+                               "start.theta = 0\ngoal.x = 1\ngoal.y = 1\ngoal.theta = 0\ncolour = red\n[extra]\na = 1\n");
+  std::vector<std::string> warnings;
+  readProblem(dir.file("p.cfg"), &warnings);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0], dir.file("p.cfg") + ": unknown key 'colour' in [problem] ignored");
+  EXPECT_EQ(warnings[1], dir.file("p.cfg") + ": unknown section [extra] ignored");
+}
+
+TEST(Problem, WriteThenReadGivesTheSameProblem) {
+  TempDir dir;
+  PlanarProblem problem;
+  problem.name = "round trip";
+  problem.robot = "robot.dae";
+  problem.world = "world.dae";
+  problem.start = {0.1, -0.2, 0.3};
+  problem.goal = {1e-7, 2.5, -3.0};
+  problem.volume = Eigen::AlignedBox2d(Eigen::Vector2d(-1, -2), Eigen::Vector2d(3, 4));
+  problem.runCount = 4;
+  problem.planners = {"kpiece", "rrt"};
+  writeProblem(problem, dir.file("p.cfg"));
+  const PlanarProblem back = readProblem(dir.file("p.cfg"));
+  EXPECT_EQ(back.name, problem.name);
+  EXPECT_EQ(back.start.y, problem.start.y);
+  EXPECT_EQ(back.goal.x, problem.goal.x);
+  EXPECT_EQ(back.volume->max().y(), 4);
+  EXPECT_EQ(back.runCount, 4u);
+  EXPECT_EQ(back.planners, problem.planners);
+  // Nothing the user had is overwritten.
+  EXPECT_THROW(writeProblem(problem, dir.file("p.cfg")), InputError);
+}
+
+TEST(Problem, LoadRecentresTheRobotAtItsVertexAverage) {
+  TempDir dir;
+  writeText(dir.file("cube.obj"), kCubeObj);
+  writeText(dir.file("p.cfg"), "[problem]\nrobot = cube.obj\nworld = cube.obj\nstart.x = 0\nstart.y = 0\n"
+                               "start.theta = 0\ngoal.x = 1\ngoal.y = 1\ngoal.theta = 0\n");
+  const LoadedProblem loaded = loadProblem(dir.file("p.cfg"));
+  // The unit cube's vertex average is (0.5, 0.5, 0.5); only x and y are removed.
+  EXPECT_EQ(loaded.robotCentre, Point3(0.5, 0.5, 0));
+  EXPECT_EQ(loaded.robot.bounds().min(), Point3(-0.5, -0.5, 0));
+  EXPECT_EQ(loaded.robot.bounds().max(), Point3(0.5, 0.5, 1));
+  EXPECT_EQ(loaded.world.bounds().min(), Point3(0, 0, 0));
+}
