@@ -1,0 +1,14 @@
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace freespace::cli {
+
+/// Each command registers its subcommand, options and callback on the application.
+/// Callbacks throw freespace::InputError for bad input; main() turns it into a
+/// message on stderr and exit status 2.
+void addCheckCommand(CLI::App& app);
+void addInfoCommand(CLI::App& app);
+void addGenerateCommand(CLI::App& app);
+
+}  // namespace freespace::cli

@@ -1,0 +1,81 @@
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "scene_input.h"
+
+namespace freespace::cli {
+
+namespace {
+
+nlohmann::json boxJson(const Box3& box) {
+  return {{"min", {box.min().x(), box.min().y(), box.min().z()}},
+          {"max", {box.max().x(), box.max().y(), box.max().z()}}};
+}
+
+nlohmann::json meshJson(const std::string& file, const Mesh& mesh) {
+  nlohmann::json components = nlohmann::json::array();
+  for (const Box3& box : mesh.componentBounds()) {
+    components.push_back({{"bounds", boxJson(box)}, {"z_range", {box.min().z(), box.max().z()}}});
+  }
+  return {{"file", file},
+          {"vertices", mesh.vertices().size()},
+          {"triangles", mesh.triangles().size()},
+          {"components", mesh.componentCount()},
+          {"volume", mesh.volume()},
+          {"bounds", boxJson(mesh.bounds())},
+          {"z_range", {mesh.bounds().min().z(), mesh.bounds().max().z()}},
+          {"component_list", components}};
+}
+
+void printBox(const char* label, const Box3& box) {
+  std::cout << label << "[" << box.min().x() << ", " << box.max().x() << "] x [" << box.min().y() << ", "
+            << box.max().y() << "] x [" << box.min().z() << ", " << box.max().z() << "]\n";
+}
+
+void printMesh(const char* role, const nlohmann::json& info, const Mesh& mesh) {
+  std::cout << role << ": " << info["file"].get<std::string>() << "\n"
+            << "  vertices " << mesh.vertices().size() << ", triangles " << mesh.triangles().size() << ", components "
+            << mesh.componentCount() << ", volume " << mesh.volume() << "\n"
+            << "  z range [" << mesh.bounds().min().z() << ", " << mesh.bounds().max().z() << "]\n";
+  printBox("  bounding box ", mesh.bounds());
+  for (std::size_t i = 0; i < mesh.componentCount(); ++i) {
+    std::cout << "  component " << i << ": ";
+    printBox("", mesh.componentBounds()[i]);
+  }
+}
+
+}  // namespace
+
+void addInfoCommand(CLI::App& app) {
+  struct Options {
+    SceneInput input;
+    bool json = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand("info", "Mesh statistics: triangles, components, z ranges, bounding boxes");
+  options->input.addOptions(*command);
+  command->add_flag("--json", options->json, "print JSON");
+  command->callback([options]() {
+    const LoadedProblem loaded = options->input.load();
+    const nlohmann::json robot = meshJson(loaded.problem.robot, loaded.robot);
+    const nlohmann::json world = meshJson(loaded.problem.world, loaded.world);
+    if (options->json) {
+      nlohmann::json all = {{"robot", robot}, {"world", world}};
+      if (!loaded.cfgPath.empty()) {
+        all["robot_centre"] = {loaded.robotCentre.x(), loaded.robotCentre.y(), loaded.robotCentre.z()};
+      }
+      std::cout << all.dump(2) << "\n";
+      return;
+    }
+    printMesh("robot", robot, loaded.robot);
+    if (!loaded.cfgPath.empty()) {
+      std::cout << "  re-centred by (" << -loaded.robotCentre.x() << ", " << -loaded.robotCentre.y() << ", 0)\n";
+    }
+    printMesh("world", world, loaded.world);
+  });
+}
+
+}  // namespace freespace::cli

@@ -1,0 +1,26 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "freespace/problem/planar_problem.h"
+
+namespace freespace::cli {
+
+/// The "(--cfg FILE | ROBOT WORLD)" input shared by the commands.
+class SceneInput {
+ public:
+  void addOptions(CLI::App& command);
+
+  /// Loads the meshes (and the problem, with --cfg; the robot is then re-centred as
+  /// in OMPL.app). Warnings go to stderr. Throws InputError.
+  LoadedProblem load() const;
+
+ private:
+  std::string cfg_;
+  std::vector<std::string> meshes_;
+};
+
+}  // namespace freespace::cli

@@ -1,0 +1,39 @@
+#pragma once
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+#include "temp_dir.h"
+
+namespace freespace::testing {
+
+struct CommandResult {
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+inline std::string readWholeFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+/// Runs the freespace command line tool with `arguments` (already shell quoted).
+inline CommandResult runFreespace(const std::string& arguments) {
+  TempDir dir;
+  const std::string command = std::string("'") + FREESPACE_CLI + "' " + arguments + " >'" + dir.file("out") +
+                              "' 2>'" + dir.file("err") + "' </dev/null";
+  const int raw = std::system(command.c_str());
+  CommandResult result;
+  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  result.out = readWholeFile(dir.file("out"));
+  result.err = readWholeFile(dir.file("err"));
+  return result;
+}
+
+}  // namespace freespace::testing
