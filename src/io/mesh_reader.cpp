@@ -12,17 +12,12 @@
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
+#include "file_extension.h"
 #include "freespace/input_error.h"
 #include "vtk_reader.h"
 
 namespace freespace {
 namespace {
-
-std::string lowercase(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
 
 bool isAssimpFormat(const std::string& extension) {
   return extension == ".obj" || extension == ".stl" || extension == ".ply" ||
@@ -92,7 +87,7 @@ TriangleSoup readWithAssimp(const std::string& path) {
 TriangleSoup readTriangleSoup(const std::string& path) {
   std::ifstream file = openNonEmptyFile(path);
   const std::string extension = std::filesystem::path(path).extension().string();
-  const std::string format = lowercase(extension);
+  const std::string format = detail::lowercaseExtension(path);
   if (format == ".vtk") {
     const std::string content{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
     return readLegacyVtk(path, content);

@@ -14,16 +14,11 @@
 #include <memory>
 #include <system_error>
 
+#include "file_extension.h"
 #include "freespace/input_error.h"
 
 namespace freespace {
 namespace {
-
-std::string lowercase(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
 
 /// Assimp's exporter for an extension ("objnomtl": OBJ without a .mtl file beside
 /// it), or an empty string for the formats written here.
@@ -125,7 +120,7 @@ void writeOff(const Mesh& mesh, std::ostream& out) {
 void writeMesh(const Mesh& mesh, const std::string& path, bool overwrite) {
   std::error_code error;
   if (!overwrite && std::filesystem::exists(path, error)) throw InputError(path, "already exists (not overwritten)");
-  const std::string extension = lowercase(std::filesystem::path(path).extension().string());
+  const std::string extension = detail::lowercaseExtension(path);
   if (extension == ".vtk") {
     writeText(path, [&](std::ostream& out) { writeVtk(mesh, out); });
   } else if (extension == ".off") {
