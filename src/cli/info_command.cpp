@@ -72,7 +72,8 @@ void addInfoCommand(CLI::App& app) {
     }
     printMesh("robot", robot, loaded.robot);
     if (!loaded.cfgPath.empty()) {
-      std::cout << "  re-centred by (" << -loaded.robotCentre.x() << ", " << -loaded.robotCentre.y() << ", 0)\n";
+      std::cout << "  re-centred: its vertex average (" << loaded.robotCentre.x() << ", " << loaded.robotCentre.y()
+                << ") was moved to the origin\n";
     }
     printMesh("world", world, loaded.world);
   });
