@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <thread>
 
 #include "convex_oracle.h"
 #include "freespace/collision/exact_collision_checker.h"
@@ -149,4 +151,25 @@ TEST(ExactCollision, CountsExactFallbacks) {
   const auto counts = exact.predicateCounts();
   EXPECT_GT(counts.evaluated, 0u);
   EXPECT_LE(counts.exact, counts.evaluated);
+}
+
+TEST(ExactCollision, ConcurrentQueriesGiveTheSequentialAnswers) {
+  const Mesh world = Mesh::fromSoup(joinSoups({boxSoup({0, 0, 0}, {1, 1, 1}), boxSoup({2, 0, 0}, {3, 1, 1})}), "w");
+  const Mesh robot = boxMesh({-0.25, -0.25, 0}, {0.25, 0.25, 1});
+  const ExactCollisionChecker checker(robot, world);
+  std::vector<Pose2> poses;
+  for (int i = 0; i < 400; ++i) poses.push_back({-1 + 0.01 * i, 0.5 + 0.003 * i, 0.05 * i});
+  std::vector<char> sequential;
+  for (const Pose2& pose : poses) sequential.push_back(checker.inCollision(pose));
+  std::vector<char> first(poses.size()), second(poses.size());
+  std::thread other([&] {
+    for (std::size_t i = 0; i < poses.size(); ++i) second[i] = checker.inCollision(poses[i]);
+  });
+  for (std::size_t i = poses.size(); i-- > 0;) first[i] = checker.inCollision(poses[i]);
+  other.join();
+  EXPECT_EQ(first, sequential);
+  EXPECT_EQ(second, sequential);
+  // Both answers occur along the sweep, so the comparison means something.
+  EXPECT_NE(std::count(sequential.begin(), sequential.end(), 1), 0);
+  EXPECT_NE(std::count(sequential.begin(), sequential.end(), 0), 0);
 }
