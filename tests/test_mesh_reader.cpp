@@ -27,6 +27,11 @@
 // | bad_binary.vtk        | binary VTK is not supported                                         |
 // | bad_dataset.vtk       | line 4: not a POLYDATA dataset (found UNSTRUCTURED_GRID)            |
 // | bad_header.vtk        | not a legacy VTK file                                               |
+// | bad_truncated.off     | borders only one triangle: the surface is not closed                |
+// | bad_nan.off           | vertex 2 has a non-finite coordinate (nan)                          |
+// | bad_truncated.ply     | contains no triangles (the file ends before its faces)              |
+// | bad_truncated.dae     | cannot read mesh: Unable to read file, malformed XML                |
+// | bad_open.stl          | borders only one triangle: the surface is not closed                |
 //
 // A path that does not exist gives "cannot open file".
 
@@ -330,6 +335,11 @@ const MalformedFile kMalformedFiles[] = {
     {"bad_binary.vtk", "binary VTK is not supported"},
     {"bad_dataset.vtk", "line 4: not a POLYDATA dataset (found UNSTRUCTURED_GRID)"},
     {"bad_header.vtk", "not a legacy VTK file"},
+    {"bad_truncated.off", "borders only one triangle: the surface is not closed"},
+    {"bad_nan.off", "vertex 2 has a non-finite coordinate (nan)"},
+    {"bad_truncated.ply", "contains no triangles"},
+    {"bad_truncated.dae", "cannot read mesh: Unable to read file, malformed XML"},
+    {"bad_open.stl", "borders only one triangle: the surface is not closed"},
 };
 
 class MalformedMeshFile : public ::testing::TestWithParam<MalformedFile> {};
