@@ -1,0 +1,30 @@
+#pragma once
+
+#include <boost/multiprecision/mpfi.hpp>
+
+#include <optional>
+
+#include "freespace/numbers/sign.h"
+
+namespace freespace {
+
+/// MPFI intervals with a precision fixed at compile time (decimal digits). Fixed
+/// precisions keep the types thread safe: Boost's variable-precision default is a
+/// process-wide setting.
+template <unsigned Digits10>
+using MultiprecisionInterval = boost::multiprecision::number<boost::multiprecision::mpfi_float_backend<Digits10>>;
+
+/// The ladder the adaptive engine climbs after double intervals: about 107, 213,
+/// 426 and 851 bits, each level doubling the precision of the one before.
+inline constexpr unsigned kMultiprecisionDigits[] = {32, 64, 128, 256};
+inline constexpr int kMultiprecisionLevels = 4;
+
+template <unsigned Digits10>
+std::optional<Sign> certainSign(const MultiprecisionInterval<Digits10>& value) {
+  if (boost::multiprecision::lower(value) > 0) return Sign::Positive;
+  if (boost::multiprecision::upper(value) < 0) return Sign::Negative;
+  if (boost::multiprecision::lower(value) == 0 && boost::multiprecision::upper(value) == 0) return Sign::Zero;
+  return std::nullopt;
+}
+
+}  // namespace freespace
