@@ -1,0 +1,134 @@
+#pragma once
+
+#include "freespace/numbers/adaptive_sign.h"
+#include "freespace/numbers/polynomial.h"
+
+namespace freespace {
+
+/// A linear form in (sin theta, cos theta, 1): s * sin + c * cos + k.
+template <class T>
+struct TrigLinear {
+  T s, c, k;
+};
+
+/// The polynomial in the tangent half-angle t of `chart` whose value is
+/// w(t) * form(theta), w = 1 + t^2 > 0 (so its sign is the form's sign):
+///   chart 0: sin = 2t / w,  cos = (1 - t^2) / w  ->  (k + c) + 2 s t + (k - c) t^2
+///   chart 1: sin = -2t / w, cos = -(1 - t^2) / w ->  (k - c) - 2 s t + (k + c) t^2
+template <class T>
+Polynomial<T> tangentPolynomial(const TrigLinear<T>& form, int chart) {
+  const T twoS = form.s + form.s;
+  if (chart == 0) return Polynomial<T>({form.k + form.c, twoS, form.k - form.c});
+  return Polynomial<T>({form.k - form.c, -twoS, form.k + form.c});
+}
+
+template <class T>
+Polynomial<T> operator*(const Polynomial<T>& a, const Polynomial<T>& b) {
+  std::vector<T> product(a.size() + b.size() - 1, T(0));
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    for (std::size_t j = 0; j < b.size(); ++j) product[i + j] += a.coefficients()[i] * b.coefficients()[j];
+  }
+  return Polynomial<T>(std::move(product));
+}
+
+template <class T>
+Polynomial<T> operator+(const Polynomial<T>& a, const Polynomial<T>& b) {
+  std::vector<T> sum(std::max(a.size(), b.size()), T(0));
+  for (std::size_t i = 0; i < a.size(); ++i) sum[i] += a.coefficients()[i];
+  for (std::size_t i = 0; i < b.size(); ++i) sum[i] += b.coefficients()[i];
+  return Polynomial<T>(std::move(sum));
+}
+
+/// A patch's line at angle theta (DESIGN.md section 3):
+///   (R(theta) a1 + a2) . d + k1 sin + k2 cos + k3 = 0.
+struct PatchLine {
+  double a1x = 0, a1y = 0, a2x = 0, a2y = 0;
+  double k1 = 0, k2 = 0, k3 = 0;
+};
+
+/// A point of the plane moving with theta as d(theta) = u + R(theta) v: the spiral
+/// end points of patches (DESIGN.md section 3), where u and v are given exactly by
+/// input points; see spiralOfRobotVertexOnEdge and spiralOfWorldVertexOnEdge.
+template <class T>
+struct Spiral {
+  T ux, uy, vx, vy;
+};
+
+/// Robot vertex p on environment edge (e0, e1): d = e(p_z)_xy - R p_xy, where e(z) is
+/// the point of the edge at height z (e0_z != e1_z).
+template <class T>
+Spiral<T> spiralOfRobotVertexOnEdge(const double p[3], const double e0[3], const double e1[3]) {
+  const T along = (T(p[2]) - T(e0[2])) / (T(e1[2]) - T(e0[2]));
+  return {T(e0[0]) + along * (T(e1[0]) - T(e0[0])), T(e0[1]) + along * (T(e1[1]) - T(e0[1])), -T(p[0]), -T(p[1])};
+}
+
+/// Environment vertex q on robot edge (f0, f1): d = q_xy - R f(q_z)_xy.
+template <class T>
+Spiral<T> spiralOfWorldVertexOnEdge(const double q[3], const double f0[3], const double f1[3]) {
+  const T along = (T(q[2]) - T(f0[2])) / (T(f1[2]) - T(f0[2]));
+  return {T(q[0]), T(q[1]), -(T(f0[0]) + along * (T(f1[0]) - T(f0[0]))), -(T(f0[1]) + along * (T(f1[1]) - T(f0[1])))};
+}
+
+/// EF: k1 sin + k2 cos + k3 (a compatibility condition or a patch interval end).
+template <class T>
+TrigLinear<T> edgeFacetForm(double k1, double k2, double k3) {
+  return {T(k1), T(k2), T(k3)};
+}
+
+/// SF: the line of `line` evaluated at the spiral point, using
+/// (R a) . b = cos (a . b) + sin (a x b) and (R a) . (R b) = a . b.
+template <class T>
+TrigLinear<T> spiralFacetForm(const PatchLine& line, const Spiral<T>& spiral) {
+  const T a1x(line.a1x), a1y(line.a1y), a2x(line.a2x), a2y(line.a2y);
+  const T a1CrossU = a1x * spiral.uy - a1y * spiral.ux, a1DotU = a1x * spiral.ux + a1y * spiral.uy;
+  const T vCrossA2 = spiral.vx * a2y - spiral.vy * a2x, vDotA2 = spiral.vx * a2x + spiral.vy * a2y;
+  return {a1CrossU + vCrossA2 + T(line.k1), a1DotU + vDotA2 + T(line.k2),
+          a1x * spiral.vx + a1y * spiral.vy + a2x * spiral.ux + a2y * spiral.uy + T(line.k3)};
+}
+
+/// n_j x n_k for n = R a1 + a2, linear in sin and cos because
+/// (R a) x b = cos (a x b) - sin (a . b) and (R a) x (R b) = a x b.
+template <class T>
+TrigLinear<T> normalCrossForm(const PatchLine& j, const PatchLine& k) {
+  const auto cross = [](double ax, double ay, double bx, double by) { return T(ax) * T(by) - T(ay) * T(bx); };
+  const auto dot = [](double ax, double ay, double bx, double by) { return T(ax) * T(bx) + T(ay) * T(by); };
+  return {dot(j.a2x, j.a2y, k.a1x, k.a1y) - dot(j.a1x, j.a1y, k.a2x, k.a2y),
+          cross(j.a1x, j.a1y, k.a2x, k.a2y) + cross(j.a2x, j.a2y, k.a1x, k.a1y),
+          cross(j.a1x, j.a1y, k.a1x, k.a1y) + cross(j.a2x, j.a2y, k.a2x, k.a2y)};
+}
+
+/// FFF: the three lines are concurrent where det[n_i, w_i] = sum over cyclic (i, j, k)
+/// of w_i (n_j x n_k) vanishes; a quartic in t.
+template <class T>
+Polynomial<T> threePatchPolynomial(const PatchLine& l1, const PatchLine& l2, const PatchLine& l3, int chart) {
+  const auto term = [chart](const PatchLine& i, const PatchLine& j, const PatchLine& k) {
+    return tangentPolynomial(edgeFacetForm<T>(i.k1, i.k2, i.k3), chart) * tangentPolynomial(normalCrossForm<T>(j, k), chart);
+  };
+  return term(l1, l2, l3) + term(l2, l3, l1) + term(l3, l1, l2);
+}
+
+/// A patch line at one angle: n = R a1 + a2 and w = k1 sin + k2 cos + k3.
+template <class T>
+struct LineAtAngle {
+  T nx, ny, w;
+};
+
+template <class T>
+LineAtAngle<T> lineAtAngle(const PatchLine& line, const T& cosine, const T& sine) {
+  const T a1x(line.a1x), a1y(line.a1y);
+  return {cosine * a1x - sine * a1y + T(line.a2x), sine * a1x + cosine * a1y + T(line.a2y),
+          T(line.k1) * sine + T(line.k2) * cosine + T(line.k3)};
+}
+
+/// The FFF determinant det[n_i, w_i] at one angle, evaluated directly (no
+/// polynomial is built): the sign predicate "on which side of concurrency are three
+/// patch lines at this angle".
+template <class T>
+T threePatchDeterminant(const PatchLine& l1, const PatchLine& l2, const PatchLine& l3, const T& cosine,
+                        const T& sine) {
+  const LineAtAngle<T> a = lineAtAngle(l1, cosine, sine), b = lineAtAngle(l2, cosine, sine),
+                       c = lineAtAngle(l3, cosine, sine);
+  return a.w * (b.nx * c.ny - b.ny * c.nx) + b.w * (c.nx * a.ny - c.ny * a.nx) + c.w * (a.nx * b.ny - a.ny * b.nx);
+}
+
+}  // namespace freespace
