@@ -1,0 +1,112 @@
+#pragma once
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "freespace/numbers/adaptive_sign.h"
+#include "freespace/numbers/exact_polynomial.h"
+#include "freespace/numbers/half_angle.h"
+#include "freespace/numbers/interval.h"
+#include "freespace/numbers/polynomial.h"
+
+namespace freespace {
+
+/// A function of the angle theta given in each chart (HalfAngle) by a polynomial in
+/// the tangent parameter t whose sign is the function's sign. It keeps double
+/// interval coefficients for filtering and computes exact rational coefficients the
+/// first time they are needed. Use from one thread.
+class AngleFunction {
+ public:
+  /// `formula(NumberType<T>{}, chart)` returns the chart's Polynomial<T>, computed
+  /// from double inputs; it is written once for every number type.
+  template <class Formula>
+  explicit AngleFunction(const Formula& formula)
+      : exactFormula_([formula](int chart) { return formula(NumberType<Rational>{}, chart); }) {
+    RoundingScope rounding;
+    for (int chart = 0; chart < 2; ++chart) approximate_[chart] = formula(NumberType<Interval>{}, chart);
+  }
+
+  const Polynomial<Interval>& approximate(int chart) const { return approximate_[chart]; }
+  const RationalPolynomial& exact(int chart) const;
+  const RationalPolynomial& squareFree(int chart) const;
+  /// True when the function vanishes at every angle.
+  bool isIdenticallyZero() const { return isZero(exact(0)); }
+
+ private:
+  std::array<Polynomial<Interval>, 2> approximate_;
+  std::function<RationalPolynomial(int)> exactFormula_;
+  mutable std::array<std::optional<RationalPolynomial>, 2> exact_;
+  mutable std::array<std::optional<RationalPolynomial>, 2> squareFree_;
+};
+
+/// An angle that is a root of an AngleFunction (or a rational angle, a HalfAngle):
+/// its chart, an exact isolating interval of t in that chart, and a double
+/// enclosure of the same t. Charts are canonical: chart 0 holds t in [-1, 1]
+/// (theta in [-pi/2, pi/2]), chart 1 holds t in (-1, 1) (theta in (pi/2, 3pi/2)).
+class AlgebraicAngle {
+ public:
+  AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, IsolatingInterval root, double lower,
+                 double upper);
+  static AlgebraicAngle rational(const HalfAngle& angle);
+
+  int chart() const { return chart_; }
+  /// Null for a rational angle.
+  const std::shared_ptr<const AngleFunction>& function() const { return function_; }
+  const IsolatingInterval& root() const { return root_; }
+  double lower() const { return lower_; }
+  double upper() const { return upper_; }
+  bool isRational() const { return !function_; }
+  /// theta in radians, approximately (for output only).
+  double radians() const;
+
+  /// Halves the double enclosure (and the exact interval) once, when the function's
+  /// sign at the midpoint is certain in double intervals. Returns false when no
+  /// progress can be made in doubles.
+  bool refineInDoubles();
+
+ private:
+  std::shared_ptr<const AngleFunction> function_;
+  int chart_;
+  IsolatingInterval root_;
+  double lower_, upper_;
+};
+
+/// An arc of the circle, counterclockwise from `from` to `to` (both included).
+struct AngleInterval {
+  AlgebraicAngle from;
+  AlgebraicAngle to;
+};
+
+/// Exact predicates on algebraic angles, filtered in double intervals with exact
+/// rational fallback and exact identity detection (equal roots compare equal; a
+/// function that vanishes at a root has sign exactly zero), counted in statistics.
+class AngleAlgebra {
+ public:
+  explicit AngleAlgebra(PredicateStatistics& statistics) : statistics_(statistics) {}
+
+  /// The real roots of `function` on the circle, distinct, in the order of
+  /// compare(). Throws std::invalid_argument when the function is identically zero.
+  std::vector<AlgebraicAngle> roots(const std::shared_ptr<const AngleFunction>& function, PredicateKind kind);
+
+  /// Sign of `function` at `angle`.
+  Sign signAt(const AngleFunction& function, const AlgebraicAngle& angle);
+
+  /// -1, 0 or +1: the order of two angles along the circle cut at theta = -pi/2,
+  /// i.e. by theta in [-pi/2, 3pi/2).
+  int compare(const AlgebraicAngle& a, const AlgebraicAngle& b);
+
+  /// Whether the arc contains `angle`; an arc whose `to` precedes its `from` wraps
+  /// through the cut.
+  bool contains(const AngleInterval& arc, const AlgebraicAngle& angle);
+
+ private:
+  std::optional<int> compareInDoubles(AlgebraicAngle& a, AlgebraicAngle& b) const;
+  Sign record(PredicateKind kind, int level, Sign sign);
+
+  PredicateStatistics& statistics_;
+};
+
+}  // namespace freespace

@@ -1,0 +1,289 @@
+#include "freespace/numbers/algebraic_angle.h"
+
+#include "interval_root_isolation.h"
+#include "multiprecision_refinement.h"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace freespace {
+
+namespace {
+
+constexpr int kDoubleLevel = static_cast<int>(PrecisionLevel::DoubleInterval);
+constexpr int kExactLevel = static_cast<int>(PrecisionLevel::Exact);
+/// Bisections tried in double intervals before a predicate escalates.
+constexpr int kDoubleRefinements = 48;
+
+double lowerDouble(const Rational& value) {
+  double nearest = value.convert_to<double>();
+  if (Rational(nearest) > value) nearest = std::nextafter(nearest, -std::numeric_limits<double>::infinity());
+  return nearest;
+}
+
+double upperDouble(const Rational& value) {
+  double nearest = value.convert_to<double>();
+  if (Rational(nearest) < value) nearest = std::nextafter(nearest, std::numeric_limits<double>::infinity());
+  return nearest;
+}
+
+Sign signOfInt(int value) { return value > 0 ? Sign::Positive : (value < 0 ? Sign::Negative : Sign::Zero); }
+
+/// Bisects an exactly isolated root until its interval is about as narrow as a
+/// double enclosure can be, so that later predicates can be decided in doubles
+/// (this also works for roots of even multiplicity, where doubles cannot bisect).
+void tighten(const RationalPolynomial& squareFree, IsolatingInterval& root) {
+  static const Rational kWidth(std::ldexp(1.0, -60));  // exact: a power of two
+  while (root.lo != root.hi && root.hi - root.lo > kWidth) bisect(squareFree, root);
+}
+
+/// The polynomial t - t0 of a rational angle.
+RationalPolynomial linearPolynomial(const Rational& root) { return RationalPolynomial({-root, Rational(1)}); }
+
+/// Closed-form roots of a quadratic (DESIGN.md section 4: EF and SF are degree 2),
+/// certified by interval arithmetic. Nothing when any step is uncertain: a leading
+/// coefficient or discriminant that may be zero, overlapping roots, or a root that
+/// may lie on the chart boundary t = +-1.
+std::optional<std::vector<Interval>> quadraticRootsInDoubles(const Polynomial<Interval>& p) {
+  const Interval& c0 = p.coefficients()[0];
+  const Interval& c1 = p.coefficients()[1];
+  const Interval& a = p.coefficients()[2];
+  const std::optional<Sign> leading = certainSign(a);
+  if (!leading || *leading == Sign::Zero) return std::nullopt;
+  const Interval discriminant = c1 * c1 - Interval(4) * a * c0;
+  const std::optional<Sign> discriminantSign = certainSign(discriminant);
+  if (discriminantSign == Sign::Negative) return std::vector<Interval>{};
+  if (discriminantSign != Sign::Positive) return std::nullopt;
+  const Interval root = boost::numeric::sqrt(discriminant);
+  Interval first = (-c1 - root) / (Interval(2) * a), second = (-c1 + root) / (Interval(2) * a);
+  if (*leading == Sign::Negative) std::swap(first, second);
+  if (!(first.upper() < second.lower())) return std::nullopt;
+  std::vector<Interval> roots;
+  for (const Interval& t : {first, second}) {
+    if (t.upper() < -1 || t.lower() > 1) continue;
+    if (!(t.lower() > -1 && t.upper() < 1)) return std::nullopt;
+    roots.push_back(t);
+  }
+  return roots;
+}
+
+/// The roots of a chart polynomial in [-1, 1] certified in double intervals: the
+/// closed form for quadratics (DESIGN.md section 4: EF and SF), Descartes bisection
+/// otherwise (FFF).
+std::optional<std::vector<Interval>> chartRootsInDoubles(const Polynomial<Interval>& p) {
+  RoundingScope rounding;
+  if (p.size() == 3) {
+    if (auto roots = quadraticRootsInDoubles(p)) return roots;
+  }
+  return detail::isolateRootsInDoubles(p, -1, 1);
+}
+
+/// The angle's exact isolating interval in the form the exact functions require:
+/// an endpoint where the function vanishes (possible for enclosures found in
+/// doubles) becomes the exact root.
+IsolatingInterval verifiedIsolating(const AlgebraicAngle& angle) {
+  const IsolatingInterval& root = angle.root();
+  if (angle.isRational() || root.lo == root.hi) return root;
+  const RationalPolynomial& p = angle.function()->squareFree(angle.chart());
+  if (signAt(p, root.lo) == Sign::Zero) return {root.lo, root.lo};
+  if (signAt(p, root.hi) == Sign::Zero) return {root.hi, root.hi};
+  return root;
+}
+
+/// Whether p vanishes at the root of `squareFree` isolated by `root`: exactly when
+/// gcd(p, squareFree) has a root in the closed interval, since any root of the gcd
+/// there is a root of squareFree there, and that is the isolated one.
+bool vanishesAtRoot(const RationalPolynomial& p, const RationalPolynomial& squareFree, const IsolatingInterval& root) {
+  const RationalPolynomial common = gcd(p, squareFree);
+  if (degree(common) < 1) return false;
+  if (signAt(common, root.lo) == Sign::Zero) return true;
+  return root.lo != root.hi && countDistinctRoots(sturmSequence(squareFreePart(common)), root.lo, root.hi) > 0;
+}
+
+/// The MPFI ladder for the sign of f at a root: the level that decided, or nothing.
+template <int Step = 0>
+std::optional<std::pair<Sign, int>> signAtRootOnLadder(const RationalPolynomial& f, const RationalPolynomial& squareFree,
+                                                       IsolatingInterval root) {
+  if constexpr (Step == kMultiprecisionLevels) {
+    return std::nullopt;
+  } else {
+    if (const auto sign = detail::signAtRootInPrecision<kMultiprecisionDigits[Step]>(f, squareFree, root)) {
+      return std::make_pair(*sign, static_cast<int>(PrecisionLevel::Multiprecision) + Step);
+    }
+    return signAtRootOnLadder<Step + 1>(f, squareFree, root);
+  }
+}
+
+/// The MPFI ladder for the order of two distinct roots.
+template <int Step = 0>
+std::optional<std::pair<int, int>> compareRootsOnLadder(const RationalPolynomial& f, IsolatingInterval a,
+                                                        const RationalPolynomial& g, IsolatingInterval b) {
+  if constexpr (Step == kMultiprecisionLevels) {
+    return std::nullopt;
+  } else {
+    if (const auto order = detail::compareRootsInPrecision<kMultiprecisionDigits[Step]>(f, a, g, b)) {
+      return std::make_pair(*order, static_cast<int>(PrecisionLevel::Multiprecision) + Step);
+    }
+    return compareRootsOnLadder<Step + 1>(f, a, g, b);
+  }
+}
+
+}  // namespace
+
+const RationalPolynomial& AngleFunction::exact(int chart) const {
+  if (!exact_[chart]) exact_[chart] = trimmed(exactFormula_(chart));
+  return *exact_[chart];
+}
+
+const RationalPolynomial& AngleFunction::squareFree(int chart) const {
+  if (!squareFree_[chart]) squareFree_[chart] = squareFreePart(exact(chart));
+  return *squareFree_[chart];
+}
+
+AlgebraicAngle::AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, IsolatingInterval root,
+                               double lower, double upper)
+    : function_(std::move(function)), chart_(chart), root_(std::move(root)), lower_(lower), upper_(upper) {}
+
+AlgebraicAngle AlgebraicAngle::rational(const HalfAngle& angle) {
+  // Chart 1 does not hold t = +-1: those angles are chart 0's -+1.
+  const bool boundary = angle.chart == 1 && std::fabs(angle.t) == 1;
+  const int chart = boundary ? 0 : angle.chart;
+  const double t = boundary ? -angle.t : angle.t;
+  return AlgebraicAngle(nullptr, chart, {Rational(t), Rational(t)}, t, t);
+}
+
+double AlgebraicAngle::radians() const {
+  return HalfAngle{chart_, 0.5 * (lower_ + upper_)}.radians();
+}
+
+bool AlgebraicAngle::refineInDoubles() {
+  if (!function_ || root_.lo == root_.hi) return false;
+  const double middle = 0.5 * (lower_ + upper_);
+  if (!(middle > lower_ && middle < upper_)) return false;
+  RoundingScope rounding;
+  const Polynomial<Interval>& p = function_->approximate(chart_);
+  const std::optional<Sign> atLower = certainSign(p.evaluate(Interval(lower_)));
+  const std::optional<Sign> atUpper = certainSign(p.evaluate(Interval(upper_)));
+  const std::optional<Sign> atMiddle = certainSign(p.evaluate(Interval(middle)));
+  // Bisect by sign only across a certain sign change: the enclosure holds one
+  // distinct root, and if p changes sign over it that root is the only change. A
+  // root of even multiplicity is left to the exact level.
+  if (!atLower || !atUpper || !atMiddle || *atMiddle == Sign::Zero || *atLower != -*atUpper ||
+      *atLower == Sign::Zero) {
+    return false;
+  }
+  if (*atMiddle == *atLower) {
+    lower_ = middle;
+  } else {
+    upper_ = middle;
+  }
+  // The exact interval follows when the double one is inside it.
+  if (Rational(lower_) > root_.lo) root_.lo = Rational(lower_);
+  if (Rational(upper_) < root_.hi) root_.hi = Rational(upper_);
+  return true;
+}
+
+std::vector<AlgebraicAngle> AngleAlgebra::roots(const std::shared_ptr<const AngleFunction>& function,
+                                                PredicateKind kind) {
+  std::vector<AlgebraicAngle> angles;
+  for (int chart = 0; chart < 2; ++chart) {
+    if (const auto enclosures = chartRootsInDoubles(function->approximate(chart))) {
+      statistics_.recordDecision(kind, kDoubleLevel);
+      for (const Interval& t : *enclosures) {
+        angles.emplace_back(function, chart, IsolatingInterval{Rational(t.lower()), Rational(t.upper())}, t.lower(),
+                            t.upper());
+      }
+      continue;
+    }
+    statistics_.recordDecision(kind, kExactLevel);
+    const RationalPolynomial& exact = function->exact(chart);
+    if (isZero(exact)) throw std::invalid_argument("the angle function vanishes identically");
+    for (IsolatingInterval root : isolateRoots(exact, Rational(-1), Rational(1))) {
+      // Chart 1 leaves t = +-1 to chart 0.
+      if (chart == 1 && root.lo == root.hi && abs(root.lo) == 1) continue;
+      tighten(function->squareFree(chart), root);
+      angles.emplace_back(function, chart, root, lowerDouble(root.lo), upperDouble(root.hi));
+    }
+  }
+  return angles;
+}
+
+Sign AngleAlgebra::signAt(const AngleFunction& function, const AlgebraicAngle& angle) {
+  AlgebraicAngle refined = angle;
+  const Polynomial<Interval>& p = function.approximate(angle.chart());
+  for (int step = 0; step <= kDoubleRefinements; ++step) {
+    std::optional<Sign> sign;
+    {
+      RoundingScope rounding;
+      sign = certainSign(p.evaluate(Interval(refined.lower(), refined.upper())));
+    }
+    if (sign) return record(PredicateKind::SignAtRoot, kDoubleLevel, *sign);
+    if (!refined.refineInDoubles()) break;
+  }
+  // Escalation: an exact identity test first (after perturbation, most signs that
+  // doubles cannot decide are identities), then the MPFI ladder, then exact.
+  const RationalPolynomial& exact = function.exact(angle.chart());
+  if (angle.isRational()) return record(PredicateKind::SignAtRoot, kExactLevel, freespace::signAt(exact, angle.root().lo));
+  const RationalPolynomial& squareFree = angle.function()->squareFree(angle.chart());
+  const IsolatingInterval root = verifiedIsolating(refined);
+  if (vanishesAtRoot(exact, squareFree, root)) return record(PredicateKind::SignAtRoot, kExactLevel, Sign::Zero);
+  if (const auto decided = signAtRootOnLadder(exact, squareFree, root)) {
+    return record(PredicateKind::SignAtRoot, decided->second, decided->first);
+  }
+  return record(PredicateKind::SignAtRoot, kExactLevel, signAtRoot(exact, squareFree, root));
+}
+
+std::optional<int> AngleAlgebra::compareInDoubles(AlgebraicAngle& a, AlgebraicAngle& b) const {
+  if (a.chart() != b.chart()) return a.chart() < b.chart() ? -1 : 1;
+  for (int step = 0; step <= kDoubleRefinements; ++step) {
+    if (a.upper() < b.lower()) return -1;
+    if (b.upper() < a.lower()) return 1;
+    if (a.isRational() && b.isRational()) return a.lower() < b.lower() ? -1 : (a.lower() > b.lower() ? 1 : 0);
+    const bool refinedA = a.refineInDoubles();
+    const bool refinedB = b.refineInDoubles();
+    if (!refinedA && !refinedB) break;
+  }
+  return std::nullopt;
+}
+
+int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
+  AlgebraicAngle first = a, second = b;
+  if (const std::optional<int> order = compareInDoubles(first, second)) {
+    record(PredicateKind::RootOrder, kDoubleLevel, signOfInt(*order));
+    return *order;
+  }
+  const auto exactPolynomial = [](const AlgebraicAngle& angle) {
+    return angle.isRational() ? linearPolynomial(angle.root().lo) : angle.function()->squareFree(angle.chart());
+  };
+  const RationalPolynomial f = exactPolynomial(first), g = exactPolynomial(second);
+  const IsolatingInterval rootA = verifiedIsolating(first), rootB = verifiedIsolating(second);
+  // Escalation as in signAt: equal roots are an exact identity, found first.
+  const IsolatingInterval overlap{rootA.lo > rootB.lo ? rootA.lo : rootB.lo, rootA.hi < rootB.hi ? rootA.hi : rootB.hi};
+  if (overlap.lo <= overlap.hi && vanishesAtRoot(f, g, overlap)) {
+    record(PredicateKind::RootOrder, kExactLevel, Sign::Zero);
+    return 0;
+  }
+  if (const auto decided = compareRootsOnLadder(f, rootA, g, rootB)) {
+    record(PredicateKind::RootOrder, decided->second, signOfInt(decided->first));
+    return decided->first;
+  }
+  const int order = compareRoots(f, rootA, g, rootB);
+  record(PredicateKind::RootOrder, kExactLevel, signOfInt(order));
+  return order;
+}
+
+bool AngleAlgebra::contains(const AngleInterval& arc, const AlgebraicAngle& angle) {
+  const bool afterFrom = compare(arc.from, angle) <= 0;
+  const bool beforeTo = compare(angle, arc.to) <= 0;
+  const bool wraps = compare(arc.to, arc.from) < 0;
+  return wraps ? (afterFrom || beforeTo) : (afterFrom && beforeTo);
+}
+
+Sign AngleAlgebra::record(PredicateKind kind, int level, Sign sign) {
+  statistics_.recordDecision(kind, level);
+  if (sign == Sign::Zero) statistics_.recordIdentity(kind);
+  return sign;
+}
+
+}  // namespace freespace

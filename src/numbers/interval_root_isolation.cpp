@@ -1,0 +1,90 @@
+#include "interval_root_isolation.h"
+
+namespace freespace::detail {
+
+namespace {
+
+/// Bisection depth after which doubles give up (roots closer than about 2^-40).
+constexpr int kMaximumDepth = 40;
+
+using IntervalPolynomial = Polynomial<Interval>;
+
+IntervalPolynomial multiply(const IntervalPolynomial& a, const IntervalPolynomial& b) {
+  std::vector<Interval> product(a.size() + b.size() - 1, Interval(0));
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    for (std::size_t j = 0; j < b.size(); ++j) product[i + j] += a.coefficients()[i] * b.coefficients()[j];
+  }
+  return IntervalPolynomial(std::move(product));
+}
+
+/// (x + 1)^n p((a x + b) / (x + 1)) = sum of c_i (a x + b)^i (x + 1)^(n - i).
+IntervalPolynomial descartesTransform(const IntervalPolynomial& p, double a, double b) {
+  const std::size_t n = p.size() - 1;
+  const IntervalPolynomial numerator({Interval(b), Interval(a)});
+  const IntervalPolynomial denominator({Interval(1), Interval(1)});
+  std::vector<IntervalPolynomial> numeratorPowers{IntervalPolynomial({Interval(1)})};
+  std::vector<IntervalPolynomial> denominatorPowers{IntervalPolynomial({Interval(1)})};
+  for (std::size_t i = 1; i <= n; ++i) {
+    numeratorPowers.push_back(multiply(numeratorPowers.back(), numerator));
+    denominatorPowers.push_back(multiply(denominatorPowers.back(), denominator));
+  }
+  std::vector<Interval> result(n + 1, Interval(0));
+  for (std::size_t i = 0; i <= n; ++i) {
+    const IntervalPolynomial term = multiply(numeratorPowers[i], denominatorPowers[n - i]);
+    for (std::size_t k = 0; k <= n; ++k) result[k] += p.coefficients()[i] * term.coefficients()[k];
+  }
+  return IntervalPolynomial(std::move(result));
+}
+
+/// Sign variations of the coefficients, skipping exact zeros; nothing when a
+/// coefficient's sign is uncertain.
+std::optional<int> signVariations(const IntervalPolynomial& q) {
+  int variations = 0;
+  Sign previous = Sign::Zero;
+  for (const Interval& coefficient : q.coefficients()) {
+    const std::optional<Sign> sign = certainSign(coefficient);
+    if (!sign) return std::nullopt;
+    if (*sign == Sign::Zero) continue;
+    if (previous != Sign::Zero && *sign != previous) ++variations;
+    previous = *sign;
+  }
+  return variations;
+}
+
+std::optional<Sign> nonzeroSignAt(const IntervalPolynomial& p, double t) {
+  const std::optional<Sign> sign = certainSign(p.evaluate(Interval(t)));
+  if (!sign || *sign == Sign::Zero) return std::nullopt;
+  return sign;
+}
+
+/// Appends the enclosures of the roots in (a, b) to `roots`; false when doubles
+/// cannot decide.
+bool isolate(const IntervalPolynomial& p, double a, double b, int depth, std::vector<Interval>& roots) {
+  const std::optional<int> variations = signVariations(descartesTransform(p, a, b));
+  if (!variations) return false;
+  if (*variations == 0) return true;
+  if (*variations == 1) {
+    // One simple root: p changes sign over (a, b), which the end signs confirm.
+    const std::optional<Sign> atA = nonzeroSignAt(p, a), atB = nonzeroSignAt(p, b);
+    if (!atA || !atB || *atA == *atB) return false;
+    roots.emplace_back(a, b);
+    return true;
+  }
+  const double middle = 0.5 * (a + b);
+  if (depth == kMaximumDepth || !(middle > a && middle < b) || !nonzeroSignAt(p, middle)) return false;
+  return isolate(p, a, middle, depth + 1, roots) && isolate(p, middle, b, depth + 1, roots);
+}
+
+}  // namespace
+
+std::optional<std::vector<Interval>> isolateRootsInDoubles(const Polynomial<Interval>& p, double low, double high) {
+  if (p.size() < 2 || !certainSign(p.coefficients().back()) || *certainSign(p.coefficients().back()) == Sign::Zero) {
+    return std::nullopt;  // the degree itself is uncertain
+  }
+  if (!nonzeroSignAt(p, low) || !nonzeroSignAt(p, high)) return std::nullopt;
+  std::vector<Interval> roots;
+  if (!isolate(p, low, high, 0, roots)) return std::nullopt;
+  return roots;
+}
+
+}  // namespace freespace::detail

@@ -1,0 +1,239 @@
+// Algebraic angles: roots of angle functions, their order and the sign of another
+// function at them, against closed-form trigonometry (well away from degeneracy)
+// and against constructed degeneracies whose answers are known by construction:
+// shared roots, double roots, roots at the chart boundaries and at theta = pi,
+// functions that vanish identically, integer inputs.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "freespace/numbers/algebraic_angle.h"
+#include "freespace/numbers/angle_polynomial.h"
+
+using namespace freespace;
+
+namespace {
+
+int uniform(int low, int high) { return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(low, high)); }
+
+/// k1 sin + k2 cos + k3.
+struct Form {
+  double k1, k2, k3;
+  long double at(long double theta) const { return k1 * std::sin(theta) + k2 * std::cos(theta) + k3; }
+};
+
+/// The product of forms as an angle function.
+std::shared_ptr<const AngleFunction> productOf(const std::vector<Form>& forms) {
+  return std::make_shared<AngleFunction>([forms](auto type, int chart) {
+    using T = typename decltype(type)::type;
+    Polynomial<T> product({T(1)});
+    for (const Form& form : forms) product = product * tangentPolynomial(edgeFacetForm<T>(form.k1, form.k2, form.k3), chart);
+    return product;
+  });
+}
+
+Form randomForm(int range) {
+  return {static_cast<double>(uniform(-range, range + 1)), static_cast<double>(uniform(-range, range + 1)),
+          static_cast<double>(uniform(-range, range + 1))};
+}
+
+/// Closed-form roots of k1 sin + k2 cos + k3 = 0: R cos(theta - phi) = -k3.
+std::vector<long double> referenceRoots(const Form& form) {
+  const long double radius = std::hypot(static_cast<long double>(form.k1), static_cast<long double>(form.k2));
+  const long double phi = std::atan2(static_cast<long double>(form.k1), static_cast<long double>(form.k2));
+  const long double spread = std::acos(-form.k3 / radius);
+  return {phi - spread, phi + spread};
+}
+
+long double angularDistance(long double a, long double b) {
+  return std::fabs(std::remainder(a - b, 2 * static_cast<long double>(M_PI)));
+}
+
+}  // namespace
+
+RC_GTEST_PROP(AlgebraicAngle, RootsOfAFormMatchClosedFormTrigonometry, ()) {
+  const Form form = randomForm(8);
+  const long double radius = std::hypot(form.k1, form.k2);
+  RC_PRE(radius > 0 && std::fabs(std::fabs(form.k3) - radius) > 1e-6);  // not tangent
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const std::vector<AlgebraicAngle> roots = algebra.roots(productOf({form}), PredicateKind::EdgeFacet);
+  if (std::fabs(form.k3) > radius) {
+    RC_ASSERT(roots.empty());
+    return;
+  }
+  RC_ASSERT(roots.size() == 2u);
+  for (const AlgebraicAngle& root : roots) {
+    const auto reference = referenceRoots(form);
+    RC_ASSERT(std::min(angularDistance(root.radians(), reference[0]), angularDistance(root.radians(), reference[1])) <
+              1e-9);
+  }
+  RC_ASSERT(algebra.compare(roots[0], roots[1]) == -1);
+  RC_ASSERT(algebra.compare(roots[1], roots[0]) == 1);
+  RC_ASSERT(algebra.compare(roots[0], roots[0]) == 0);
+}
+
+RC_GTEST_PROP(AlgebraicAngle, SharedRootsCompareEqualAndVanish, ()) {
+  const Form shared = randomForm(6), second = randomForm(6), third = randomForm(6);
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const auto sharedFunction = productOf({shared});
+  RC_PRE(!sharedFunction->isIdenticallyZero() && !productOf({second})->isIdenticallyZero() &&
+         !productOf({third})->isIdenticallyZero());
+  const auto f = productOf({shared, second});
+  const auto g = productOf({third, shared});
+  const std::vector<AlgebraicAngle> fRoots = algebra.roots(f, PredicateKind::ThreePatch);
+  const std::vector<AlgebraicAngle> gRoots = algebra.roots(g, PredicateKind::ThreePatch);
+  for (const AlgebraicAngle& root : algebra.roots(sharedFunction, PredicateKind::EdgeFacet)) {
+    // The shared root appears among the roots of f and of g, exactly once each.
+    int inF = 0, inG = 0;
+    for (const AlgebraicAngle& other : fRoots) inF += algebra.compare(root, other) == 0;
+    for (const AlgebraicAngle& other : gRoots) inG += algebra.compare(root, other) == 0;
+    RC_ASSERT(inF == 1);
+    RC_ASSERT(inG == 1);
+    RC_ASSERT(algebra.signAt(*f, root) == Sign::Zero);
+    RC_ASSERT(algebra.signAt(*g, root) == Sign::Zero);
+  }
+  // f and g roots are distinct within each list and sorted.
+  for (std::size_t i = 1; i < fRoots.size(); ++i) RC_ASSERT(algebra.compare(fRoots[i - 1], fRoots[i]) == -1);
+}
+
+RC_GTEST_PROP(AlgebraicAngle, SignAtRootMatchesTrigonometryAwayFromZero, ()) {
+  const Form form = randomForm(8), other = randomForm(8);
+  const long double radius = std::hypot(form.k1, form.k2);
+  RC_PRE(radius > 0 && std::fabs(form.k3) < radius - 1e-6);
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const auto otherFunction = productOf({other});
+  RC_PRE(!otherFunction->isIdenticallyZero());
+  for (const AlgebraicAngle& root : algebra.roots(productOf({form}), PredicateKind::EdgeFacet)) {
+    const long double value = other.at(root.radians());
+    if (std::fabs(value) < 1e-6) continue;  // too close to call for the reference
+    RC_ASSERT(algebra.signAt(*otherFunction, root) == (value > 0 ? Sign::Positive : Sign::Negative));
+  }
+}
+
+RC_GTEST_PROP(AlgebraicAngle, DoubleRootsAreFoundOnce, ()) {
+  const Form form = randomForm(6);
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const auto single = productOf({form});
+  RC_PRE(!single->isIdenticallyZero());
+  const std::vector<AlgebraicAngle> simple = algebra.roots(single, PredicateKind::EdgeFacet);
+  const std::vector<AlgebraicAngle> doubled = algebra.roots(productOf({form, form}), PredicateKind::ThreePatch);
+  RC_ASSERT(simple.size() == doubled.size());
+  for (std::size_t i = 0; i < simple.size(); ++i) RC_ASSERT(algebra.compare(simple[i], doubled[i]) == 0);
+}
+
+TEST(AlgebraicAngle, RootsAtChartBoundariesAndAtPi) {
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  // sin = 0 at theta = 0 (chart 0, t = 0) and theta = pi (chart 1, t = 0).
+  const auto sine = algebra.roots(productOf({{1, 0, 0}}), PredicateKind::EdgeFacet);
+  ASSERT_EQ(sine.size(), 2u);
+  EXPECT_EQ(algebra.compare(sine[0], AlgebraicAngle::rational(HalfAngle::fromRadians(0))), 0);
+  EXPECT_EQ(algebra.compare(sine[1], AlgebraicAngle::rational(HalfAngle::fromRadians(M_PI))), 0);
+  EXPECT_EQ(algebra.compare(sine[1], AlgebraicAngle::rational(HalfAngle::fromRadians(-M_PI))), 0);
+  // cos = 0 at theta = -pi/2 and pi/2: chart 0, t = -1 and 1, not repeated in chart 1.
+  const auto cosine = algebra.roots(productOf({{0, 1, 0}}), PredicateKind::EdgeFacet);
+  ASSERT_EQ(cosine.size(), 2u);
+  EXPECT_EQ(cosine[0].chart(), 0);
+  EXPECT_EQ(cosine[0].root().lo, -1);
+  EXPECT_EQ(cosine[1].root().hi, 1);
+  // cos + 1 = 0 touches zero at theta = pi only: one (double) root.
+  const auto touching = algebra.roots(productOf({{0, 1, 1}}), PredicateKind::EdgeFacet);
+  ASSERT_EQ(touching.size(), 1u);
+  EXPECT_EQ(algebra.compare(touching[0], AlgebraicAngle::rational(HalfAngle::fromRadians(M_PI))), 0);
+  EXPECT_EQ(algebra.signAt(*productOf({{1, 0, 0}}), touching[0]), Sign::Zero);
+  // 3 sin + 4 cos = 5 touches at one irrational angle; it vanishes there and the
+  // sign of 3 sin + 4 cos - 5 + 1e-9 there is positive.
+  const auto tangent = algebra.roots(productOf({{3, 4, -5}}), PredicateKind::EdgeFacet);
+  ASSERT_EQ(tangent.size(), 1u);
+  EXPECT_NEAR(tangent[0].radians(), std::atan2(3.0, 4.0), 1e-12);
+  EXPECT_EQ(algebra.signAt(*productOf({{3, 4, -5}}), tangent[0]), Sign::Zero);
+  EXPECT_EQ(algebra.signAt(*productOf({{3, 4, -5 + 1e-9}}), tangent[0]), Sign::Positive);
+  EXPECT_THROW(algebra.roots(productOf({{0, 0, 0}}), PredicateKind::EdgeFacet), std::invalid_argument);
+  EXPECT_GT(statistics.counts(PredicateKind::SignAtRoot).identities, 0u);
+}
+
+TEST(AlgebraicAngle, ArcsWrapThroughTheCut) {
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const auto at = [](double theta) { return AlgebraicAngle::rational(HalfAngle::fromRadians(theta)); };
+  const AngleInterval throughPi{at(3 * M_PI / 4), at(-3 * M_PI / 4)};
+  EXPECT_TRUE(algebra.contains(throughPi, at(M_PI)));
+  EXPECT_TRUE(algebra.contains(throughPi, at(-0.9 * M_PI)));
+  EXPECT_FALSE(algebra.contains(throughPi, at(0)));
+  const AngleInterval throughCut{at(-M_PI / 4), at(-3 * M_PI / 4)};  // almost the whole circle
+  EXPECT_TRUE(algebra.contains(throughCut, at(M_PI)));
+  EXPECT_TRUE(algebra.contains(throughCut, at(0)));
+  EXPECT_FALSE(algebra.contains(throughCut, at(-M_PI / 2)));
+  EXPECT_TRUE(algebra.contains(throughCut, at(-M_PI / 4)));
+}
+
+RC_GTEST_PROP(AlgebraicAngle, QuarticRootsAreTheMergedRootsOfItsFactors, ()) {
+  const Form first = randomForm(9), second = randomForm(9);
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const auto firstFunction = productOf({first}), secondFunction = productOf({second});
+  RC_PRE(!firstFunction->isIdenticallyZero() && !secondFunction->isIdenticallyZero());
+  std::vector<AlgebraicAngle> expected = algebra.roots(firstFunction, PredicateKind::EdgeFacet);
+  for (const AlgebraicAngle& root : algebra.roots(secondFunction, PredicateKind::EdgeFacet)) {
+    bool known = false;
+    for (const AlgebraicAngle& other : expected) known = known || algebra.compare(root, other) == 0;
+    if (!known) expected.push_back(root);
+  }
+  std::sort(expected.begin(), expected.end(),
+            [&algebra](const AlgebraicAngle& a, const AlgebraicAngle& b) { return algebra.compare(a, b) < 0; });
+  const std::vector<AlgebraicAngle> found = algebra.roots(productOf({first, second}), PredicateKind::ThreePatch);
+  RC_ASSERT(found.size() == expected.size());
+  for (std::size_t i = 0; i < found.size(); ++i) RC_ASSERT(algebra.compare(found[i], expected[i]) == 0);
+}
+
+TEST(AlgebraicAngle, GenericQuarticsAreIsolatedInDoubles) {
+  // Products of two forms with arbitrary (non-grid) coefficients: no degeneracy, so
+  // doubles must decide every isolation.
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  std::size_t roots = 0;
+  for (int i = 0; i < 200; ++i) {
+    const Form a{std::sin(i + 0.1), std::cos(3.0 * i), 0.3 * std::sin(7.0 * i)};
+    const Form b{std::cos(i + 0.7), 0.9 * std::sin(5.0 * i), 0.5 * std::cos(11.0 * i)};
+    roots += algebra.roots(productOf({a, b}), PredicateKind::ThreePatch).size();
+  }
+  const auto& counts = statistics.counts(PredicateKind::ThreePatch);
+  EXPECT_EQ(counts.decided[static_cast<int>(PrecisionLevel::DoubleInterval)], 400u);  // two charts each
+  EXPECT_GT(roots, 400u);
+}
+
+TEST(AlgebraicAngle, NearTiesBeyondDoublesAreDecidedInMultiprecision) {
+  // alpha = 1/sqrt(2), the root of 2 t^2 - 1 in chart 0, against d, the double
+  // nearest to it: not equal, closer than doubles resolve. Exactly,
+  // sign(alpha - d) = sign(1/2 - d^2) since both are positive.
+  const double d = std::sqrt(0.5);
+  const Sign expected = exactSign(Rational(1, 2) - Rational(d) * Rational(d));
+  ASSERT_NE(expected, Sign::Zero);
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const auto halfSquare = std::make_shared<AngleFunction>([](auto type, int) {
+    using T = typename decltype(type)::type;
+    return Polynomial<T>({T(-1), T(0), T(2)});
+  });
+  const auto minusD = std::make_shared<AngleFunction>([d](auto type, int) {
+    using T = typename decltype(type)::type;
+    return Polynomial<T>({-T(d), T(1)});
+  });
+  const std::vector<AlgebraicAngle> roots = algebra.roots(halfSquare, PredicateKind::Other);
+  ASSERT_EQ(roots.size(), 4u);  // +-1/sqrt(2) in each chart
+  const AlgebraicAngle& alpha = roots[1];
+  ASSERT_EQ(alpha.chart(), 0);
+  ASSERT_GT(alpha.lower(), 0);
+  EXPECT_EQ(algebra.signAt(*minusD, alpha), expected);
+  const AlgebraicAngle atD = AlgebraicAngle::rational(HalfAngle{0, d});
+  EXPECT_EQ(algebra.compare(alpha, atD), static_cast<int>(expected));
+  const auto multiprecision = static_cast<int>(PrecisionLevel::Multiprecision);
+  EXPECT_EQ(statistics.counts(PredicateKind::SignAtRoot).decided[multiprecision], 1u);
+  EXPECT_EQ(statistics.counts(PredicateKind::RootOrder).decided[multiprecision], 1u);
+}
