@@ -68,6 +68,32 @@ void ThreePatchDoubleInterval(benchmark::State& state) {
   }
 }
 
+/// The same at an angle whose cosine and sine intervals are known (computed once
+/// per angle, as a sweep does), i.e. the determinant alone.
+void ThreePatchDoubleIntervalAtKnownAngle(benchmark::State& state) {
+  RoundingScope rounding;
+  Interval cosine, sine;
+  HalfAngle{0, 0.3}.cosSin(cosine, sine);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const ThreePatchSign p = predicateNumber(i++);
+    benchmark::DoNotOptimize(certainSign(threePatchDeterminant(*p.l1, *p.l2, *p.l3, cosine, sine)));
+  }
+}
+
+/// The angle's conversion alone: cosine and sine intervals from t.
+void HalfAngleToDoubleIntervals(benchmark::State& state) {
+  RoundingScope rounding;
+  double t = 0.3;
+  for (auto _ : state) {
+    Interval cosine, sine;
+    HalfAngle{0, t}.cosSin(cosine, sine);
+    benchmark::DoNotOptimize(cosine);
+    benchmark::DoNotOptimize(sine);
+    t = t * 0.5 + 0.1;
+  }
+}
+
 void ThreePatchThroughEngine(benchmark::State& state) {
   PredicateStatistics statistics;
   AdaptiveSignEngine engine(statistics);
@@ -126,6 +152,8 @@ void CompareEdgeFacetRoots(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(ThreePatchDoubleInterval);
+BENCHMARK(ThreePatchDoubleIntervalAtKnownAngle);
+BENCHMARK(HalfAngleToDoubleIntervals);
 BENCHMARK_TEMPLATE(ThreePatchAtLevel, MultiprecisionInterval<kMultiprecisionDigits[0]>);
 BENCHMARK_TEMPLATE(ThreePatchAtLevel, MultiprecisionInterval<kMultiprecisionDigits[1]>);
 BENCHMARK_TEMPLATE(ThreePatchAtLevel, MultiprecisionInterval<kMultiprecisionDigits[2]>);

@@ -55,7 +55,7 @@ std::optional<std::vector<Interval>> quadraticRootsInDoubles(const Polynomial<In
   const std::optional<Sign> discriminantSign = certainSign(discriminant);
   if (discriminantSign == Sign::Negative) return std::vector<Interval>{};
   if (discriminantSign != Sign::Positive) return std::nullopt;
-  const Interval root = boost::numeric::sqrt(discriminant);
+  const Interval root = sqrt(discriminant);
   Interval first = (-c1 - root) / (Interval(2) * a), second = (-c1 + root) / (Interval(2) * a);
   if (*leading == Sign::Negative) std::swap(first, second);
   if (!(first.upper() < second.lower())) return std::nullopt;

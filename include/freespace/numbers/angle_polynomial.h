@@ -132,3 +132,13 @@ T threePatchDeterminant(const PatchLine& l1, const PatchLine& l2, const PatchLin
 }
 
 }  // namespace freespace
+
+namespace freespace {
+
+// The double-interval FFF determinant is the hottest predicate: it is compiled once
+// in the library (src/numbers/angle_polynomial.cpp), where the compiler inlines its
+// interval arithmetic fully, instead of in every caller's translation unit.
+extern template Interval threePatchDeterminant<Interval>(const PatchLine&, const PatchLine&, const PatchLine&,
+                                                         const Interval&, const Interval&);
+
+}  // namespace freespace
