@@ -130,6 +130,7 @@ void ThreePatchRoots(benchmark::State& state) {
   AngleAlgebra algebra(statistics);
   std::size_t i = 0;
   for (auto _ : state) benchmark::DoNotOptimize(algebra.roots(fffFunction(i++), PredicateKind::ThreePatch));
+  state.counters["double_fraction"] = statistics.doubleIntervalFraction();
 }
 
 void CompareEdgeFacetRoots(benchmark::State& state) {
