@@ -49,6 +49,7 @@
 #include <gtest/gtest.h>
 
 #include "freespace/input_error.h"
+#include "temp_dir.h"
 
 namespace freespace {
 namespace {
@@ -73,29 +74,6 @@ std::string loadProblem(const std::string& path) {
   }
   return "";
 }
-
-// A fresh directory for files written by one test, removed afterwards.
-class TemporaryDirectory {
- public:
-  TemporaryDirectory() {
-    const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
-    path_ = fs::temp_directory_path() /
-            ("freespace_" + std::string(test->test_suite_name()) + "_" + test->name() + "_" +
-             std::to_string(reinterpret_cast<std::uintptr_t>(this)));
-    fs::remove_all(path_);
-    fs::create_directories(path_);
-  }
-  ~TemporaryDirectory() { fs::remove_all(path_); }
-
-  std::string write(const std::string& name, const std::string& content) const {
-    const std::string file = (path_ / name).string();
-    std::ofstream(file, std::ios::binary) << content;
-    return file;
-  }
-
- private:
-  fs::path path_;
-};
 
 void expectBounds(const Mesh& mesh, const Point3& min, const Point3& max) {
   EXPECT_EQ(mesh.bounds().min(), min) << mesh.bounds().min().transpose();
@@ -172,7 +150,7 @@ TEST(MeshReader, ReadsBinaryStl) {
   const Mesh box = loadMesh(kMeshes + "cube.obj");
   TriangleSoup soup{box.vertices(), box.triangles()};
   for (Point3& vertex : soup.vertices) vertex = vertex.cwiseProduct(Point3(2, 3, 5));
-  const TemporaryDirectory directory;
+  const testing::TempDir directory;
   const Mesh mesh = loadMesh(directory.write("box.stl", binaryStl(soup)));
   EXPECT_EQ(mesh.vertices().size(), 8u);
   EXPECT_EQ(mesh.triangles().size(), 12u);
@@ -212,7 +190,7 @@ TEST(MeshReader, TurnsZUpColladaFilesYUpLikeOmplApp) {
 TEST(MeshReader, ExtensionsAreCaseInsensitive) {
   std::ifstream original(kMeshes + "cube.obj");
   const std::string content{std::istreambuf_iterator<char>(original), std::istreambuf_iterator<char>()};
-  const TemporaryDirectory directory;
+  const testing::TempDir directory;
   EXPECT_EQ(loadMesh(directory.write("CUBE.OBJ", content)).volume(), 1.0);
 }
 
@@ -256,7 +234,7 @@ TEST(VtkReader, ReadsFullDoublePrecisionAndWindowsLineEnds) {
       "# vtk DataFile Version 2.0\r\ntetrahedron\r\nascii\r\nDATASET POLYDATA\r\n"
       "POINTS 4 double\r\n0.1 0.2 0.3\r\n1.0000000000000002 0 0\r\n0 1e-300 1\r\n"
       "-0 0 1e300\r\n" "POLYGONS 4 16\r\n3 0 2 1\r\n3 0 1 3\r\n3 1 2 3\r\n3 2 0 3\r\n";
-  const TemporaryDirectory directory;
+  const testing::TempDir directory;
   const TriangleSoup soup = readTriangleSoup(directory.write("precise.vtk", text));
   ASSERT_EQ(soup.vertices.size(), 4u);
   EXPECT_EQ(soup.vertices[0], Point3(0.1, 0.2, 0.3));
@@ -272,14 +250,14 @@ TEST(VtkReader, SkipsFieldDataBeforeThePoints) {
       "FIELD FieldData 2\ntime 1 1 double\n3.5\nlabels 2 2 int\n1 2\n3 4\n"
       "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\n" +
       kTetrahedronPolygons + "CELL_DATA 4\nSCALARS id int\nLOOKUP_TABLE default\n0 1 2 3\n";
-  const TemporaryDirectory directory;
+  const testing::TempDir directory;
   EXPECT_DOUBLE_EQ(loadMesh(directory.write("field.vtk", text)).volume(), 1.0 / 6);
 }
 
 TEST(VtkReader, ReportsMalformedSectionsWithTheirLine) {
   const std::string header = "# vtk DataFile Version 3.0\nbad\nASCII\nDATASET POLYDATA\n";
   const std::string points = "POINTS 4 float\n0 0 0 1 0 0 0 1 0 0 0 1\n";
-  const TemporaryDirectory directory;
+  const testing::TempDir directory;
   const auto problem = [&](const std::string& body) {
     return loadProblem(directory.write("bad.vtk", header + body));
   };
@@ -380,7 +358,7 @@ TEST(MeshReader, ReportsADirectory) {
 }
 
 TEST(MeshReader, ReportsAFileWithoutExtension) {
-  const TemporaryDirectory directory;
+  const testing::TempDir directory;
   EXPECT_EQ(loadProblem(directory.write("mesh", "v 0 0 0\n")),
             "unsupported mesh format: the file name has no extension "
             "(expected obj, stl, ply, off, dae or vtk)");

@@ -11,8 +11,6 @@ using freespace::testing::TempDir;
 
 namespace {
 
-void writeText(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
-
 const char* kCubeObj =
     "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
     "f 1 3 2\nf 2 3 4\nf 5 6 7\nf 6 8 7\nf 1 2 5\nf 2 6 5\nf 3 7 4\nf 4 7 8\nf 1 5 3\nf 3 5 7\nf 2 4 6\nf 4 8 6\n";
@@ -30,7 +28,7 @@ std::string errorOf(const std::string& path) {
 
 TEST(Problem, ReadsOmplAppKeys) {
   TempDir dir;
-  writeText(dir.file("p.cfg"),
+  dir.write("p.cfg",
             "[problem]\nname = test\nrobot = r.obj\nworld = w.obj\n"
             "start.x = 1.5\nstart.y = -2\nstart.theta = 0.25\ngoal.x = 3\ngoal.y = 4\ngoal.theta = -3.1\n"
             "volume.min.x = -10\nvolume.min.y = -11\nvolume.max.x = 12\nvolume.max.y = 13\n"
@@ -56,26 +54,26 @@ TEST(Problem, ReadsOmplAppKeys) {
 
 TEST(Problem, MissingRequiredKeyIsAnError) {
   TempDir dir;
-  writeText(dir.file("p.cfg"), "[problem]\nrobot = r.obj\nworld = w.obj\nstart.x = 0\nstart.y = 0\n"
+  dir.write("p.cfg", "[problem]\nrobot = r.obj\nworld = w.obj\nstart.x = 0\nstart.y = 0\n"
                                "goal.x = 1\ngoal.y = 1\ngoal.theta = 0\n");
   EXPECT_EQ(errorOf(dir.file("p.cfg")), dir.file("p.cfg") + ": missing required key 'start.theta' in [problem]");
-  writeText(dir.file("q.cfg"), "[benchmark]\nrun_count = 3\n");
+  dir.write("q.cfg", "[benchmark]\nrun_count = 3\n");
   EXPECT_EQ(errorOf(dir.file("q.cfg")), dir.file("q.cfg") + ": missing section [problem]");
 }
 
 TEST(Problem, BadValuesAndSyntaxAreErrors) {
   TempDir dir;
-  writeText(dir.file("p.cfg"), "[problem]\nrobot = r.obj\nworld = w.obj\nstart.x = abc\nstart.y = 0\n"
+  dir.write("p.cfg", "[problem]\nrobot = r.obj\nworld = w.obj\nstart.x = abc\nstart.y = 0\n"
                                "start.theta = 0\ngoal.x = 1\ngoal.y = 1\ngoal.theta = 0\n");
   EXPECT_EQ(errorOf(dir.file("p.cfg")), dir.file("p.cfg") + ": [problem] start.x = 'abc' is not a finite number");
-  writeText(dir.file("s.cfg"), "[problem\nrobot = r.obj\n");
+  dir.write("s.cfg", "[problem\nrobot = r.obj\n");
   EXPECT_NE(errorOf(dir.file("s.cfg")).find(dir.file("s.cfg") + ": line 1"), std::string::npos);
   EXPECT_EQ(errorOf(dir.file("none.cfg")), dir.file("none.cfg") + ": cannot open file");
 }
 
 TEST(Problem, UnknownKeysAreWarnings) {
   TempDir dir;
-  writeText(dir.file("p.cfg"), "[problem]\nrobot = r.obj\nworld = w.obj\nstart.x = 0\nstart.y = 0\n"
+  dir.write("p.cfg", "[problem]\nrobot = r.obj\nworld = w.obj\nstart.x = 0\nstart.y = 0\n"
                                "start.theta = 0\ngoal.x = 1\ngoal.y = 1\ngoal.theta = 0\ncolour = red\n[extra]\na = 1\n");
   std::vector<std::string> warnings;
   readProblem(dir.file("p.cfg"), &warnings);
@@ -109,8 +107,8 @@ TEST(Problem, WriteThenReadGivesTheSameProblem) {
 
 TEST(Problem, LoadRecentresTheRobotAtItsVertexAverage) {
   TempDir dir;
-  writeText(dir.file("cube.obj"), kCubeObj);
-  writeText(dir.file("p.cfg"), "[problem]\nrobot = cube.obj\nworld = cube.obj\nstart.x = 0\nstart.y = 0\n"
+  dir.write("cube.obj", kCubeObj);
+  dir.write("p.cfg", "[problem]\nrobot = cube.obj\nworld = cube.obj\nstart.x = 0\nstart.y = 0\n"
                                "start.theta = 0\ngoal.x = 1\ngoal.y = 1\ngoal.theta = 0\n");
   const LoadedProblem loaded = loadProblem(dir.file("p.cfg"));
   // The unit cube's vertex average is (0.5, 0.5, 0.5); only x and y are removed.
