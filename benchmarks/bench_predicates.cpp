@@ -16,11 +16,11 @@ using namespace freespace;
 namespace {
 
 /// Random patch lines with coordinates of a few units, as a scene would give.
-std::vector<PatchLine> randomLines(std::size_t count) {
+std::vector<PatchLine<double>> randomLines(std::size_t count) {
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> value(-4, 4);
-  std::vector<PatchLine> lines(count);
-  for (PatchLine& line : lines) {
+  std::vector<PatchLine<double>> lines(count);
+  for (PatchLine<double>& line : lines) {
     for (double* field : {&line.a1x, &line.a1y, &line.a2x, &line.a2y, &line.k1, &line.k2, &line.k3}) {
       *field = value(random);
     }
@@ -31,17 +31,17 @@ std::vector<PatchLine> randomLines(std::size_t count) {
 /// The FFF determinant's sign at a rational angle (chart 0, t = 0.3), written once
 /// for all number types.
 struct ThreePatchSign {
-  const PatchLine *l1, *l2, *l3;
+  const PatchLine<double> *l1, *l2, *l3;
   template <class T>
   T operator()(NumberType<T>) const {
     T cosine, sine;
     HalfAngle{0, 0.3}.cosSin(cosine, sine);
-    return threePatchDeterminant<T>(*l1, *l2, *l3, cosine, sine);
+    return threePatchDeterminant(convertLine<T>(*l1), convertLine<T>(*l2), convertLine<T>(*l3), cosine, sine);
   }
 };
 
-const std::vector<PatchLine>& lines() {
-  static const std::vector<PatchLine> instance = randomLines(3 * 1024);
+const std::vector<PatchLine<double>>& lines() {
+  static const std::vector<PatchLine<double>> instance = randomLines(3 * 1024);
   return instance;
 }
 
@@ -68,16 +68,20 @@ void ThreePatchDoubleInterval(benchmark::State& state) {
   }
 }
 
-/// The same at an angle whose cosine and sine intervals are known (computed once
-/// per angle, as a sweep does), i.e. the determinant alone.
+/// The same with the angle's cosine and sine intervals known (computed once per
+/// angle, as a sweep does) and the lines' interval coefficients too (computed once
+/// per patch): the determinant alone.
 void ThreePatchDoubleIntervalAtKnownAngle(benchmark::State& state) {
   RoundingScope rounding;
   Interval cosine, sine;
   HalfAngle{0, 0.3}.cosSin(cosine, sine);
+  std::vector<PatchLine<Interval>> intervalLines;
+  for (const PatchLine<double>& line : lines()) intervalLines.push_back(convertLine<Interval>(line));
   std::size_t i = 0;
   for (auto _ : state) {
-    const ThreePatchSign p = predicateNumber(i++);
-    benchmark::DoNotOptimize(certainSign(threePatchDeterminant(*p.l1, *p.l2, *p.l3, cosine, sine)));
+    const std::size_t j = 3 * (i++ % 1024);
+    benchmark::DoNotOptimize(
+        certainSign(threePatchDeterminant(intervalLines[j], intervalLines[j + 1], intervalLines[j + 2], cosine, sine)));
   }
 }
 
@@ -102,10 +106,10 @@ void ThreePatchThroughEngine(benchmark::State& state) {
   state.counters["double_fraction"] = statistics.doubleIntervalFraction();
 }
 
-std::shared_ptr<const AngleFunction> efFunction(const PatchLine& line) {
+std::shared_ptr<const AngleFunction> efFunction(const PatchLine<double>& line) {
   return std::make_shared<AngleFunction>([line](auto type, int chart) {
     using T = typename decltype(type)::type;
-    return tangentPolynomial(edgeFacetForm<T>(line.k1, line.k2, line.k3), chart);
+    return tangentPolynomial(edgeFacetForm(T(line.k1), T(line.k2), T(line.k3)), chart);
   });
 }
 
@@ -113,7 +117,7 @@ std::shared_ptr<const AngleFunction> fffFunction(std::size_t i) {
   const ThreePatchSign p = predicateNumber(i);
   return std::make_shared<AngleFunction>([p](auto type, int chart) {
     using T = typename decltype(type)::type;
-    return threePatchPolynomial<T>(*p.l1, *p.l2, *p.l3, chart);
+    return threePatchPolynomial(convertLine<T>(*p.l1), convertLine<T>(*p.l2), convertLine<T>(*p.l3), chart);
   });
 }
 
@@ -137,7 +141,7 @@ void CompareEdgeFacetRoots(benchmark::State& state) {
   PredicateStatistics statistics;
   AngleAlgebra algebra(statistics);
   std::vector<AlgebraicAngle> angles;
-  for (const PatchLine& line : lines()) {
+  for (const PatchLine<double>& line : lines()) {
     for (const AlgebraicAngle& angle : algebra.roots(efFunction(line), PredicateKind::EdgeFacet)) angles.push_back(angle);
   }
   PredicateStatistics comparisons;

@@ -29,7 +29,7 @@ std::shared_ptr<const AngleFunction> productOf(const std::vector<Form>& forms) {
   return std::make_shared<AngleFunction>([forms](auto type, int chart) {
     using T = typename decltype(type)::type;
     Polynomial<T> product({T(1)});
-    for (const Form& form : forms) product = product * tangentPolynomial(edgeFacetForm<T>(form.k1, form.k2, form.k3), chart);
+    for (const Form& form : forms) product = product * tangentPolynomial(edgeFacetForm(T(form.k1), T(form.k2), T(form.k3)), chart);
     return product;
   });
 }

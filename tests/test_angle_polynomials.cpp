@@ -28,8 +28,8 @@ ExactAngle randomAngle() {
   return angle;
 }
 
-PatchLine randomLine() {
-  PatchLine line;
+PatchLine<double> randomLine() {
+  PatchLine<double> line;
   for (double* value : {&line.a1x, &line.a1y, &line.a2x, &line.a2y, &line.k1, &line.k2, &line.k3}) {
     *value = uniform(-4, 5) / 2.0;
   }
@@ -46,12 +46,12 @@ Vector2 rotate(const ExactAngle& angle, const Rational& x, const Rational& y) {
 }
 
 /// The line's normal n = R a1 + a2 and its constant k1 sin + k2 cos + k3 at the angle.
-Vector2 normal(const PatchLine& line, const ExactAngle& angle) {
+Vector2 normal(const PatchLine<double>& line, const ExactAngle& angle) {
   const Vector2 rotated = rotate(angle, Rational(line.a1x), Rational(line.a1y));
   return {rotated.x + Rational(line.a2x), rotated.y + Rational(line.a2y)};
 }
 
-Rational constant(const PatchLine& line, const ExactAngle& angle) {
+Rational constant(const PatchLine<double>& line, const ExactAngle& angle) {
   return Rational(line.k1) * angle.sine + Rational(line.k2) * angle.cosine + Rational(line.k3);
 }
 
@@ -61,14 +61,14 @@ Rational evaluate(const Polynomial<Rational>& p, const ExactAngle& angle) { retu
 
 RC_GTEST_PROP(AnglePolynomial, EdgeFacetIsWTimesTheForm, ()) {
   const ExactAngle angle = randomAngle();
-  const PatchLine line = randomLine();
-  const auto p = tangentPolynomial(edgeFacetForm<Rational>(line.k1, line.k2, line.k3), angle.chart);
+  const PatchLine<double> line = randomLine();
+  const auto p = tangentPolynomial(edgeFacetForm(Rational(line.k1), Rational(line.k2), Rational(line.k3)), angle.chart);
   RC_ASSERT(evaluate(p, angle) == angle.w * constant(line, angle));
 }
 
 RC_GTEST_PROP(AnglePolynomial, SpiralFacetIsWTimesTheLineAtTheSpiralPoint, ()) {
   const ExactAngle angle = randomAngle();
-  const PatchLine line = randomLine();
+  const PatchLine<double> line = randomLine();
   const double p[3] = {uniform(-4, 5) / 4.0, uniform(-4, 5) / 4.0, uniform(1, 4) / 4.0};
   const double e0[3] = {uniform(-4, 5) / 4.0, uniform(-4, 5) / 4.0, 0.0};
   const double e1[3] = {uniform(-4, 5) / 4.0, uniform(-4, 5) / 4.0, 1.0};
@@ -90,18 +90,19 @@ RC_GTEST_PROP(AnglePolynomial, SpiralFacetIsWTimesTheLineAtTheSpiralPoint, ()) {
   }
   const Vector2 n = normal(line, angle);
   const Rational lineValue = n.x * d.x + n.y * d.y + constant(line, angle);
-  const auto polynomial = tangentPolynomial(spiralFacetForm(line, spiral), angle.chart);
+  const auto polynomial = tangentPolynomial(spiralFacetForm(convertLine<Rational>(line), spiral), angle.chart);
   RC_ASSERT(evaluate(polynomial, angle) == angle.w * lineValue);
 }
 
 RC_GTEST_PROP(AnglePolynomial, ThreePatchIsWSquaredTimesTheDeterminant, ()) {
   const ExactAngle angle = randomAngle();
-  const PatchLine l1 = randomLine(), l2 = randomLine(), l3 = randomLine();
+  const PatchLine<double> l1 = randomLine(), l2 = randomLine(), l3 = randomLine();
+  const PatchLine<Rational> e1 = convertLine<Rational>(l1), e2 = convertLine<Rational>(l2), e3 = convertLine<Rational>(l3);
   const Vector2 n1 = normal(l1, angle), n2 = normal(l2, angle), n3 = normal(l3, angle);
   const Rational w1 = constant(l1, angle), w2 = constant(l2, angle), w3 = constant(l3, angle);
   const Rational determinant = n1.x * (n2.y * w3 - w2 * n3.y) - n1.y * (n2.x * w3 - w2 * n3.x) +
                                w1 * (n2.x * n3.y - n2.y * n3.x);
-  const auto p = threePatchPolynomial<Rational>(l1, l2, l3, angle.chart);
+  const auto p = threePatchPolynomial(e1, e2, e3, angle.chart);
   RC_ASSERT(p.size() == 5u);
   RC_ASSERT(evaluate(p, angle) == angle.w * angle.w * determinant);
 }
@@ -117,7 +118,8 @@ TEST(AnglePolynomial, SpiralUsesThePointOfTheEdgeAtTheVertexHeight) {
 
 RC_GTEST_PROP(AnglePolynomial, DirectThreePatchDeterminantMatchesThePolynomial, ()) {
   const ExactAngle angle = randomAngle();
-  const PatchLine l1 = randomLine(), l2 = randomLine(), l3 = randomLine();
-  const Rational direct = threePatchDeterminant<Rational>(l1, l2, l3, angle.cosine, angle.sine);
-  RC_ASSERT(evaluate(threePatchPolynomial<Rational>(l1, l2, l3, angle.chart), angle) == angle.w * angle.w * direct);
+  const PatchLine<double> l1 = randomLine(), l2 = randomLine(), l3 = randomLine();
+  const PatchLine<Rational> e1 = convertLine<Rational>(l1), e2 = convertLine<Rational>(l2), e3 = convertLine<Rational>(l3);
+  const Rational direct = threePatchDeterminant(e1, e2, e3, angle.cosine, angle.sine);
+  RC_ASSERT(evaluate(threePatchPolynomial(e1, e2, e3, angle.chart), angle) == angle.w * angle.w * direct);
 }

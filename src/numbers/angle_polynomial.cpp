@@ -2,7 +2,7 @@
 
 namespace freespace {
 
-template Interval threePatchDeterminant<Interval>(const PatchLine&, const PatchLine&, const PatchLine&,
-                                                  const Interval&, const Interval&);
+template Interval threePatchDeterminant<Interval>(const PatchLine<Interval>&, const PatchLine<Interval>&,
+                                                  const PatchLine<Interval>&, const Interval&, const Interval&);
 
 }  // namespace freespace

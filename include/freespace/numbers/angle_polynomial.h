@@ -41,10 +41,19 @@ Polynomial<T> operator+(const Polynomial<T>& a, const Polynomial<T>& b) {
 
 /// A patch's line at angle theta (DESIGN.md section 3):
 ///   (R(theta) a1 + a2) . d + k1 sin + k2 cos + k3 = 0.
+/// The coefficients are polynomials in the input coordinates, computed in the number
+/// type T of the evaluation (see geometry/patch.h), never rounded in between.
+template <class T>
 struct PatchLine {
-  double a1x = 0, a1y = 0, a2x = 0, a2y = 0;
-  double k1 = 0, k2 = 0, k3 = 0;
+  T a1x, a1y, a2x, a2y;
+  T k1, k2, k3;
 };
+
+/// The same line with its coefficients converted to another number type.
+template <class T, class S>
+PatchLine<T> convertLine(const PatchLine<S>& line) {
+  return {T(line.a1x), T(line.a1y), T(line.a2x), T(line.a2y), T(line.k1), T(line.k2), T(line.k3)};
+}
 
 /// A point of the plane moving with theta as d(theta) = u + R(theta) v: the spiral
 /// end points of patches (DESIGN.md section 3), where u and v are given exactly by
@@ -71,27 +80,27 @@ Spiral<T> spiralOfWorldVertexOnEdge(const double q[3], const double f0[3], const
 
 /// EF: k1 sin + k2 cos + k3 (a compatibility condition or a patch interval end).
 template <class T>
-TrigLinear<T> edgeFacetForm(double k1, double k2, double k3) {
-  return {T(k1), T(k2), T(k3)};
+TrigLinear<T> edgeFacetForm(const T& k1, const T& k2, const T& k3) {
+  return {k1, k2, k3};
 }
 
 /// SF: the line of `line` evaluated at the spiral point, using
 /// (R a) . b = cos (a . b) + sin (a x b) and (R a) . (R b) = a . b.
 template <class T>
-TrigLinear<T> spiralFacetForm(const PatchLine& line, const Spiral<T>& spiral) {
-  const T a1x(line.a1x), a1y(line.a1y), a2x(line.a2x), a2y(line.a2y);
+TrigLinear<T> spiralFacetForm(const PatchLine<T>& line, const Spiral<T>& spiral) {
+  const T &a1x = line.a1x, &a1y = line.a1y, &a2x = line.a2x, &a2y = line.a2y;
   const T a1CrossU = a1x * spiral.uy - a1y * spiral.ux, a1DotU = a1x * spiral.ux + a1y * spiral.uy;
   const T vCrossA2 = spiral.vx * a2y - spiral.vy * a2x, vDotA2 = spiral.vx * a2x + spiral.vy * a2y;
-  return {a1CrossU + vCrossA2 + T(line.k1), a1DotU + vDotA2 + T(line.k2),
-          a1x * spiral.vx + a1y * spiral.vy + a2x * spiral.ux + a2y * spiral.uy + T(line.k3)};
+  return {a1CrossU + vCrossA2 + line.k1, a1DotU + vDotA2 + line.k2,
+          a1x * spiral.vx + a1y * spiral.vy + a2x * spiral.ux + a2y * spiral.uy + line.k3};
 }
 
 /// n_j x n_k for n = R a1 + a2, linear in sin and cos because
 /// (R a) x b = cos (a x b) - sin (a . b) and (R a) x (R b) = a x b.
 template <class T>
-TrigLinear<T> normalCrossForm(const PatchLine& j, const PatchLine& k) {
-  const auto cross = [](double ax, double ay, double bx, double by) { return T(ax) * T(by) - T(ay) * T(bx); };
-  const auto dot = [](double ax, double ay, double bx, double by) { return T(ax) * T(bx) + T(ay) * T(by); };
+TrigLinear<T> normalCrossForm(const PatchLine<T>& j, const PatchLine<T>& k) {
+  const auto cross = [](const T& ax, const T& ay, const T& bx, const T& by) { return ax * by - ay * bx; };
+  const auto dot = [](const T& ax, const T& ay, const T& bx, const T& by) { return ax * bx + ay * by; };
   return {dot(j.a2x, j.a2y, k.a1x, k.a1y) - dot(j.a1x, j.a1y, k.a2x, k.a2y),
           cross(j.a1x, j.a1y, k.a2x, k.a2y) + cross(j.a2x, j.a2y, k.a1x, k.a1y),
           cross(j.a1x, j.a1y, k.a1x, k.a1y) + cross(j.a2x, j.a2y, k.a2x, k.a2y)};
@@ -100,9 +109,9 @@ TrigLinear<T> normalCrossForm(const PatchLine& j, const PatchLine& k) {
 /// FFF: the three lines are concurrent where det[n_i, w_i] = sum over cyclic (i, j, k)
 /// of w_i (n_j x n_k) vanishes; a quartic in t.
 template <class T>
-Polynomial<T> threePatchPolynomial(const PatchLine& l1, const PatchLine& l2, const PatchLine& l3, int chart) {
-  const auto term = [chart](const PatchLine& i, const PatchLine& j, const PatchLine& k) {
-    return tangentPolynomial(edgeFacetForm<T>(i.k1, i.k2, i.k3), chart) * tangentPolynomial(normalCrossForm<T>(j, k), chart);
+Polynomial<T> threePatchPolynomial(const PatchLine<T>& l1, const PatchLine<T>& l2, const PatchLine<T>& l3, int chart) {
+  const auto term = [chart](const PatchLine<T>& i, const PatchLine<T>& j, const PatchLine<T>& k) {
+    return tangentPolynomial(edgeFacetForm(i.k1, i.k2, i.k3), chart) * tangentPolynomial(normalCrossForm(j, k), chart);
   };
   return term(l1, l2, l3) + term(l2, l3, l1) + term(l3, l1, l2);
 }
@@ -114,17 +123,16 @@ struct LineAtAngle {
 };
 
 template <class T>
-LineAtAngle<T> lineAtAngle(const PatchLine& line, const T& cosine, const T& sine) {
-  const T a1x(line.a1x), a1y(line.a1y);
-  return {cosine * a1x - sine * a1y + T(line.a2x), sine * a1x + cosine * a1y + T(line.a2y),
-          T(line.k1) * sine + T(line.k2) * cosine + T(line.k3)};
+LineAtAngle<T> lineAtAngle(const PatchLine<T>& line, const T& cosine, const T& sine) {
+  return {cosine * line.a1x - sine * line.a1y + line.a2x, sine * line.a1x + cosine * line.a1y + line.a2y,
+          line.k1 * sine + line.k2 * cosine + line.k3};
 }
 
 /// The FFF determinant det[n_i, w_i] at one angle, evaluated directly (no
 /// polynomial is built): the sign predicate "on which side of concurrency are three
 /// patch lines at this angle".
 template <class T>
-T threePatchDeterminant(const PatchLine& l1, const PatchLine& l2, const PatchLine& l3, const T& cosine,
+T threePatchDeterminant(const PatchLine<T>& l1, const PatchLine<T>& l2, const PatchLine<T>& l3, const T& cosine,
                         const T& sine) {
   const LineAtAngle<T> a = lineAtAngle(l1, cosine, sine), b = lineAtAngle(l2, cosine, sine),
                        c = lineAtAngle(l3, cosine, sine);
@@ -138,7 +146,7 @@ namespace freespace {
 // The double-interval FFF determinant is the hottest predicate: it is compiled once
 // in the library (src/numbers/angle_polynomial.cpp), where the compiler inlines its
 // interval arithmetic fully, instead of in every caller's translation unit.
-extern template Interval threePatchDeterminant<Interval>(const PatchLine&, const PatchLine&, const PatchLine&,
-                                                         const Interval&, const Interval&);
+extern template Interval threePatchDeterminant<Interval>(const PatchLine<Interval>&, const PatchLine<Interval>&,
+                                                         const PatchLine<Interval>&, const Interval&, const Interval&);
 
 }  // namespace freespace
