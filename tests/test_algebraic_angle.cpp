@@ -237,3 +237,75 @@ TEST(AlgebraicAngle, NearTiesBeyondDoublesAreDecidedInMultiprecision) {
   EXPECT_EQ(statistics.counts(PredicateKind::SignAtRoot).decided[multiprecision], 1u);
   EXPECT_EQ(statistics.counts(PredicateKind::RootOrder).decided[multiprecision], 1u);
 }
+
+RC_GTEST_PROP(AlgebraicAngle, PositiveSetMatchesSampledTrigonometry, ()) {
+  std::vector<Form> forms;
+  const int count = *rc::gen::inRange(1, 4);
+  for (int i = 0; i < count; ++i) forms.push_back(randomForm(5));
+  std::vector<std::shared_ptr<const AngleFunction>> functions;
+  for (const Form& form : forms) {
+    functions.push_back(productOf({form}));
+    RC_PRE(!functions.back()->isIdenticallyZero());
+  }
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const AngleSet set = algebra.positiveSet(functions, PredicateKind::EdgeFacet);
+  int decided = 0;
+  for (int i = 0; i < 360; ++i) {
+    const double theta = -M_PI + (i + 0.37) * (2 * M_PI / 360);
+    long double smallest = 1e300L;
+    bool allPositive = true;
+    for (const Form& form : forms) {
+      const long double value = form.at(theta);
+      smallest = std::min(smallest, std::fabs(value));
+      allPositive = allPositive && value > 0;
+    }
+    if (smallest < 1e-9) continue;  // too close to a boundary for the reference
+    ++decided;
+    RC_ASSERT(algebra.contains(set, AlgebraicAngle::rational(HalfAngle::fromRadians(theta))) == allPositive);
+  }
+  RC_ASSERT(decided > 300);
+}
+
+TEST(AlgebraicAngle, PositiveSetsAtTheirExtremes) {
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const auto at = [](double theta) { return AlgebraicAngle::rational(HalfAngle::fromRadians(theta)); };
+  // Exactly +-pi/2 (t = +-1 in chart 0); the doubles M_PI / 2 are not.
+  const AlgebraicAngle quarterTurn = AlgebraicAngle::rational(0, Rational(1));
+  const AlgebraicAngle minusQuarterTurn = AlgebraicAngle::rational(0, Rational(-1));
+  // cos + 2 > 0 everywhere; cos - 2 > 0 nowhere.
+  EXPECT_TRUE(algebra.positiveSet({productOf({{0, 1, 2}})}, PredicateKind::EdgeFacet).fullCircle);
+  EXPECT_TRUE(algebra.positiveSet({productOf({{0, 1, -2}})}, PredicateKind::EdgeFacet).empty());
+  // cos + 1 > 0 everywhere but at pi: its closure is the full circle.
+  EXPECT_TRUE(algebra.positiveSet({productOf({{0, 1, 1}})}, PredicateKind::EdgeFacet).fullCircle);
+  // sin > 0 and cos > 0: the closed first quadrant [0, pi/2].
+  const AngleSet quadrant = algebra.positiveSet({productOf({{1, 0, 0}}), productOf({{0, 1, 0}})}, PredicateKind::EdgeFacet);
+  ASSERT_EQ(quadrant.arcs.size(), 1u);
+  EXPECT_EQ(algebra.compare(quadrant.arcs[0].from, at(0)), 0);
+  EXPECT_EQ(algebra.compare(quadrant.arcs[0].to, quarterTurn), 0);
+  // -cos > 0: the arc from pi/2 through pi to -pi/2, which crosses theta = pi.
+  const AngleSet back = algebra.positiveSet({productOf({{0, -1, 0}})}, PredicateKind::EdgeFacet);
+  ASSERT_EQ(back.arcs.size(), 1u);
+  EXPECT_TRUE(algebra.contains(back, at(M_PI)));
+  EXPECT_TRUE(algebra.contains(back, minusQuarterTurn));
+  EXPECT_TRUE(algebra.contains(back, quarterTurn));
+  EXPECT_FALSE(algebra.contains(back, at(-M_PI / 2)));  // just past -pi/2, where cos > 0
+  EXPECT_FALSE(algebra.contains(back, at(0)));
+  // cos > 0 and -cos > 0 share their boundary points only: empty.
+  EXPECT_TRUE(algebra.positiveSet({productOf({{0, 1, 0}}), productOf({{0, -1, 0}})}, PredicateKind::EdgeFacet).empty());
+}
+
+TEST(AlgebraicAngle, RationalBetweenSeparatesCloseAndWrappingAngles) {
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const auto roots = algebra.roots(productOf({{3, 4, -5 + 1e-12}}), PredicateKind::EdgeFacet);  // two close roots
+  ASSERT_EQ(roots.size(), 2u);
+  const AlgebraicAngle inside = algebra.rationalBetween(roots[0], roots[1]);
+  EXPECT_EQ(algebra.compare(roots[0], inside), -1);
+  EXPECT_EQ(algebra.compare(inside, roots[1]), -1);
+  // From the later root around the circle to the earlier one: outside both.
+  const AlgebraicAngle around = algebra.rationalBetween(roots[1], roots[0]);
+  EXPECT_TRUE(algebra.compare(around, roots[0]) < 0 || algebra.compare(around, roots[1]) > 0);
+  EXPECT_THROW(algebra.rationalBetween(roots[0], roots[0]), std::invalid_argument);
+}

@@ -3,6 +3,7 @@
 #include "interval_root_isolation.h"
 #include "multiprecision_refinement.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -145,6 +146,10 @@ AlgebraicAngle::AlgebraicAngle(std::shared_ptr<const AngleFunction> function, in
                                double lower, double upper)
     : function_(std::move(function)), chart_(chart), root_(std::move(root)), lower_(lower), upper_(upper) {}
 
+AlgebraicAngle AlgebraicAngle::rational(int chart, const Rational& t) {
+  return AlgebraicAngle(nullptr, chart, {t, t}, lowerDouble(t), upperDouble(t));
+}
+
 AlgebraicAngle AlgebraicAngle::rational(const HalfAngle& angle) {
   // Chart 1 does not hold t = +-1: those angles are chart 0's -+1.
   const bool boundary = angle.chart == 1 && std::fabs(angle.t) == 1;
@@ -278,6 +283,119 @@ bool AngleAlgebra::contains(const AngleInterval& arc, const AlgebraicAngle& angl
   const bool beforeTo = compare(angle, arc.to) <= 0;
   const bool wraps = compare(arc.to, arc.from) < 0;
   return wraps ? (afterFrom || beforeTo) : (afterFrom && beforeTo);
+}
+
+bool AngleAlgebra::contains(const AngleSet& set, const AlgebraicAngle& angle) {
+  if (set.fullCircle) return true;
+  for (const AngleInterval& arc : set.arcs) {
+    if (contains(arc, angle)) return true;
+  }
+  return false;
+}
+
+namespace {
+
+/// Position along the circle cut at -pi/2 as one parameter: u = t in chart 0
+/// ([-1, 1]) and u = t + 2 in chart 1 ((1, 3)); a full turn adds 4.
+constexpr int kTurn = 4;
+
+Rational chartOffset(int chart) { return Rational(chart == 0 ? 0 : 2); }
+
+/// An angle's exact isolating interval in u, with the polynomial that refines it.
+struct ExactPosition {
+  RationalPolynomial squareFree;
+  IsolatingInterval u;
+};
+
+ExactPosition exactPosition(const AlgebraicAngle& angle) {
+  const IsolatingInterval t = verifiedIsolating(angle);
+  const RationalPolynomial polynomial =
+      angle.isRational() ? linearPolynomial(t.lo) : angle.function()->squareFree(angle.chart());
+  return {polynomial, {t.lo + chartOffset(angle.chart()), t.hi + chartOffset(angle.chart())}};
+}
+
+/// Halves an isolating interval given in u (its polynomial is in t).
+void bisectPosition(ExactPosition& position, const Rational& offset) {
+  IsolatingInterval t{position.u.lo - offset, position.u.hi - offset};
+  bisect(position.squareFree, t);
+  position.u = {t.lo + offset, t.hi + offset};
+}
+
+/// The rational angle at position u, taken modulo a full turn.
+AlgebraicAngle angleAtPosition(Rational u) {
+  while (u >= 3) u -= kTurn;
+  while (u < -1) u += kTurn;
+  return u <= 1 ? AlgebraicAngle::rational(0, u) : AlgebraicAngle::rational(1, u - 2);
+}
+
+}  // namespace
+
+AlgebraicAngle AngleAlgebra::rationalBetween(const AlgebraicAngle& from, const AlgebraicAngle& to) {
+  const int order = compare(from, to);
+  if (order == 0) throw std::invalid_argument("rationalBetween: the two angles are equal");
+  // Going counterclockwise from `from`, `to` comes a full turn later when it
+  // precedes `from` in the cut order.
+  const Rational turn(order < 0 ? 0 : kTurn);
+  ExactPosition start = exactPosition(from), end = exactPosition(to);
+  while (!(start.u.hi < end.u.lo + turn)) {
+    bisectPosition(start, chartOffset(from.chart()));
+    bisectPosition(end, chartOffset(to.chart()));
+  }
+  return angleAtPosition((start.u.hi + end.u.lo + turn) / 2);
+}
+
+AngleSet AngleAlgebra::positiveSet(const std::vector<std::shared_ptr<const AngleFunction>>& functions,
+                                   PredicateKind kind) {
+  std::vector<AlgebraicAngle> roots;
+  for (const auto& function : functions) {
+    for (const AlgebraicAngle& root : this->roots(function, kind)) roots.push_back(root);
+  }
+  std::sort(roots.begin(), roots.end(), [this](const AlgebraicAngle& a, const AlgebraicAngle& b) {
+    return compare(a, b) < 0;
+  });
+  roots.erase(std::unique(roots.begin(), roots.end(),
+                          [this](const AlgebraicAngle& a, const AlgebraicAngle& b) { return compare(a, b) == 0; }),
+              roots.end());
+  const auto allPositiveAt = [&](const AlgebraicAngle& angle) {
+    return std::all_of(functions.begin(), functions.end(),
+                       [&](const auto& function) { return signAt(*function, angle) == Sign::Positive; });
+  };
+  AngleSet set;
+  if (roots.empty()) {
+    set.fullCircle = allPositiveAt(AlgebraicAngle::rational(0, Rational(0)));
+    return set;
+  }
+  // Gap i runs from root i to root i + 1 (the last one around to the first); the
+  // functions keep their signs inside a gap, so one sample decides it.
+  const std::size_t count = roots.size();
+  std::vector<bool> positiveGap(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const AlgebraicAngle& next = roots[(i + 1) % count];
+    const AlgebraicAngle sample = count == 1 ? angleAtPosition(exactPosition(roots[0]).u.lo + 2)
+                                             : rationalBetween(roots[i], next);
+    positiveGap[i] = allPositiveAt(sample);
+  }
+  if (std::all_of(positiveGap.begin(), positiveGap.end(), [](bool positive) { return positive; })) {
+    set.fullCircle = true;
+    return set;
+  }
+  // Closed arcs are the runs of positive gaps, started after a gap that is not.
+  const std::size_t first = static_cast<std::size_t>(
+      std::find(positiveGap.begin(), positiveGap.end(), false) - positiveGap.begin());
+  for (std::size_t step = 1; step <= count; ++step) {
+    const std::size_t gap = (first + step) % count;
+    if (!positiveGap[gap]) continue;
+    const bool continuesRun = positiveGap[(gap + count - 1) % count];
+    if (continuesRun) {
+      set.arcs.back().to = roots[(gap + 1) % count];
+    } else {
+      set.arcs.push_back({roots[gap], roots[(gap + 1) % count]});
+    }
+  }
+  std::sort(set.arcs.begin(), set.arcs.end(), [this](const AngleInterval& a, const AngleInterval& b) {
+    return compare(a.from, b.from) < 0;
+  });
+  return set;
 }
 
 Sign AngleAlgebra::record(PredicateKind kind, int level, Sign sign) {

@@ -51,6 +51,8 @@ class AlgebraicAngle {
   AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, IsolatingInterval root, double lower,
                  double upper);
   static AlgebraicAngle rational(const HalfAngle& angle);
+  /// The rational angle with tangent parameter t (in [-1, 1]) in the chart.
+  static AlgebraicAngle rational(int chart, const Rational& t);
 
   int chart() const { return chart_; }
   /// Null for a rational angle.
@@ -80,6 +82,15 @@ struct AngleInterval {
   AlgebraicAngle to;
 };
 
+/// A closed set of angles: the whole circle, or disjoint closed arcs in the order of
+/// AngleAlgebra::compare (the last may wrap through the cut at -pi/2).
+struct AngleSet {
+  bool fullCircle = false;
+  std::vector<AngleInterval> arcs;
+
+  bool empty() const { return !fullCircle && arcs.empty(); }
+};
+
 /// Exact predicates on algebraic angles, filtered in double intervals with exact
 /// rational fallback and exact identity detection (equal roots compare equal; a
 /// function that vanishes at a root has sign exactly zero), counted in statistics.
@@ -101,6 +112,16 @@ class AngleAlgebra {
   /// Whether the arc contains `angle`; an arc whose `to` precedes its `from` wraps
   /// through the cut.
   bool contains(const AngleInterval& arc, const AlgebraicAngle& angle);
+  bool contains(const AngleSet& set, const AlgebraicAngle& angle);
+
+  /// A rational angle strictly inside the open arc from `from` to `to`
+  /// (counterclockwise, so through the cut when `to` precedes `from`); the two
+  /// angles must differ.
+  AlgebraicAngle rationalBetween(const AlgebraicAngle& from, const AlgebraicAngle& to);
+
+  /// The closure of the set of angles where every function is positive. Throws
+  /// std::invalid_argument for a function that vanishes identically.
+  AngleSet positiveSet(const std::vector<std::shared_ptr<const AngleFunction>>& functions, PredicateKind kind);
 
  private:
   std::optional<int> compareInDoubles(AlgebraicAngle& a, AlgebraicAngle& b) const;
