@@ -292,6 +292,8 @@ TEST(AlgebraicAngle, PositiveSetsAtTheirExtremes) {
   EXPECT_TRUE(algebra.contains(back, quarterTurn));
   EXPECT_FALSE(algebra.contains(back, at(-M_PI / 2)));  // just past -pi/2, where cos > 0
   EXPECT_FALSE(algebra.contains(back, at(0)));
+  // A function that vanishes identically is positive nowhere.
+  EXPECT_TRUE(algebra.positiveSet({productOf({{0, 1, 2}}), productOf({{0, 0, 0}})}, PredicateKind::EdgeFacet).empty());
   // cos > 0 and -cos > 0 share their boundary points only: empty.
   EXPECT_TRUE(algebra.positiveSet({productOf({{0, 1, 0}}), productOf({{0, -1, 0}})}, PredicateKind::EdgeFacet).empty());
 }

@@ -346,6 +346,11 @@ AlgebraicAngle AngleAlgebra::rationalBetween(const AlgebraicAngle& from, const A
 
 AngleSet AngleAlgebra::positiveSet(const std::vector<std::shared_ptr<const AngleFunction>>& functions,
                                    PredicateKind kind) {
+  // A function that vanishes identically is positive nowhere.
+  AngleSet set;
+  for (const auto& function : functions) {
+    if (function->isIdenticallyZero()) return set;
+  }
   std::vector<AlgebraicAngle> roots;
   for (const auto& function : functions) {
     for (const AlgebraicAngle& root : this->roots(function, kind)) roots.push_back(root);
@@ -360,7 +365,6 @@ AngleSet AngleAlgebra::positiveSet(const std::vector<std::shared_ptr<const Angle
     return std::all_of(functions.begin(), functions.end(),
                        [&](const auto& function) { return signAt(*function, angle) == Sign::Positive; });
   };
-  AngleSet set;
   if (roots.empty()) {
     set.fullCircle = allPositiveAt(AlgebraicAngle::rational(0, Rational(0)));
     return set;

@@ -119,8 +119,8 @@ class AngleAlgebra {
   /// angles must differ.
   AlgebraicAngle rationalBetween(const AlgebraicAngle& from, const AlgebraicAngle& to);
 
-  /// The closure of the set of angles where every function is positive. Throws
-  /// std::invalid_argument for a function that vanishes identically.
+  /// The closure of the set of angles where every function is positive (empty when
+  /// one of them vanishes identically).
   AngleSet positiveSet(const std::vector<std::shared_ptr<const AngleFunction>>& functions, PredicateKind kind);
 
  private:

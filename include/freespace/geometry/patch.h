@@ -1,0 +1,52 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "freespace/geometry/mesh.h"
+#include "freespace/geometry/mesh_topology.h"
+#include "freespace/numbers/algebraic_angle.h"
+#include "freespace/numbers/angle_polynomial.h"
+
+namespace freespace {
+
+enum class ContactKind {
+  VertexFacet,  // a robot vertex on an environment triangle
+  FacetVertex,  // an environment vertex on a robot triangle
+  EdgeEdge,     // a robot edge crossing an environment edge
+};
+
+/// The two features in contact (DESIGN.md section 3): indices of a vertex, a
+/// triangle or an edge (MeshTopology::edges()) of the robot and of the environment.
+struct Contact {
+  ContactKind kind = ContactKind::VertexFacet;
+  std::uint32_t robot = 0;
+  std::uint32_t world = 0;
+};
+
+/// The patch line of a VF or FV contact as the signed contact function: positive on
+/// the free side (DESIGN.md section 3), with coefficients computed from the meshes'
+/// coordinates in T.
+///   VF, robot vertex p, environment triangle (q0, q1, q2), n = (q1 - q0) x (q2 - q0):
+///     n . (R p + d - q0) = n_xy . d + (p x n) sin + (p . n)_xy cos + p_z n_z - n . q0
+///   FV, environment vertex q, robot triangle (p0, p1, p2), m = (p1 - p0) x (p2 - p0):
+///     (R m) . (q - R p0 - d) = -(R m_xy) . d + (m x q) sin + (m . q)_xy cos + m_z q_z - m . p0
+template <class T>
+PatchLine<T> contactLine(const Contact& contact, const Mesh& robot, const Mesh& world);
+
+/// A patch: the compatible contacts of one feature pair, over its range of angles.
+struct Patch {
+  Contact contact;
+  AngleSet range;
+};
+
+/// Every VF and FV patch with a non-empty range. A VF contact needs a pointed robot
+/// vertex strictly inside the triangle's z range and every robot edge leaving the
+/// vertex pointing out of the triangle's plane, (R u) . n > 0; FV is the same with
+/// the roles exchanged. Each condition is an EF angle function; the range is where
+/// all are positive (closed).
+std::vector<Patch> vertexFacetPatches(const Mesh& robot, const MeshTopology& robotTopology, const Mesh& world,
+                                      const MeshTopology& worldTopology, AngleAlgebra& algebra);
+
+}  // namespace freespace
