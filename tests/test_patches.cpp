@@ -122,7 +122,7 @@ RC_GTEST_PROP(Patches, LinesAreTheSignedContactFunctionsAndRangesTheCompatibleAn
   const std::vector<Patch> patches = vertexFacetPatches(*robot, robotTopology, *world, worldTopology, algebra);
 
   for (const Patch& patch : patches) {
-    const PatchLine<Rational> line = contactLine<Rational>(patch.contact, *robot, *world);
+    const PatchLine<Rational> line = contactLine<Rational>(patch.contact, *robot, robotTopology, *world, worldTopology);
     for (double theta : {-2.5, -0.4, 0.0, 1.3, 3.0}) {
       const ExactRotation r = rotationAt(theta);
       const Exact3 d{Rational(theta) / 3, Rational(1) - Rational(theta), Rational(0)};
@@ -208,4 +208,107 @@ TEST(Patches, ApexAgainstAWallTouchesOverTheExpectedArc) {
     EXPECT_NEAR(patch.range.arcs[0].to.radians(), std::atan(2.0), 1e-12);
   }
   EXPECT_EQ(apexOnNearFace, 2);
+}
+
+namespace {
+
+/// Weights lambda with sum lambda_i g_i = 0 and sum lambda_i = 1 (Gaussian
+/// elimination in long double); nothing when the system is near singular.
+std::optional<std::array<long double, 4>> convexWeightsOfOrigin(const std::array<std::array<long double, 3>, 4>& g) {
+  long double m[4][5];
+  for (int row = 0; row < 3; ++row) {
+    for (int column = 0; column < 4; ++column) m[row][column] = g[column][row];
+    m[row][4] = 0;
+  }
+  for (int column = 0; column < 4; ++column) m[3][column] = 1;
+  m[3][4] = 1;
+  for (int pivot = 0; pivot < 4; ++pivot) {
+    int best = pivot;
+    for (int row = pivot + 1; row < 4; ++row) {
+      if (std::fabs(m[row][pivot]) > std::fabs(m[best][pivot])) best = row;
+    }
+    if (std::fabs(m[best][pivot]) < 1e-12L) return std::nullopt;
+    std::swap(m[pivot], m[best]);
+    for (int row = 0; row < 4; ++row) {
+      if (row == pivot) continue;
+      const long double factor = m[row][pivot] / m[pivot][pivot];
+      for (int column = pivot; column < 5; ++column) m[row][column] -= factor * m[pivot][column];
+    }
+  }
+  std::array<long double, 4> lambda;
+  for (int i = 0; i < 4; ++i) lambda[i] = m[i][4] / m[i][i];
+  return lambda;
+}
+
+std::array<long double, 3> rotatedNormal(const Mesh& mesh, std::uint32_t triangle, long double theta) {
+  const TriangleIndices& t = mesh.triangles()[triangle];
+  const Point3 n = (mesh.vertices()[t[1]] - mesh.vertices()[t[0]]).cross(mesh.vertices()[t[2]] - mesh.vertices()[t[0]]);
+  const long double c = std::cos(theta), s = std::sin(theta);
+  return {c * n.x() - s * n.y(), s * n.x() + c * n.y(), n.z()};
+}
+
+}  // namespace
+
+RC_GTEST_PROP(Patches, EdgeEdgeRangesAreWhereTheWedgesAreApart, ()) {
+  const std::optional<Mesh> robot = randomTetrahedron(0.1, 1.2);
+  const std::optional<Mesh> world = randomTetrahedron(0.0, 1.0);
+  RC_PRE(robot.has_value() && world.has_value());
+  PredicateStatistics statistics;
+  const MeshTopology robotTopology(*robot, statistics), worldTopology(*world, statistics);
+  AngleAlgebra algebra(statistics);
+  const std::vector<Patch> patches = edgeEdgePatches(*robot, robotTopology, *world, worldTopology, algebra);
+
+  // The line is -sigma N . (R a0 + d - b0) with N = (R u) x v, exactly.
+  for (const Patch& patch : patches) {
+    const MeshEdge& a = robotTopology.edges()[patch.contact.robot];
+    const MeshEdge& b = worldTopology.edges()[patch.contact.world];
+    const PatchLine<Rational> line = contactLine<Rational>(patch.contact, *robot, robotTopology, *world, worldTopology);
+    for (double theta : {-2.0, 0.5, 2.9}) {
+      const ExactRotation r = rotationAt(theta);
+      const Exact3 d{Rational(theta), Rational(2) - Rational(theta) / 5, Rational(0)};
+      const Exact3 u = rotate(r, minus(exactPoint(robot->vertices()[a.to]), exactPoint(robot->vertices()[a.from])));
+      const Exact3 v = minus(exactPoint(world->vertices()[b.to]), exactPoint(world->vertices()[b.from]));
+      const Exact3 a0 = rotate(r, exactPoint(robot->vertices()[a.from]));
+      const Exact3 b0 = exactPoint(world->vertices()[b.from]);
+      const Rational expected =
+          -patch.contact.side * dot(cross(u, v), {a0.x + d.x - b0.x, a0.y + d.y - b0.y, a0.z - b0.z});
+      RC_ASSERT(lineValue(line, r, d) == expected);
+    }
+  }
+  // For every pair of convex edges in height range and sampled angles: the wedges
+  // are apart (0 in the convex hull of the four face normals, Gordan's theorem)
+  // exactly when one of the pair's two patches contains the angle.
+  int checked = 0;
+  for (std::uint32_t i = 0; i < robotTopology.edges().size(); ++i) {
+    for (std::uint32_t j = 0; j < worldTopology.edges().size(); ++j) {
+      const MeshEdge& a = robotTopology.edges()[i];
+      const MeshEdge& b = worldTopology.edges()[j];
+      const double low = std::max(std::min(robot->vertices()[a.from].z(), robot->vertices()[a.to].z()),
+                                  std::min(world->vertices()[b.from].z(), world->vertices()[b.to].z()));
+      const double high = std::min(std::max(robot->vertices()[a.from].z(), robot->vertices()[a.to].z()),
+                                   std::max(world->vertices()[b.from].z(), world->vertices()[b.to].z()));
+      std::vector<const Patch*> pairPatches;
+      for (const Patch& patch : patches) {
+        if (patch.contact.robot == i && patch.contact.world == j) pairPatches.push_back(&patch);
+      }
+      if (!(low < high)) {
+        RC_ASSERT(pairPatches.empty());
+        continue;
+      }
+      for (int k = 0; k < 36; ++k) {
+        const double theta = -M_PI + (k + 0.5) * (2 * M_PI / 36);
+        const auto lambda = convexWeightsOfOrigin({rotatedNormal(*robot, a.left, theta), rotatedNormal(*robot, a.right, theta),
+                                                   rotatedNormal(*world, b.left, 0), rotatedNormal(*world, b.right, 0)});
+        if (!lambda) continue;
+        const long double smallest = *std::min_element(lambda->begin(), lambda->end());
+        if (std::fabs(smallest) < 1e-9) continue;
+        const AlgebraicAngle angle = AlgebraicAngle::rational(HalfAngle::fromRadians(theta));
+        int containing = 0;
+        for (const Patch* patch : pairPatches) containing += algebra.contains(patch->range, angle);
+        RC_ASSERT(containing == (smallest > 0 ? 1 : 0));
+        ++checked;
+      }
+    }
+  }
+  RC_TAG(checked > 0 ? "edge pairs checked" : "no edge pair in height range");
 }

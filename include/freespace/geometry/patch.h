@@ -23,6 +23,9 @@ struct Contact {
   ContactKind kind = ContactKind::VertexFacet;
   std::uint32_t robot = 0;
   std::uint32_t world = 0;
+  /// EE only: which side of N = (R u) x v the environment lies on, +1 or -1 (u and v
+  /// run from each edge's `from` to its `to`); VF and FV: +1.
+  int side = 1;
 };
 
 /// The patch line of a VF or FV contact as the signed contact function: positive on
@@ -32,8 +35,12 @@ struct Contact {
 ///     n . (R p + d - q0) = n_xy . d + (p x n) sin + (p . n)_xy cos + p_z n_z - n . q0
 ///   FV, environment vertex q, robot triangle (p0, p1, p2), m = (p1 - p0) x (p2 - p0):
 ///     (R m) . (q - R p0 - d) = -(R m_xy) . d + (m x q) sin + (m . q)_xy cos + m_z q_z - m . p0
+///   EE, robot edge a0 + s u, environment edge b0 + s v, N = (R u) x v, side sigma:
+///     -sigma N . (R a0 + d - b0); sigma N separates: the robot lies on its negative
+///     side, the environment on its positive side.
 template <class T>
-PatchLine<T> contactLine(const Contact& contact, const Mesh& robot, const Mesh& world);
+PatchLine<T> contactLine(const Contact& contact, const Mesh& robot, const MeshTopology& robotTopology,
+                         const Mesh& world, const MeshTopology& worldTopology);
 
 /// A patch: the compatible contacts of one feature pair, over its range of angles.
 struct Patch {
@@ -48,5 +55,16 @@ struct Patch {
 /// all are positive (closed).
 std::vector<Patch> vertexFacetPatches(const Mesh& robot, const MeshTopology& robotTopology, const Mesh& world,
                                       const MeshTopology& worldTopology, AngleAlgebra& algebra);
+
+/// Every EE patch with a non-empty range: a convex robot edge and a convex
+/// environment edge whose open z ranges overlap, for each side sigma. With the
+/// robot's face normals (m1, m2) and the environment's (n1, n2) ordered so that
+/// det(u, m1, m2) > 0 and det(v, n1, n2) > 0, sigma N lies in the robot wedge's
+/// normal cone and -sigma N in the environment's (their interiors are then apart)
+/// exactly when
+///   sigma (R m1) . v > 0, -sigma (R m2) . v > 0, sigma (R u) . n1 > 0, -sigma (R u) . n2 > 0
+/// (from (a x b) . (c x d) = (a . c)(b . d) - (a . d)(b . c) and m_i . u = n_i . v = 0).
+std::vector<Patch> edgeEdgePatches(const Mesh& robot, const MeshTopology& robotTopology, const Mesh& world,
+                                   const MeshTopology& worldTopology, AngleAlgebra& algebra);
 
 }  // namespace freespace

@@ -98,6 +98,8 @@ class AngleAlgebra {
  public:
   explicit AngleAlgebra(PredicateStatistics& statistics) : statistics_(statistics) {}
 
+  PredicateStatistics& statistics() { return statistics_; }
+
   /// The real roots of `function` on the circle, distinct, in the order of
   /// compare(). Throws std::invalid_argument when the function is identically zero.
   std::vector<AlgebraicAngle> roots(const std::shared_ptr<const AngleFunction>& function, PredicateKind kind);

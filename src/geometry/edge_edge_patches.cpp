@@ -1,0 +1,103 @@
+#include <algorithm>
+#include <array>
+
+#include "contact_vectors.h"
+#include "freespace/geometry/patch.h"
+
+namespace freespace {
+
+namespace {
+
+using detail::edgeVector;
+using detail::negated;
+using detail::rotatedDot;
+using detail::triangleNormal;
+
+/// A convex edge with its two face triangles ordered so that
+/// det(edge direction, normal of first, normal of second) > 0.
+struct OrientedEdge {
+  std::uint32_t edge;
+  std::array<std::uint32_t, 2> faces;
+};
+
+/// det(u, m_left, m_right) for an edge of a mesh, written once for every number type.
+struct WedgeOrientation {
+  const Mesh* mesh;
+  const MeshEdge* edge;
+  template <class T>
+  T operator()(NumberType<T>) const {
+    const auto u = edgeVector<T>(*mesh, edge->from, edge->to);
+    return detail::dot(u, detail::cross(triangleNormal<T>(*mesh, edge->left), triangleNormal<T>(*mesh, edge->right)));
+  }
+};
+
+std::vector<OrientedEdge> convexEdges(const Mesh& mesh, const MeshTopology& topology, AdaptiveSignEngine& engine) {
+  std::vector<OrientedEdge> edges;
+  for (std::uint32_t i = 0; i < topology.edges().size(); ++i) {
+    const MeshEdge& edge = topology.edges()[i];
+    if (!edge.convex) continue;
+    const bool leftFirst = engine.sign(PredicateKind::Orientation, WedgeOrientation{&mesh, &edge}) == Sign::Positive;
+    edges.push_back({i, leftFirst ? std::array<std::uint32_t, 2>{edge.left, edge.right}
+                                  : std::array<std::uint32_t, 2>{edge.right, edge.left}});
+  }
+  return edges;
+}
+
+/// The open z range of an edge.
+std::pair<double, double> heightRange(const Mesh& mesh, const MeshEdge& edge) {
+  const double a = mesh.vertices()[edge.from].z(), b = mesh.vertices()[edge.to].z();
+  return {std::min(a, b), std::max(a, b)};
+}
+
+/// One of the four conditions: sign * (R m) . v with m a robot face normal and v
+/// the environment edge, or sign * (R u) . n with u the robot edge and n an
+/// environment face normal. Coordinates are copied: the function outlives the
+/// meshes in the patches' angles.
+std::shared_ptr<const AngleFunction> wedgeCondition(const std::array<Point3, 2>& robotEdge,
+                                                    const std::array<Point3, 2>& worldEdge, bool robotNormal,
+                                                    const detail::Corners& face, int sign) {
+  return std::make_shared<AngleFunction>([robotEdge, worldEdge, robotNormal, face, sign](auto type, int chart) {
+    using T = typename decltype(type)::type;
+    const auto u = detail::difference(detail::pointOf<T>(robotEdge[1]), detail::pointOf<T>(robotEdge[0]));
+    const auto v = detail::difference(detail::pointOf<T>(worldEdge[1]), detail::pointOf<T>(worldEdge[0]));
+    const TrigLinear<T> form =
+        robotNormal ? rotatedDot(detail::normalOf<T>(face), v) : rotatedDot(u, detail::normalOf<T>(face));
+    return tangentPolynomial(sign > 0 ? form : negated(form), chart);
+  });
+}
+
+std::array<Point3, 2> endsOf(const Mesh& mesh, const MeshEdge& edge) {
+  return {mesh.vertices()[edge.from], mesh.vertices()[edge.to]};
+}
+
+}  // namespace
+
+std::vector<Patch> edgeEdgePatches(const Mesh& robot, const MeshTopology& robotTopology, const Mesh& world,
+                                   const MeshTopology& worldTopology, AngleAlgebra& algebra) {
+  AdaptiveSignEngine engine(algebra.statistics());
+  const std::vector<OrientedEdge> robotEdges = convexEdges(robot, robotTopology, engine);
+  const std::vector<OrientedEdge> worldEdges = convexEdges(world, worldTopology, engine);
+  std::vector<Patch> patches;
+  for (const OrientedEdge& a : robotEdges) {
+    const MeshEdge& robotEdge = robotTopology.edges()[a.edge];
+    const auto [robotLow, robotHigh] = heightRange(robot, robotEdge);
+    for (const OrientedEdge& b : worldEdges) {
+      const MeshEdge& worldEdge = worldTopology.edges()[b.edge];
+      const auto [worldLow, worldHigh] = heightRange(world, worldEdge);
+      if (!(std::max(robotLow, worldLow) < std::min(robotHigh, worldHigh))) continue;
+      for (int side : {1, -1}) {
+        const auto robotEnds = endsOf(robot, robotEdge), worldEnds = endsOf(world, worldEdge);
+        const std::vector<std::shared_ptr<const AngleFunction>> conditions{
+            wedgeCondition(robotEnds, worldEnds, true, detail::cornersOf(robot, a.faces[0]), side),
+            wedgeCondition(robotEnds, worldEnds, true, detail::cornersOf(robot, a.faces[1]), -side),
+            wedgeCondition(robotEnds, worldEnds, false, detail::cornersOf(world, b.faces[0]), side),
+            wedgeCondition(robotEnds, worldEnds, false, detail::cornersOf(world, b.faces[1]), -side)};
+        AngleSet range = algebra.positiveSet(conditions, PredicateKind::EdgeFacet);
+        if (!range.empty()) patches.push_back({Contact{ContactKind::EdgeEdge, a.edge, b.edge, side}, std::move(range)});
+      }
+    }
+  }
+  return patches;
+}
+
+}  // namespace freespace
