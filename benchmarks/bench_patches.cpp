@@ -1,0 +1,61 @@
+// The first construction stage on the bundled scenes: perturb the meshes, build their
+// topology, enumerate VF, FV and EE patches. Prints, per scene, the counts, the time
+// of each step, and how the predicates were decided (the share decided in double
+// intervals is the robust layer's target, at least 95%).
+//
+// Usage: bench_patches [PROBLEM.cfg ...]   (default: every benchmarks/problems/*.cfg)
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+#include "freespace/geometry/patch.h"
+#include "freespace/geometry/perturbed_meshes.h"
+#include "freespace/problem/planar_problem.h"
+
+using namespace freespace;
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void measure(const std::string& cfg) {
+  const LoadedProblem loaded = loadProblem(cfg);
+  auto start = std::chrono::steady_clock::now();
+  const PerturbedMeshes meshes = perturbMeshes(loaded.robot, loaded.world, PerturbationSettings{});
+  const double perturbSeconds = secondsSince(start);
+  PredicateStatistics statistics;
+  start = std::chrono::steady_clock::now();
+  const MeshTopology robotTopology(meshes.robot, statistics), worldTopology(meshes.world, statistics);
+  const double topologySeconds = secondsSince(start);
+  AngleAlgebra algebra(statistics);
+  start = std::chrono::steady_clock::now();
+  const auto vertexFacet = vertexFacetPatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
+  const double vertexFacetSeconds = secondsSince(start);
+  start = std::chrono::steady_clock::now();
+  const auto edgeEdge = edgeEdgePatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
+  const double edgeEdgeSeconds = secondsSince(start);
+  std::cout << std::filesystem::path(cfg).stem().string() << ": robot " << meshes.robot.triangles().size()
+            << " triangles, world " << meshes.world.triangles().size() << " triangles; " << vertexFacet.size()
+            << " VF/FV patches, " << edgeEdge.size() << " EE patches; seconds: perturb " << perturbSeconds
+            << ", topology " << topologySeconds << ", VF/FV " << vertexFacetSeconds << ", EE " << edgeEdgeSeconds
+            << "; decided in double intervals " << std::setprecision(4) << 100 * statistics.doubleIntervalFraction()
+            << "%\n"
+            << statistics.toText();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> problems(argv + 1, argv + argc);
+  if (problems.empty()) {
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems")) {
+      if (entry.path().extension() == ".cfg") problems.push_back(entry.path().string());
+    }
+    std::sort(problems.begin(), problems.end());
+  }
+  for (const std::string& problem : problems) measure(problem);
+  return 0;
+}
