@@ -108,25 +108,47 @@ std::optional<Mesh> randomTetrahedron(double zLow, double zHigh) {
   }
 }
 
+/// Random tetrahedra as robot and environment, the robot reaching past the
+/// environment's heights so that VF, FV and EE contacts all occur, with their
+/// topology.
+struct RandomScene {
+  RandomScene(Mesh robotMesh, Mesh worldMesh)
+      : robot(std::move(robotMesh)),
+        world(std::move(worldMesh)),
+        robotTopology(robot, statistics),
+        worldTopology(world, statistics),
+        algebra(statistics) {}
+
+  Mesh robot;
+  Mesh world;
+  PredicateStatistics statistics;
+  MeshTopology robotTopology;
+  MeshTopology worldTopology;
+  AngleAlgebra algebra;
+};
+
+std::unique_ptr<RandomScene> randomScene() {
+  std::optional<Mesh> robot = randomTetrahedron(0.1, 1.2);
+  std::optional<Mesh> world = randomTetrahedron(0.0, 1.0);
+  RC_PRE(robot.has_value() && world.has_value());
+  return std::make_unique<RandomScene>(std::move(*robot), std::move(*world));
+}
+
 }  // namespace
 
 RC_GTEST_PROP(Patches, LinesAreTheSignedContactFunctionsAndRangesTheCompatibleAngles, ()) {
-  // A robot inside the environment's height range and one reaching past it, so that
-  // both VF and FV contacts occur.
-  const std::optional<Mesh> robot = randomTetrahedron(0.1, 1.2);
-  const std::optional<Mesh> world = randomTetrahedron(0.0, 1.0);
-  RC_PRE(robot.has_value() && world.has_value());
-  PredicateStatistics statistics;
-  const MeshTopology robotTopology(*robot, statistics), worldTopology(*world, statistics);
-  AngleAlgebra algebra(statistics);
-  const std::vector<Patch> patches = vertexFacetPatches(*robot, robotTopology, *world, worldTopology, algebra);
+  const std::unique_ptr<RandomScene> scene = randomScene();
+  const Mesh &robot = scene->robot, &world = scene->world;
+  const MeshTopology &robotTopology = scene->robotTopology, &worldTopology = scene->worldTopology;
+  AngleAlgebra& algebra = scene->algebra;
+  const std::vector<Patch> patches = vertexFacetPatches(robot, robotTopology, world, worldTopology, algebra);
 
   for (const Patch& patch : patches) {
-    const PatchLine<Rational> line = contactLine<Rational>(patch.contact, *robot, robotTopology, *world, worldTopology);
+    const PatchLine<Rational> line = contactLine<Rational>(patch.contact, robot, robotTopology, world, worldTopology);
     for (double theta : {-2.5, -0.4, 0.0, 1.3, 3.0}) {
       const ExactRotation r = rotationAt(theta);
       const Exact3 d{Rational(theta) / 3, Rational(1) - Rational(theta), Rational(0)};
-      RC_ASSERT(lineValue(line, r, d) == geometricContact(patch.contact, *robot, *world, r, d));
+      RC_ASSERT(lineValue(line, r, d) == geometricContact(patch.contact, robot, world, r, d));
     }
   }
   // Every feature pair in height range: compatible at a sampled angle (clearly)
@@ -145,8 +167,8 @@ RC_GTEST_PROP(Patches, LinesAreTheSignedContactFunctionsAndRangesTheCompatibleAn
     for (std::uint32_t t = 0; t < 4; ++t) {
       for (const Contact contact : {Contact{ContactKind::VertexFacet, v, t}, Contact{ContactKind::FacetVertex, t, v}}) {
         const bool vf = contact.kind == ContactKind::VertexFacet;
-        const Mesh& facetMesh = vf ? *world : *robot;
-        const double z = (vf ? *robot : *world).vertices()[v].z();
+        const Mesh& facetMesh = vf ? world : robot;
+        const double z = (vf ? robot : world).vertices()[v].z();
         const TriangleIndices& triangle = facetMesh.triangles()[t];
         const double low = std::min({facetMesh.vertices()[triangle[0]].z(), facetMesh.vertices()[triangle[1]].z(),
                                      facetMesh.vertices()[triangle[2]].z()});
@@ -159,7 +181,7 @@ RC_GTEST_PROP(Patches, LinesAreTheSignedContactFunctionsAndRangesTheCompatibleAn
         }
         for (int i = 0; i < 72; ++i) {
           const double theta = -M_PI + (i + 0.5) * (2 * M_PI / 72);
-          const long double margin = compatibilityMargin(contact, *robot, robotTopology, *world, worldTopology, theta);
+          const long double margin = compatibilityMargin(contact, robot, robotTopology, world, worldTopology, theta);
           if (std::fabs(margin) < 1e-9) continue;
           const bool inRange = patch && algebra.contains(patch->range, AlgebraicAngle::rational(HalfAngle::fromRadians(theta)));
           RC_ASSERT(inRange == (margin > 0));
@@ -250,26 +272,24 @@ std::array<long double, 3> rotatedNormal(const Mesh& mesh, std::uint32_t triangl
 }  // namespace
 
 RC_GTEST_PROP(Patches, EdgeEdgeRangesAreWhereTheWedgesAreApart, ()) {
-  const std::optional<Mesh> robot = randomTetrahedron(0.1, 1.2);
-  const std::optional<Mesh> world = randomTetrahedron(0.0, 1.0);
-  RC_PRE(robot.has_value() && world.has_value());
-  PredicateStatistics statistics;
-  const MeshTopology robotTopology(*robot, statistics), worldTopology(*world, statistics);
-  AngleAlgebra algebra(statistics);
-  const std::vector<Patch> patches = edgeEdgePatches(*robot, robotTopology, *world, worldTopology, algebra);
+  const std::unique_ptr<RandomScene> scene = randomScene();
+  const Mesh &robot = scene->robot, &world = scene->world;
+  const MeshTopology &robotTopology = scene->robotTopology, &worldTopology = scene->worldTopology;
+  AngleAlgebra& algebra = scene->algebra;
+  const std::vector<Patch> patches = edgeEdgePatches(robot, robotTopology, world, worldTopology, algebra);
 
   // The line is -sigma N . (R a0 + d - b0) with N = (R u) x v, exactly.
   for (const Patch& patch : patches) {
     const MeshEdge& a = robotTopology.edges()[patch.contact.robot];
     const MeshEdge& b = worldTopology.edges()[patch.contact.world];
-    const PatchLine<Rational> line = contactLine<Rational>(patch.contact, *robot, robotTopology, *world, worldTopology);
+    const PatchLine<Rational> line = contactLine<Rational>(patch.contact, robot, robotTopology, world, worldTopology);
     for (double theta : {-2.0, 0.5, 2.9}) {
       const ExactRotation r = rotationAt(theta);
       const Exact3 d{Rational(theta), Rational(2) - Rational(theta) / 5, Rational(0)};
-      const Exact3 u = rotate(r, minus(exactPoint(robot->vertices()[a.to]), exactPoint(robot->vertices()[a.from])));
-      const Exact3 v = minus(exactPoint(world->vertices()[b.to]), exactPoint(world->vertices()[b.from]));
-      const Exact3 a0 = rotate(r, exactPoint(robot->vertices()[a.from]));
-      const Exact3 b0 = exactPoint(world->vertices()[b.from]);
+      const Exact3 u = rotate(r, minus(exactPoint(robot.vertices()[a.to]), exactPoint(robot.vertices()[a.from])));
+      const Exact3 v = minus(exactPoint(world.vertices()[b.to]), exactPoint(world.vertices()[b.from]));
+      const Exact3 a0 = rotate(r, exactPoint(robot.vertices()[a.from]));
+      const Exact3 b0 = exactPoint(world.vertices()[b.from]);
       const Rational expected =
           -patch.contact.side * dot(cross(u, v), {a0.x + d.x - b0.x, a0.y + d.y - b0.y, a0.z - b0.z});
       RC_ASSERT(lineValue(line, r, d) == expected);
@@ -283,10 +303,10 @@ RC_GTEST_PROP(Patches, EdgeEdgeRangesAreWhereTheWedgesAreApart, ()) {
     for (std::uint32_t j = 0; j < worldTopology.edges().size(); ++j) {
       const MeshEdge& a = robotTopology.edges()[i];
       const MeshEdge& b = worldTopology.edges()[j];
-      const double low = std::max(std::min(robot->vertices()[a.from].z(), robot->vertices()[a.to].z()),
-                                  std::min(world->vertices()[b.from].z(), world->vertices()[b.to].z()));
-      const double high = std::min(std::max(robot->vertices()[a.from].z(), robot->vertices()[a.to].z()),
-                                   std::max(world->vertices()[b.from].z(), world->vertices()[b.to].z()));
+      const double low = std::max(std::min(robot.vertices()[a.from].z(), robot.vertices()[a.to].z()),
+                                  std::min(world.vertices()[b.from].z(), world.vertices()[b.to].z()));
+      const double high = std::min(std::max(robot.vertices()[a.from].z(), robot.vertices()[a.to].z()),
+                                   std::max(world.vertices()[b.from].z(), world.vertices()[b.to].z()));
       std::vector<const Patch*> pairPatches;
       for (const Patch& patch : patches) {
         if (patch.contact.robot == i && patch.contact.world == j) pairPatches.push_back(&patch);
@@ -297,8 +317,8 @@ RC_GTEST_PROP(Patches, EdgeEdgeRangesAreWhereTheWedgesAreApart, ()) {
       }
       for (int k = 0; k < 36; ++k) {
         const double theta = -M_PI + (k + 0.5) * (2 * M_PI / 36);
-        const auto lambda = convexWeightsOfOrigin({rotatedNormal(*robot, a.left, theta), rotatedNormal(*robot, a.right, theta),
-                                                   rotatedNormal(*world, b.left, 0), rotatedNormal(*world, b.right, 0)});
+        const auto lambda = convexWeightsOfOrigin({rotatedNormal(robot, a.left, theta), rotatedNormal(robot, a.right, theta),
+                                                   rotatedNormal(world, b.left, 0), rotatedNormal(world, b.right, 0)});
         if (!lambda) continue;
         const long double smallest = *std::min_element(lambda->begin(), lambda->end());
         if (std::fabs(smallest) < 1e-9) continue;
