@@ -84,7 +84,7 @@ std::optional<std::vector<Interval>> chartRootsInDoubles(const Polynomial<Interv
 /// an endpoint where the function vanishes (possible for enclosures found in
 /// doubles) becomes the exact root.
 IsolatingInterval verifiedIsolating(const AlgebraicAngle& angle) {
-  const IsolatingInterval& root = angle.root();
+  const IsolatingInterval root = angle.root();
   if (angle.isRational() || root.lo == root.hi) return root;
   const RationalPolynomial& p = angle.function()->squareFree(angle.chart());
   if (signAt(p, root.lo) == Sign::Zero) return {root.lo, root.lo};
@@ -137,25 +137,47 @@ const RationalPolynomial& AngleFunction::exact(int chart) const {
   return *exact_[chart];
 }
 
+bool AngleFunction::isIdenticallyZero() const {
+  for (const Interval& coefficient : approximate_[0].coefficients()) {
+    const std::optional<Sign> sign = certainSign(coefficient);
+    if (sign && *sign != Sign::Zero) return false;
+  }
+  return isZero(exact(0));
+}
+
 const RationalPolynomial& AngleFunction::squareFree(int chart) const {
   if (!squareFree_[chart]) squareFree_[chart] = squareFreePart(exact(chart));
   return *squareFree_[chart];
 }
 
-AlgebraicAngle::AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, IsolatingInterval root,
-                               double lower, double upper)
-    : function_(std::move(function)), chart_(chart), root_(std::move(root)), lower_(lower), upper_(upper) {}
+AlgebraicAngle::AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, double lower, double upper)
+    : function_(std::move(function)), chart_(chart), lower_(lower), upper_(upper) {}
+
+AlgebraicAngle::AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, const IsolatingInterval& root)
+    : function_(std::move(function)),
+      chart_(chart),
+      exactRoot_(root),
+      lower_(lowerDouble(root.lo)),
+      upper_(upperDouble(root.hi)) {}
+
+IsolatingInterval AlgebraicAngle::root() const {
+  if (!exactRoot_) return {Rational(lower_), Rational(upper_)};
+  if (exactRoot_->lo == exactRoot_->hi) return *exactRoot_;
+  const Rational low(lower_), high(upper_);
+  return {low > exactRoot_->lo ? low : exactRoot_->lo, high < exactRoot_->hi ? high : exactRoot_->hi};
+}
 
 AlgebraicAngle AlgebraicAngle::rational(int chart, const Rational& t) {
-  return AlgebraicAngle(nullptr, chart, {t, t}, lowerDouble(t), upperDouble(t));
+  return AlgebraicAngle(nullptr, chart, IsolatingInterval{t, t});
 }
+
+AlgebraicAngle AlgebraicAngle::rational(int chart, double t) { return AlgebraicAngle(nullptr, chart, t, t); }
 
 AlgebraicAngle AlgebraicAngle::rational(const HalfAngle& angle) {
   // Chart 1 does not hold t = +-1: those angles are chart 0's -+1.
   const bool boundary = angle.chart == 1 && std::fabs(angle.t) == 1;
   const int chart = boundary ? 0 : angle.chart;
-  const double t = boundary ? -angle.t : angle.t;
-  return AlgebraicAngle(nullptr, chart, {Rational(t), Rational(t)}, t, t);
+  return rational(chart, boundary ? -angle.t : angle.t);
 }
 
 double AlgebraicAngle::radians() const {
@@ -163,7 +185,7 @@ double AlgebraicAngle::radians() const {
 }
 
 bool AlgebraicAngle::refineInDoubles() {
-  if (!function_ || root_.lo == root_.hi) return false;
+  if (!function_ || !(lower_ < upper_)) return false;
   const double middle = 0.5 * (lower_ + upper_);
   if (!(middle > lower_ && middle < upper_)) return false;
   RoundingScope rounding;
@@ -183,9 +205,6 @@ bool AlgebraicAngle::refineInDoubles() {
   } else {
     upper_ = middle;
   }
-  // The exact interval follows when the double one is inside it.
-  if (Rational(lower_) > root_.lo) root_.lo = Rational(lower_);
-  if (Rational(upper_) < root_.hi) root_.hi = Rational(upper_);
   return true;
 }
 
@@ -195,10 +214,7 @@ std::vector<AlgebraicAngle> AngleAlgebra::roots(const std::shared_ptr<const Angl
   for (int chart = 0; chart < 2; ++chart) {
     if (const auto enclosures = chartRootsInDoubles(function->approximate(chart))) {
       statistics_.recordDecision(kind, kDoubleLevel);
-      for (const Interval& t : *enclosures) {
-        angles.emplace_back(function, chart, IsolatingInterval{Rational(t.lower()), Rational(t.upper())}, t.lower(),
-                            t.upper());
-      }
+      for (const Interval& t : *enclosures) angles.emplace_back(function, chart, t.lower(), t.upper());
       continue;
     }
     statistics_.recordDecision(kind, kExactLevel);
@@ -208,7 +224,7 @@ std::vector<AlgebraicAngle> AngleAlgebra::roots(const std::shared_ptr<const Angl
       // Chart 1 leaves t = +-1 to chart 0.
       if (chart == 1 && root.lo == root.hi && abs(root.lo) == 1) continue;
       tighten(function->squareFree(chart), root);
-      angles.emplace_back(function, chart, root, lowerDouble(root.lo), upperDouble(root.hi));
+      angles.emplace_back(function, chart, root);
     }
   }
   return angles;
@@ -244,7 +260,8 @@ std::optional<int> AngleAlgebra::compareInDoubles(AlgebraicAngle& a, AlgebraicAn
   for (int step = 0; step <= kDoubleRefinements; ++step) {
     if (a.upper() < b.lower()) return -1;
     if (b.upper() < a.lower()) return 1;
-    if (a.isRational() && b.isRational()) return a.lower() < b.lower() ? -1 : (a.lower() > b.lower() ? 1 : 0);
+    const bool exactDoubles = a.isRational() && b.isRational() && a.lower() == a.upper() && b.lower() == b.upper();
+    if (exactDoubles) return a.lower() < b.lower() ? -1 : (a.lower() > b.lower() ? 1 : 0);
     const bool refinedA = a.refineInDoubles();
     const bool refinedB = b.refineInDoubles();
     if (!refinedA && !refinedB) break;
@@ -330,9 +347,52 @@ AlgebraicAngle angleAtPosition(Rational u) {
 
 }  // namespace
 
+namespace {
+
+/// A double strictly between a and b, if there is one.
+std::optional<double> midpoint(double a, double b) {
+  const double middle = 0.5 * (a + b);
+  if (a < middle && middle < b) return middle;
+  return std::nullopt;
+}
+
+/// A rational angle strictly inside the open arc from `from` to `to`, found from
+/// their double enclosures; `wraps` when `to` precedes `from` in the cut order.
+std::optional<AlgebraicAngle> betweenInDoubles(const AlgebraicAngle& from, const AlgebraicAngle& to, bool wraps) {
+  const auto angle = [](int chart, std::optional<double> t) -> std::optional<AlgebraicAngle> {
+    if (!t) return std::nullopt;
+    return AlgebraicAngle::rational(chart, *t);
+  };
+  if (!wraps) {
+    if (from.chart() == to.chart()) return angle(from.chart(), midpoint(from.upper(), to.lower()));
+    // From chart 0 to chart 1: the end of chart 0 or the start of chart 1.
+    if (auto inside = angle(0, midpoint(from.upper(), 1.0))) return inside;
+    return angle(1, midpoint(-1.0, to.lower()));
+  }
+  // Through the cut at theta = -pi/2: the rest of `from`'s chart, then the start of
+  // `to`'s, or a whole chart the arc passes through.
+  if (from.chart() == 1) {
+    if (auto inside = angle(1, midpoint(from.upper(), 1.0))) return inside;
+  }
+  if (to.chart() == 0) {
+    if (auto inside = angle(0, midpoint(-1.0, to.lower()))) return inside;
+  }
+  if (from.chart() == to.chart()) return AlgebraicAngle::rational(1 - from.chart(), 0.0);
+  return std::nullopt;
+}
+
+}  // namespace
+
 AlgebraicAngle AngleAlgebra::rationalBetween(const AlgebraicAngle& from, const AlgebraicAngle& to) {
   const int order = compare(from, to);
   if (order == 0) throw std::invalid_argument("rationalBetween: the two angles are equal");
+  AlgebraicAngle narrowFrom = from, narrowTo = to;
+  for (int step = 0; step <= kDoubleRefinements; ++step) {
+    if (auto inside = betweenInDoubles(narrowFrom, narrowTo, order > 0)) return *inside;
+    const bool refinedFrom = narrowFrom.refineInDoubles();
+    const bool refinedTo = narrowTo.refineInDoubles();
+    if (!refinedFrom && !refinedTo) break;
+  }
   // Going counterclockwise from `from`, `to` comes a full turn later when it
   // precedes `from` in the cut order.
   const Rational turn(order < 0 ? 0 : kTurn);
@@ -366,7 +426,7 @@ AngleSet AngleAlgebra::positiveSet(const std::vector<std::shared_ptr<const Angle
                        [&](const auto& function) { return signAt(*function, angle) == Sign::Positive; });
   };
   if (roots.empty()) {
-    set.fullCircle = allPositiveAt(AlgebraicAngle::rational(0, Rational(0)));
+    set.fullCircle = allPositiveAt(AlgebraicAngle::rational(0, 0.0));
     return set;
   }
   // Gap i runs from root i to root i + 1 (the last one around to the first); the

@@ -32,8 +32,9 @@ class AngleFunction {
   const Polynomial<Interval>& approximate(int chart) const { return approximate_[chart]; }
   const RationalPolynomial& exact(int chart) const;
   const RationalPolynomial& squareFree(int chart) const;
-  /// True when the function vanishes at every angle.
-  bool isIdenticallyZero() const { return isZero(exact(0)); }
+  /// True when the function vanishes at every angle (decided from the double
+  /// interval coefficients when one is certainly not zero, exactly otherwise).
+  bool isIdenticallyZero() const;
 
  private:
   std::array<Polynomial<Interval>, 2> approximate_;
@@ -43,21 +44,27 @@ class AngleFunction {
 };
 
 /// An angle that is a root of an AngleFunction (or a rational angle, a HalfAngle):
-/// its chart, an exact isolating interval of t in that chart, and a double
-/// enclosure of the same t. Charts are canonical: chart 0 holds t in [-1, 1]
+/// its chart and a double enclosure of t in that chart that isolates the root, plus
+/// an exact isolating interval when the root was isolated exactly (a root isolated
+/// in doubles needs none: its double enclosure is an exact isolating interval). Charts are canonical: chart 0 holds t in [-1, 1]
 /// (theta in [-pi/2, pi/2]), chart 1 holds t in (-1, 1) (theta in (pi/2, 3pi/2)).
 class AlgebraicAngle {
  public:
-  AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, IsolatingInterval root, double lower,
-                 double upper);
+  /// A root isolated in double intervals by [lower, upper].
+  AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, double lower, double upper);
+  /// A root isolated exactly.
+  AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, const IsolatingInterval& root);
   static AlgebraicAngle rational(const HalfAngle& angle);
   /// The rational angle with tangent parameter t (in [-1, 1]) in the chart.
   static AlgebraicAngle rational(int chart, const Rational& t);
+  /// The same for a t that is a double (no rational arithmetic until needed).
+  static AlgebraicAngle rational(int chart, double t);
 
   int chart() const { return chart_; }
   /// Null for a rational angle.
   const std::shared_ptr<const AngleFunction>& function() const { return function_; }
-  const IsolatingInterval& root() const { return root_; }
+  /// An exact isolating interval of t: the exact one narrowed by the double enclosure.
+  IsolatingInterval root() const;
   double lower() const { return lower_; }
   double upper() const { return upper_; }
   bool isRational() const { return !function_; }
@@ -72,7 +79,7 @@ class AlgebraicAngle {
  private:
   std::shared_ptr<const AngleFunction> function_;
   int chart_;
-  IsolatingInterval root_;
+  std::optional<IsolatingInterval> exactRoot_;
   double lower_, upper_;
 };
 
