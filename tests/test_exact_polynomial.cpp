@@ -82,7 +82,6 @@ bool contains(const IsolatingInterval& interval, const KnownRoot& x) {
   return compareKnown({interval.lo}, x) <= 0 && compareKnown(x, {interval.hi}) <= 0;
 }
 
-Sign toSign(int s) { return s > 0 ? Sign::Positive : (s < 0 ? Sign::Negative : Sign::Zero); }
 
 /// scale * prod (t - r)^m * (t^2 - 2)^sqrtTwoMultiplicity * (t^2 + positiveOffset if > 0).
 struct KnownPolynomial {
@@ -135,7 +134,7 @@ struct KnownPolynomial {
     }
     const int sqrtTwoFactorSign = x.sqrtTwoSign != 0 ? 0 : Rational(x.rational * x.rational - 2).sign();
     for (int k = 0; k < sqrtTwoMultiplicity; ++k) result *= sqrtTwoFactorSign;
-    return toSign(result);
+    return signOf(result);
   }
 };
 

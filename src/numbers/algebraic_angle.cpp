@@ -29,8 +29,6 @@ double upperDouble(const Rational& value) {
   return nearest;
 }
 
-Sign signOfInt(int value) { return value > 0 ? Sign::Positive : (value < 0 ? Sign::Negative : Sign::Zero); }
-
 /// Bisects an exactly isolated root until its interval is about as narrow as a
 /// double enclosure can be, so that later predicates can be decided in doubles
 /// (this also works for roots of even multiplicity, where doubles cannot bisect).
@@ -39,8 +37,25 @@ void tighten(const RationalPolynomial& squareFree, IsolatingInterval& root) {
   while (root.lo != root.hi && root.hi - root.lo > kWidth) bisect(squareFree, root);
 }
 
-/// The polynomial t - t0 of a rational angle.
-RationalPolynomial linearPolynomial(const Rational& root) { return RationalPolynomial({-root, Rational(1)}); }
+/// The exact square-free polynomial whose root the angle is: t - t0 for a rational
+/// angle.
+RationalPolynomial exactPolynomialOf(const AlgebraicAngle& angle) {
+  if (angle.isRational()) return RationalPolynomial({-angle.root().lo, Rational(1)});
+  return angle.function()->squareFree(angle.chart());
+}
+
+/// Refines both enclosures in doubles until `decide` answers, as long as one of
+/// them can still be narrowed.
+template <class Decide>
+auto refineBothUntil(AlgebraicAngle& a, AlgebraicAngle& b, Decide&& decide) -> decltype(decide()) {
+  for (int step = 0; step <= kDoubleRefinements; ++step) {
+    if (auto answer = decide()) return answer;
+    const bool refinedA = a.refineInDoubles();
+    const bool refinedB = b.refineInDoubles();
+    if (!refinedA && !refinedB) break;
+  }
+  return std::nullopt;
+}
 
 /// Closed-form roots of a quadratic (DESIGN.md section 4: EF and SF are degree 2),
 /// certified by interval arithmetic. Nothing when any step is uncertain: a leading
@@ -257,28 +272,22 @@ Sign AngleAlgebra::signAt(const AngleFunction& function, const AlgebraicAngle& a
 
 std::optional<int> AngleAlgebra::compareInDoubles(AlgebraicAngle& a, AlgebraicAngle& b) const {
   if (a.chart() != b.chart()) return a.chart() < b.chart() ? -1 : 1;
-  for (int step = 0; step <= kDoubleRefinements; ++step) {
+  return refineBothUntil(a, b, [&a, &b]() -> std::optional<int> {
     if (a.upper() < b.lower()) return -1;
     if (b.upper() < a.lower()) return 1;
     const bool exactDoubles = a.isRational() && b.isRational() && a.lower() == a.upper() && b.lower() == b.upper();
     if (exactDoubles) return a.lower() < b.lower() ? -1 : (a.lower() > b.lower() ? 1 : 0);
-    const bool refinedA = a.refineInDoubles();
-    const bool refinedB = b.refineInDoubles();
-    if (!refinedA && !refinedB) break;
-  }
-  return std::nullopt;
+    return std::nullopt;
+  });
 }
 
 int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
   AlgebraicAngle first = a, second = b;
   if (const std::optional<int> order = compareInDoubles(first, second)) {
-    record(PredicateKind::RootOrder, kDoubleLevel, signOfInt(*order));
+    record(PredicateKind::RootOrder, kDoubleLevel, signOf(*order));
     return *order;
   }
-  const auto exactPolynomial = [](const AlgebraicAngle& angle) {
-    return angle.isRational() ? linearPolynomial(angle.root().lo) : angle.function()->squareFree(angle.chart());
-  };
-  const RationalPolynomial f = exactPolynomial(first), g = exactPolynomial(second);
+  const RationalPolynomial f = exactPolynomialOf(first), g = exactPolynomialOf(second);
   const IsolatingInterval rootA = verifiedIsolating(first), rootB = verifiedIsolating(second);
   // Escalation as in signAt: equal roots are an exact identity, found first.
   const IsolatingInterval overlap{rootA.lo > rootB.lo ? rootA.lo : rootB.lo, rootA.hi < rootB.hi ? rootA.hi : rootB.hi};
@@ -287,11 +296,11 @@ int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
     return 0;
   }
   if (const auto decided = compareRootsOnLadder(f, rootA, g, rootB)) {
-    record(PredicateKind::RootOrder, decided->second, signOfInt(decided->first));
+    record(PredicateKind::RootOrder, decided->second, signOf(decided->first));
     return decided->first;
   }
   const int order = compareRoots(f, rootA, g, rootB);
-  record(PredicateKind::RootOrder, kExactLevel, signOfInt(order));
+  record(PredicateKind::RootOrder, kExactLevel, signOf(order));
   return order;
 }
 
@@ -326,9 +335,7 @@ struct ExactPosition {
 
 ExactPosition exactPosition(const AlgebraicAngle& angle) {
   const IsolatingInterval t = verifiedIsolating(angle);
-  const RationalPolynomial polynomial =
-      angle.isRational() ? linearPolynomial(t.lo) : angle.function()->squareFree(angle.chart());
-  return {polynomial, {t.lo + chartOffset(angle.chart()), t.hi + chartOffset(angle.chart())}};
+  return {exactPolynomialOf(angle), {t.lo + chartOffset(angle.chart()), t.hi + chartOffset(angle.chart())}};
 }
 
 /// Halves an isolating interval given in u (its polynomial is in t).
@@ -344,10 +351,6 @@ AlgebraicAngle angleAtPosition(Rational u) {
   while (u < -1) u += kTurn;
   return u <= 1 ? AlgebraicAngle::rational(0, u) : AlgebraicAngle::rational(1, u - 2);
 }
-
-}  // namespace
-
-namespace {
 
 /// A double strictly between a and b, if there is one.
 std::optional<double> midpoint(double a, double b) {
@@ -387,11 +390,9 @@ AlgebraicAngle AngleAlgebra::rationalBetween(const AlgebraicAngle& from, const A
   const int order = compare(from, to);
   if (order == 0) throw std::invalid_argument("rationalBetween: the two angles are equal");
   AlgebraicAngle narrowFrom = from, narrowTo = to;
-  for (int step = 0; step <= kDoubleRefinements; ++step) {
-    if (auto inside = betweenInDoubles(narrowFrom, narrowTo, order > 0)) return *inside;
-    const bool refinedFrom = narrowFrom.refineInDoubles();
-    const bool refinedTo = narrowTo.refineInDoubles();
-    if (!refinedFrom && !refinedTo) break;
+  if (auto inside = refineBothUntil(narrowFrom, narrowTo,
+                                    [&] { return betweenInDoubles(narrowFrom, narrowTo, order > 0); })) {
+    return *inside;
   }
   // Going counterclockwise from `from`, `to` comes a full turn later when it
   // precedes `from` in the cut order.

@@ -9,9 +9,6 @@ namespace freespace {
 /// Exact rational numbers (GMP). Every double converts exactly.
 using Rational = boost::multiprecision::mpq_rational;
 
-inline Sign exactSign(const Rational& value) {
-  const int s = value.sign();
-  return s > 0 ? Sign::Positive : (s < 0 ? Sign::Negative : Sign::Zero);
-}
+inline Sign exactSign(const Rational& value) { return signOf(value.sign()); }
 
 }  // namespace freespace

@@ -8,6 +8,9 @@ enum class Sign : int { Negative = -1, Zero = 0, Positive = 1 };
 
 inline Sign operator-(Sign s) { return static_cast<Sign>(-static_cast<int>(s)); }
 
+/// The sign of an integer (a comparison result, GMP's sign()).
+inline Sign signOf(int value) { return value > 0 ? Sign::Positive : (value < 0 ? Sign::Negative : Sign::Zero); }
+
 /// True when one of the signs is Positive and another Negative.
 inline bool mixedSigns(Sign a, Sign b, Sign c) {
   const bool anyPositive = a == Sign::Positive || b == Sign::Positive || c == Sign::Positive;
