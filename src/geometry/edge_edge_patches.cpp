@@ -85,13 +85,15 @@ std::vector<Patch> edgeEdgePatches(const Mesh& robot, const MeshTopology& robotT
       const MeshEdge& worldEdge = worldTopology.edges()[b.edge];
       const auto [worldLow, worldHigh] = heightRange(world, worldEdge);
       if (!(std::max(robotLow, worldLow) < std::min(robotHigh, worldHigh))) continue;
+      const auto robotEnds = endsOf(robot, robotEdge), worldEnds = endsOf(world, worldEdge);
+      const std::array<detail::Corners, 4> faces{detail::cornersOf(robot, a.faces[0]), detail::cornersOf(robot, a.faces[1]),
+                                                 detail::cornersOf(world, b.faces[0]), detail::cornersOf(world, b.faces[1])};
       for (int side : {1, -1}) {
-        const auto robotEnds = endsOf(robot, robotEdge), worldEnds = endsOf(world, worldEdge);
         const std::vector<std::shared_ptr<const AngleFunction>> conditions{
-            wedgeCondition(robotEnds, worldEnds, true, detail::cornersOf(robot, a.faces[0]), side),
-            wedgeCondition(robotEnds, worldEnds, true, detail::cornersOf(robot, a.faces[1]), -side),
-            wedgeCondition(robotEnds, worldEnds, false, detail::cornersOf(world, b.faces[0]), side),
-            wedgeCondition(robotEnds, worldEnds, false, detail::cornersOf(world, b.faces[1]), -side)};
+            wedgeCondition(robotEnds, worldEnds, true, faces[0], side),
+            wedgeCondition(robotEnds, worldEnds, true, faces[1], -side),
+            wedgeCondition(robotEnds, worldEnds, false, faces[2], side),
+            wedgeCondition(robotEnds, worldEnds, false, faces[3], -side)};
         AngleSet range = algebra.positiveSet(conditions, PredicateKind::EdgeFacet);
         if (!range.empty()) patches.push_back({Contact{ContactKind::EdgeEdge, a.edge, b.edge, side}, std::move(range)});
       }
