@@ -8,41 +8,14 @@
 #include <cmath>
 
 #include "freespace/geometry/patch.h"
+#include "exact_geometry.h"
+#include "random_scene.h"
 #include "test_meshes.h"
 
 using namespace freespace;
 using namespace freespace::testing;
 
 namespace {
-
-struct ExactRotation {
-  Rational cosine, sine;
-};
-
-ExactRotation rotationAt(double theta) {
-  ExactRotation rotation;
-  HalfAngle::fromRadians(theta).cosSin(rotation.cosine, rotation.sine);
-  return rotation;
-}
-
-struct Exact3 {
-  Rational x, y, z;
-};
-
-Exact3 exactPoint(const Point3& p) { return {Rational(p.x()), Rational(p.y()), Rational(p.z())}; }
-Exact3 minus(const Exact3& a, const Exact3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-Exact3 cross(const Exact3& a, const Exact3& b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-Rational dot(const Exact3& a, const Exact3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-Exact3 rotate(const ExactRotation& r, const Exact3& p) {
-  return {r.cosine * p.x - r.sine * p.y, r.sine * p.x + r.cosine * p.y, p.z};
-}
-Exact3 normalOf(const Mesh& mesh, std::uint32_t triangle) {
-  const TriangleIndices& t = mesh.triangles()[triangle];
-  const Exact3 a = exactPoint(mesh.vertices()[t[0]]);
-  return cross(minus(exactPoint(mesh.vertices()[t[1]]), a), minus(exactPoint(mesh.vertices()[t[2]]), a));
-}
 
 /// The signed contact function straight from its definition: VF n . (R p + d - q0),
 /// FV (R m) . (q - R p0 - d).
@@ -57,12 +30,6 @@ Rational geometricContact(const Contact& contact, const Mesh& robot, const Mesh&
   const Exact3 p0 = rotate(r, exactPoint(robot.vertices()[robot.triangles()[contact.robot][0]]));
   const Exact3 q = exactPoint(world.vertices()[contact.world]);
   return dot(m, {q.x - p0.x - d.x, q.y - p0.y - d.y, q.z - p0.z});
-}
-
-Rational lineValue(const PatchLine<Rational>& line, const ExactRotation& r, const Exact3& d) {
-  const Rational nx = r.cosine * line.a1x - r.sine * line.a1y + line.a2x;
-  const Rational ny = r.sine * line.a1x + r.cosine * line.a1y + line.a2y;
-  return nx * d.x + ny * d.y + line.k1 * r.sine + line.k2 * r.cosine + line.k3;
 }
 
 /// Compatibility by trigonometry in long double: the smallest (R u) . n over the
@@ -90,48 +57,6 @@ long double compatibilityMargin(const Contact& contact, const Mesh& robot, const
     smallest = std::min(smallest, a[0] * b.x() + a[1] * b.y() + a[2] * b.z());
   }
   return smallest;
-}
-
-Point3 randomPoint(double zLow, double zHigh) {
-  const auto coordinate = [](double low, double high) {
-    return low + (high - low) * *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(0, 1000001)) / 1e6;
-  };
-  return {coordinate(-1, 1), coordinate(-1, 1), coordinate(zLow, zHigh)};
-}
-
-std::optional<Mesh> randomTetrahedron(double zLow, double zHigh) {
-  try {
-    return tetrahedronMesh(randomPoint(zLow, zHigh), randomPoint(zLow, zHigh), randomPoint(zLow, zHigh),
-                           randomPoint(zLow, zHigh));
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
-
-/// Random tetrahedra as robot and environment, the robot reaching past the
-/// environment's heights so that VF, FV and EE contacts all occur, with their
-/// topology.
-struct RandomScene {
-  RandomScene(Mesh robotMesh, Mesh worldMesh)
-      : robot(std::move(robotMesh)),
-        world(std::move(worldMesh)),
-        robotTopology(robot, statistics),
-        worldTopology(world, statistics),
-        algebra(statistics) {}
-
-  Mesh robot;
-  Mesh world;
-  PredicateStatistics statistics;
-  MeshTopology robotTopology;
-  MeshTopology worldTopology;
-  AngleAlgebra algebra;
-};
-
-std::unique_ptr<RandomScene> randomScene() {
-  std::optional<Mesh> robot = randomTetrahedron(0.1, 1.2);
-  std::optional<Mesh> world = randomTetrahedron(0.0, 1.0);
-  RC_PRE(robot.has_value() && world.has_value());
-  return std::make_unique<RandomScene>(std::move(*robot), std::move(*world));
 }
 
 }  // namespace

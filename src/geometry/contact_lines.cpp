@@ -68,5 +68,18 @@ template PatchLine<Interval> contactLine<Interval>(const Contact&, const Mesh&, 
                                                    const MeshTopology&);
 template PatchLine<Rational> contactLine<Rational>(const Contact&, const Mesh&, const MeshTopology&, const Mesh&,
                                                    const MeshTopology&);
+// The adaptive engine's ladder, for predicates that use patch lines.
+template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[0]>> contactLine(const Contact&, const Mesh&,
+                                                                                 const MeshTopology&, const Mesh&,
+                                                                                 const MeshTopology&);
+template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[1]>> contactLine(const Contact&, const Mesh&,
+                                                                                 const MeshTopology&, const Mesh&,
+                                                                                 const MeshTopology&);
+template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[2]>> contactLine(const Contact&, const Mesh&,
+                                                                                 const MeshTopology&, const Mesh&,
+                                                                                 const MeshTopology&);
+template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[3]>> contactLine(const Contact&, const Mesh&,
+                                                                                 const MeshTopology&, const Mesh&,
+                                                                                 const MeshTopology&);
 
 }  // namespace freespace

@@ -1,0 +1,49 @@
+#pragma once
+
+// Exact rational vectors and rotations for geometric oracles in tests: each is
+// computed straight from its definition, independently of the library's formulas.
+
+#include "freespace/geometry/mesh.h"
+#include "freespace/numbers/angle_polynomial.h"
+#include "freespace/numbers/half_angle.h"
+#include "freespace/numbers/rational.h"
+
+namespace freespace::testing {
+
+struct ExactRotation {
+  Rational cosine, sine;
+};
+
+inline ExactRotation rotationAt(double theta) {
+  ExactRotation rotation;
+  HalfAngle::fromRadians(theta).cosSin(rotation.cosine, rotation.sine);
+  return rotation;
+}
+
+struct Exact3 {
+  Rational x, y, z;
+};
+
+inline Exact3 exactPoint(const Point3& p) { return {Rational(p.x()), Rational(p.y()), Rational(p.z())}; }
+inline Exact3 minus(const Exact3& a, const Exact3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+inline Exact3 cross(const Exact3& a, const Exact3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+inline Rational dot(const Exact3& a, const Exact3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+inline Exact3 rotate(const ExactRotation& r, const Exact3& p) {
+  return {r.cosine * p.x - r.sine * p.y, r.sine * p.x + r.cosine * p.y, p.z};
+}
+inline Exact3 normalOf(const Mesh& mesh, std::uint32_t triangle) {
+  const TriangleIndices& t = mesh.triangles()[triangle];
+  const Exact3 a = exactPoint(mesh.vertices()[t[0]]);
+  return cross(minus(exactPoint(mesh.vertices()[t[1]]), a), minus(exactPoint(mesh.vertices()[t[2]]), a));
+}
+
+/// The value of a patch line at angle (cosine, sine) and translation d.
+inline Rational lineValue(const PatchLine<Rational>& line, const ExactRotation& r, const Exact3& d) {
+  const Rational nx = r.cosine * line.a1x - r.sine * line.a1y + line.a2x;
+  const Rational ny = r.sine * line.a1x + r.cosine * line.a1y + line.a2y;
+  return nx * d.x + ny * d.y + line.k1 * r.sine + line.k2 * r.cosine + line.k3;
+}
+
+}  // namespace freespace::testing

@@ -1,0 +1,60 @@
+#pragma once
+
+// Random tetrahedra scenes for property tests (RapidCheck): coordinates on a grid of
+// 1e-6, the robot reaching past the environment's heights so that VF, FV and EE
+// contacts all occur.
+
+#include <rapidcheck.h>
+
+#include <memory>
+#include <optional>
+
+#include "freespace/geometry/mesh_topology.h"
+#include "freespace/numbers/algebraic_angle.h"
+#include "test_meshes.h"
+
+namespace freespace::testing {
+
+inline Point3 randomPoint(double zLow, double zHigh) {
+  const auto coordinate = [](double low, double high) {
+    return low + (high - low) * *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(0, 1000001)) / 1e6;
+  };
+  return {coordinate(-1, 1), coordinate(-1, 1), coordinate(zLow, zHigh)};
+}
+
+inline std::optional<Mesh> randomTetrahedron(double zLow, double zHigh) {
+  try {
+    return tetrahedronMesh(randomPoint(zLow, zHigh), randomPoint(zLow, zHigh), randomPoint(zLow, zHigh),
+                           randomPoint(zLow, zHigh));
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+/// Random tetrahedra as robot and environment, the robot reaching past the
+/// environment's heights so that VF, FV and EE contacts all occur, with their
+/// topology.
+struct RandomScene {
+  RandomScene(Mesh robotMesh, Mesh worldMesh)
+      : robot(std::move(robotMesh)),
+        world(std::move(worldMesh)),
+        robotTopology(robot, statistics),
+        worldTopology(world, statistics),
+        algebra(statistics) {}
+
+  Mesh robot;
+  Mesh world;
+  PredicateStatistics statistics;
+  MeshTopology robotTopology;
+  MeshTopology worldTopology;
+  AngleAlgebra algebra;
+};
+
+inline std::unique_ptr<RandomScene> randomScene() {
+  std::optional<Mesh> robot = randomTetrahedron(0.1, 1.2);
+  std::optional<Mesh> world = randomTetrahedron(0.0, 1.0);
+  RC_PRE(robot.has_value() && world.has_value());
+  return std::make_unique<RandomScene>(std::move(*robot), std::move(*world));
+}
+
+}  // namespace freespace::testing
