@@ -7,43 +7,42 @@ namespace {
 
 using detail::cross;
 using detail::dot;
-using detail::edgeVector;
+using detail::difference;
 using detail::pointOf;
 using detail::rotatedDot;
-using detail::triangleNormal;
 using detail::Vector3T;
 
+/// VF: n . (R p + d - q0) with points (p, q0, q1, q2).
 template <class T>
-PatchLine<T> vertexFacetLine(const Contact& contact, const Mesh& robot, const Mesh& world) {
-  const Vector3T<T> p = pointOf<T>(robot.vertices()[contact.robot]);
-  const Vector3T<T> n = triangleNormal<T>(world, contact.world);
-  const Vector3T<T> q0 = pointOf<T>(world.vertices()[world.triangles()[contact.world][0]]);
+PatchLine<T> vertexFacetLine(const ContactPoints& contact) {
+  const Vector3T<T> p = pointOf<T>(contact.points[0]);
+  const Vector3T<T> n = detail::normalOf<T>({contact.points[1], contact.points[2], contact.points[3]});
+  const Vector3T<T> q0 = pointOf<T>(contact.points[1]);
   const TrigLinear<T> rotated = rotatedDot(p, n);
   return {T(0), T(0), n.x, n.y, rotated.s, rotated.c, rotated.k - dot(n, q0)};
 }
 
+/// FV: (R m) . (q - R p0 - d) with points (q, p0, p1, p2).
 template <class T>
-PatchLine<T> facetVertexLine(const Contact& contact, const Mesh& robot, const Mesh& world) {
-  const Vector3T<T> q = pointOf<T>(world.vertices()[contact.world]);
-  const Vector3T<T> m = triangleNormal<T>(robot, contact.robot);
-  const Vector3T<T> p0 = pointOf<T>(robot.vertices()[robot.triangles()[contact.robot][0]]);
+PatchLine<T> facetVertexLine(const ContactPoints& contact) {
+  const Vector3T<T> q = pointOf<T>(contact.points[0]);
+  const Vector3T<T> m = detail::normalOf<T>({contact.points[1], contact.points[2], contact.points[3]});
+  const Vector3T<T> p0 = pointOf<T>(contact.points[1]);
   const TrigLinear<T> rotated = rotatedDot(m, q);
   return {-m.x, -m.y, T(0), T(0), rotated.s, rotated.c, rotated.k - dot(m, p0)};
 }
 
-/// N_xy = R a1 + a2 with a1 = v_z (u_y, -u_x), a2 = u_z (-v_y, v_x), and the constant
+/// EE with points (a0, a1, b0, b1): N_xy = R a1 + a2 with a1 = v_z (u_y, -u_x),
+/// a2 = u_z (-v_y, v_x), and the constant
 /// (R a0 - b0) . N = det(R a0, R u, v) - det(b0, R u, v)
 ///                 = (R (a0 x u)) . v - (R u) . (v x b0),
 /// all multiplied by -sigma.
 template <class T>
-PatchLine<T> edgeEdgeLine(const Contact& contact, const Mesh& robot, const MeshTopology& robotTopology,
-                          const Mesh& world, const MeshTopology& worldTopology) {
-  const MeshEdge& robotEdge = robotTopology.edges()[contact.robot];
-  const MeshEdge& worldEdge = worldTopology.edges()[contact.world];
-  const Vector3T<T> a0 = pointOf<T>(robot.vertices()[robotEdge.from]);
-  const Vector3T<T> b0 = pointOf<T>(world.vertices()[worldEdge.from]);
-  const Vector3T<T> u = edgeVector<T>(robot, robotEdge.from, robotEdge.to);
-  const Vector3T<T> v = edgeVector<T>(world, worldEdge.from, worldEdge.to);
+PatchLine<T> edgeEdgeLine(const ContactPoints& contact) {
+  const Vector3T<T> a0 = pointOf<T>(contact.points[0]);
+  const Vector3T<T> b0 = pointOf<T>(contact.points[2]);
+  const Vector3T<T> u = difference(pointOf<T>(contact.points[1]), a0);
+  const Vector3T<T> v = difference(pointOf<T>(contact.points[3]), b0);
   const TrigLinear<T> first = rotatedDot(cross(a0, u), v);
   const TrigLinear<T> second = rotatedDot(u, cross(v, b0));
   const T sign(-contact.side);
@@ -53,33 +52,45 @@ PatchLine<T> edgeEdgeLine(const Contact& contact, const Mesh& robot, const MeshT
 
 }  // namespace
 
-template <class T>
-PatchLine<T> contactLine(const Contact& contact, const Mesh& robot, const MeshTopology& robotTopology,
-                         const Mesh& world, const MeshTopology& worldTopology) {
+ContactPoints contactPoints(const Contact& contact, const Mesh& robot, const MeshTopology& robotTopology,
+                            const Mesh& world, const MeshTopology& worldTopology) {
+  const auto corners = [](const Mesh& mesh, std::uint32_t triangle) {
+    const TriangleIndices& t = mesh.triangles()[triangle];
+    return std::array<Point3, 3>{mesh.vertices()[t[0]], mesh.vertices()[t[1]], mesh.vertices()[t[2]]};
+  };
   switch (contact.kind) {
-    case ContactKind::VertexFacet: return vertexFacetLine<T>(contact, robot, world);
-    case ContactKind::FacetVertex: return facetVertexLine<T>(contact, robot, world);
+    case ContactKind::VertexFacet: {
+      const auto facet = corners(world, contact.world);
+      return {contact.kind, contact.side, {robot.vertices()[contact.robot], facet[0], facet[1], facet[2]}};
+    }
+    case ContactKind::FacetVertex: {
+      const auto facet = corners(robot, contact.robot);
+      return {contact.kind, contact.side, {world.vertices()[contact.world], facet[0], facet[1], facet[2]}};
+    }
     case ContactKind::EdgeEdge: break;
   }
-  return edgeEdgeLine<T>(contact, robot, robotTopology, world, worldTopology);
+  const MeshEdge& a = robotTopology.edges()[contact.robot];
+  const MeshEdge& b = worldTopology.edges()[contact.world];
+  return {contact.kind, contact.side,
+          {robot.vertices()[a.from], robot.vertices()[a.to], world.vertices()[b.from], world.vertices()[b.to]}};
 }
 
-template PatchLine<Interval> contactLine<Interval>(const Contact&, const Mesh&, const MeshTopology&, const Mesh&,
-                                                   const MeshTopology&);
-template PatchLine<Rational> contactLine<Rational>(const Contact&, const Mesh&, const MeshTopology&, const Mesh&,
-                                                   const MeshTopology&);
+template <class T>
+PatchLine<T> lineOf(const ContactPoints& contact) {
+  switch (contact.kind) {
+    case ContactKind::VertexFacet: return vertexFacetLine<T>(contact);
+    case ContactKind::FacetVertex: return facetVertexLine<T>(contact);
+    case ContactKind::EdgeEdge: break;
+  }
+  return edgeEdgeLine<T>(contact);
+}
+
+template PatchLine<Interval> lineOf<Interval>(const ContactPoints&);
+template PatchLine<Rational> lineOf<Rational>(const ContactPoints&);
 // The adaptive engine's ladder, for predicates that use patch lines.
-template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[0]>> contactLine(const Contact&, const Mesh&,
-                                                                                 const MeshTopology&, const Mesh&,
-                                                                                 const MeshTopology&);
-template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[1]>> contactLine(const Contact&, const Mesh&,
-                                                                                 const MeshTopology&, const Mesh&,
-                                                                                 const MeshTopology&);
-template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[2]>> contactLine(const Contact&, const Mesh&,
-                                                                                 const MeshTopology&, const Mesh&,
-                                                                                 const MeshTopology&);
-template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[3]>> contactLine(const Contact&, const Mesh&,
-                                                                                 const MeshTopology&, const Mesh&,
-                                                                                 const MeshTopology&);
+template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[0]>> lineOf(const ContactPoints&);
+template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[1]>> lineOf(const ContactPoints&);
+template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[2]>> lineOf(const ContactPoints&);
+template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[3]>> lineOf(const ContactPoints&);
 
 }  // namespace freespace

@@ -408,53 +408,57 @@ AlgebraicAngle AngleAlgebra::rationalBetween(const AlgebraicAngle& from, const A
 AngleSet AngleAlgebra::positiveSet(const std::vector<std::shared_ptr<const AngleFunction>>& functions,
                                    PredicateKind kind) {
   // A function that vanishes identically is positive nowhere.
-  AngleSet set;
   for (const auto& function : functions) {
-    if (function->isIdenticallyZero()) return set;
+    if (function->isIdenticallyZero()) return {};
   }
-  std::vector<AlgebraicAngle> roots;
-  for (const auto& function : functions) {
-    for (const AlgebraicAngle& root : this->roots(function, kind)) roots.push_back(root);
-  }
-  std::sort(roots.begin(), roots.end(), [this](const AlgebraicAngle& a, const AlgebraicAngle& b) {
-    return compare(a, b) < 0;
-  });
-  roots.erase(std::unique(roots.begin(), roots.end(),
-                          [this](const AlgebraicAngle& a, const AlgebraicAngle& b) { return compare(a, b) == 0; }),
-              roots.end());
-  const auto allPositiveAt = [&](const AlgebraicAngle& angle) {
+  return closureWhere(functions, {}, [&](const AlgebraicAngle& angle) {
     return std::all_of(functions.begin(), functions.end(),
                        [&](const auto& function) { return signAt(*function, angle) == Sign::Positive; });
-  };
-  if (roots.empty()) {
-    set.fullCircle = allPositiveAt(AlgebraicAngle::rational(0, 0.0));
+  }, kind);
+}
+
+AngleSet AngleAlgebra::closureWhere(const std::vector<std::shared_ptr<const AngleFunction>>& functions,
+                                    std::vector<AlgebraicAngle> breakpoints,
+                                    const std::function<bool(const AlgebraicAngle&)>& holds, PredicateKind kind) {
+  AngleSet set;
+  for (const auto& function : functions) {
+    for (const AlgebraicAngle& root : this->roots(function, kind)) breakpoints.push_back(root);
+  }
+  std::sort(breakpoints.begin(), breakpoints.end(), [this](const AlgebraicAngle& a, const AlgebraicAngle& b) {
+    return compare(a, b) < 0;
+  });
+  breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end(),
+                                [this](const AlgebraicAngle& a, const AlgebraicAngle& b) { return compare(a, b) == 0; }),
+                    breakpoints.end());
+  if (breakpoints.empty()) {
+    set.fullCircle = holds(AlgebraicAngle::rational(0, 0.0));
     return set;
   }
-  // Gap i runs from root i to root i + 1 (the last one around to the first); the
-  // functions keep their signs inside a gap, so one sample decides it.
-  const std::size_t count = roots.size();
-  std::vector<bool> positiveGap(count);
+  // Gap i runs from breakpoint i to breakpoint i + 1 (the last one around to the
+  // first); the property is constant inside a gap, so one sample decides it.
+  const std::size_t count = breakpoints.size();
+  std::vector<bool> trueGap(count);
   for (std::size_t i = 0; i < count; ++i) {
-    const AlgebraicAngle& next = roots[(i + 1) % count];
-    const AlgebraicAngle sample = count == 1 ? angleAtPosition(exactPosition(roots[0]).u.lo + 2)
-                                             : rationalBetween(roots[i], next);
-    positiveGap[i] = allPositiveAt(sample);
+    const AlgebraicAngle& next = breakpoints[(i + 1) % count];
+    const AlgebraicAngle sample = count == 1 ? angleAtPosition(exactPosition(breakpoints[0]).u.lo + 2)
+                                             : rationalBetween(breakpoints[i], next);
+    trueGap[i] = holds(sample);
   }
-  if (std::all_of(positiveGap.begin(), positiveGap.end(), [](bool positive) { return positive; })) {
+  if (std::all_of(trueGap.begin(), trueGap.end(), [](bool value) { return value; })) {
     set.fullCircle = true;
     return set;
   }
-  // Closed arcs are the runs of positive gaps, started after a gap that is not.
-  const std::size_t first = static_cast<std::size_t>(
-      std::find(positiveGap.begin(), positiveGap.end(), false) - positiveGap.begin());
+  // Closed arcs are the runs of true gaps, started after a gap that is not.
+  const std::size_t first =
+      static_cast<std::size_t>(std::find(trueGap.begin(), trueGap.end(), false) - trueGap.begin());
   for (std::size_t step = 1; step <= count; ++step) {
     const std::size_t gap = (first + step) % count;
-    if (!positiveGap[gap]) continue;
-    const bool continuesRun = positiveGap[(gap + count - 1) % count];
+    if (!trueGap[gap]) continue;
+    const bool continuesRun = trueGap[(gap + count - 1) % count];
     if (continuesRun) {
-      set.arcs.back().to = roots[(gap + 1) % count];
+      set.arcs.back().to = breakpoints[(gap + 1) % count];
     } else {
-      set.arcs.push_back({roots[gap], roots[(gap + 1) % count]});
+      set.arcs.push_back({breakpoints[gap], breakpoints[(gap + 1) % count]});
     }
   }
   std::sort(set.arcs.begin(), set.arcs.end(), [this](const AngleInterval& a, const AngleInterval& b) {

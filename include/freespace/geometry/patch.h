@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -28,9 +29,24 @@ struct Contact {
   int side = 1;
 };
 
-/// The patch line of a VF or FV contact as the signed contact function: positive on
-/// the free side (DESIGN.md section 3), with coefficients computed from the meshes'
-/// coordinates in T.
+/// The input points that determine a contact's line, copied from the meshes (a
+/// value: the angle functions built from it outlive the meshes):
+///   VF: robot vertex p, environment triangle (q0, q1, q2)
+///   FV: environment vertex q, robot triangle (p0, p1, p2)
+///   EE: robot edge (a0, a1) and environment edge (b0, b1), from `from` to `to`.
+struct ContactPoints {
+  ContactKind kind = ContactKind::VertexFacet;
+  int side = 1;
+  std::array<Point3, 4> points;
+};
+
+ContactPoints contactPoints(const Contact& contact, const Mesh& robot, const MeshTopology& robotTopology,
+                            const Mesh& world, const MeshTopology& worldTopology);
+
+/// The patch line of a contact as the signed contact function: positive on the free
+/// side (DESIGN.md section 3), with coefficients computed from the input points in
+/// the number type T of the evaluation (instantiated for Interval, the
+/// MultiprecisionInterval ladder and Rational):
 ///   VF, robot vertex p, environment triangle (q0, q1, q2), n = (q1 - q0) x (q2 - q0):
 ///     n . (R p + d - q0) = n_xy . d + (p x n) sin + (p . n)_xy cos + p_z n_z - n . q0
 ///   FV, environment vertex q, robot triangle (p0, p1, p2), m = (p1 - p0) x (p2 - p0):
@@ -39,8 +55,13 @@ struct Contact {
 ///     -sigma N . (R a0 + d - b0); sigma N separates: the robot lies on its negative
 ///     side, the environment on its positive side.
 template <class T>
+PatchLine<T> lineOf(const ContactPoints& contact);
+
+template <class T>
 PatchLine<T> contactLine(const Contact& contact, const Mesh& robot, const MeshTopology& robotTopology,
-                         const Mesh& world, const MeshTopology& worldTopology);
+                         const Mesh& world, const MeshTopology& worldTopology) {
+  return lineOf<T>(contactPoints(contact, robot, robotTopology, world, worldTopology));
+}
 
 /// A patch: the compatible contacts of one feature pair, over its range of angles.
 struct Patch {

@@ -35,18 +35,33 @@ struct PatchSegment {
   std::array<SegmentEnd, 2> ends;
 };
 
+/// The input points of a segment end, copied from the meshes (a value: the angle
+/// functions built from it outlive the meshes): the vertex and the edge's two ends.
+struct SpiralPoints {
+  bool robotVertex = true;
+  std::array<Point3, 3> points;  // vertex, edge from, edge to
+};
+
+inline SpiralPoints spiralPoints(const SegmentEnd& end, const Mesh& robot, const Mesh& world) {
+  const Mesh& vertexMesh = end.robotVertex ? robot : world;
+  const Mesh& edgeMesh = end.robotVertex ? world : robot;
+  return {end.robotVertex,
+          {vertexMesh.vertices()[end.vertex], edgeMesh.vertices()[end.edge[0]], edgeMesh.vertices()[end.edge[1]]}};
+}
+
 /// The moving point of a segment end in number type T:
 ///   robot vertex p on environment edge e:  d = e(p_z)_xy - R p_xy
 ///   environment vertex q on robot edge f:  d = q_xy - R f(q_z)_xy
 template <class T>
-Spiral<T> spiralOf(const SegmentEnd& end, const Mesh& robot, const Mesh& world) {
-  const Mesh& vertexMesh = end.robotVertex ? robot : world;
-  const Mesh& edgeMesh = end.robotVertex ? world : robot;
-  const Point3& vertex = vertexMesh.vertices()[end.vertex];
-  const Point3& from = edgeMesh.vertices()[end.edge[0]];
-  const Point3& to = edgeMesh.vertices()[end.edge[1]];
+Spiral<T> spiralOf(const SpiralPoints& end) {
+  const auto& [vertex, from, to] = end.points;
   return end.robotVertex ? spiralOfRobotVertexOnEdge<T>(vertex.data(), from.data(), to.data())
                          : spiralOfWorldVertexOnEdge<T>(vertex.data(), from.data(), to.data());
+}
+
+template <class T>
+Spiral<T> spiralOf(const SegmentEnd& end, const Mesh& robot, const Mesh& world) {
+  return spiralOf<T>(spiralPoints(end, robot, world));
 }
 
 /// The point d = u + R v of a spiral at the angle with the given cosine and sine.

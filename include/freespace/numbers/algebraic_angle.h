@@ -132,6 +132,13 @@ class AngleAlgebra {
   /// one of them vanishes identically).
   AngleSet positiveSet(const std::vector<std::shared_ptr<const AngleFunction>>& functions, PredicateKind kind);
 
+  /// The closure of the set of angles where `holds` is true, for a property that can
+  /// change only at the roots of `functions` and at the `breakpoints` (none of the
+  /// functions may vanish identically). `holds` is asked at rational angles only.
+  AngleSet closureWhere(const std::vector<std::shared_ptr<const AngleFunction>>& functions,
+                        std::vector<AlgebraicAngle> breakpoints,
+                        const std::function<bool(const AlgebraicAngle&)>& holds, PredicateKind kind);
+
  private:
   std::optional<int> compareInDoubles(AlgebraicAngle& a, AlgebraicAngle& b) const;
   Sign record(PredicateKind kind, int level, Sign sign);
