@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "freespace/geometry/patch.h"
+#include "freespace/geometry/patch_curve.h"
 #include "freespace/geometry/perturbed_meshes.h"
 #include "freespace/problem/planar_problem.h"
 
@@ -37,10 +38,22 @@ void measure(const std::string& cfg) {
   start = std::chrono::steady_clock::now();
   const auto edgeEdge = edgeEdgePatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
   const double edgeEdgeSeconds = secondsSince(start);
+  std::vector<Patch> patches = vertexFacet;
+  patches.insert(patches.end(), edgeEdge.begin(), edgeEdge.end());
+  start = std::chrono::steady_clock::now();
+  const auto geometries = patchGeometries(patches, meshes.robot, robotTopology, meshes.world, worldTopology, statistics);
+  const double segmentSeconds = secondsSince(start);
+  start = std::chrono::steady_clock::now();
+  const auto pairs = candidatePatchPairs(geometries);
+  const double pairSeconds = secondsSince(start);
+  start = std::chrono::steady_clock::now();
+  const auto curves = patchCurves(geometries, algebra);
+  const double curveSeconds = secondsSince(start);
   std::cout << std::filesystem::path(cfg).stem().string() << ": robot " << meshes.robot.triangles().size()
             << " triangles, world " << meshes.world.triangles().size() << " triangles; " << vertexFacet.size()
             << " VF/FV patches, " << edgeEdge.size() << " EE patches; seconds: perturb " << perturbSeconds
-            << ", topology " << topologySeconds << ", VF/FV " << vertexFacetSeconds << ", EE " << edgeEdgeSeconds
+            << ", topology " << topologySeconds << ", VF/FV " << vertexFacetSeconds << ", EE " << edgeEdgeSeconds << ", segments " << segmentSeconds << ", candidate pairs "
+            << pairSeconds << " (" << pairs.size() << "), curves " << curveSeconds << " (" << curves.size() << ")"
             << "; decided in double intervals " << std::setprecision(4) << 100 * statistics.doubleIntervalFraction()
             << "%\n"
             << statistics.toText();

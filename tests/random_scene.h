@@ -57,4 +57,21 @@ inline std::unique_ptr<RandomScene> randomScene() {
   return std::make_unique<RandomScene>(std::move(*robot), std::move(*world));
 }
 
+/// A random robot tetrahedron between two random obstacle tetrahedra (one
+/// environment mesh of two components, apart), so that the robot can touch both at
+/// once and patches cross.
+inline std::unique_ptr<RandomScene> randomTwoObstacleScene() {
+  std::optional<Mesh> robot = randomTetrahedron(0.1, 1.2);
+  std::optional<Mesh> left = randomTetrahedron(0.0, 1.0);
+  std::optional<Mesh> right = randomTetrahedron(0.0, 1.0);
+  RC_PRE(robot.has_value() && left.has_value() && right.has_value());
+  const auto soupOf = [](const Mesh& mesh, double dx) {
+    TriangleSoup soup{{}, mesh.triangles()};
+    for (const Point3& v : mesh.vertices()) soup.vertices.push_back(v + Point3(dx, 0, 0));
+    return soup;
+  };
+  Mesh world = Mesh::fromSoup(joinSoups({soupOf(*left, -1.1), soupOf(*right, 1.1)}), "two obstacles");
+  return std::make_unique<RandomScene>(std::move(*robot), std::move(world));
+}
+
 }  // namespace freespace::testing

@@ -311,3 +311,31 @@ TEST(AlgebraicAngle, RationalBetweenSeparatesCloseAndWrappingAngles) {
   EXPECT_TRUE(algebra.compare(around, roots[0]) < 0 || algebra.compare(around, roots[1]) > 0);
   EXPECT_THROW(algebra.rationalBetween(roots[0], roots[0]), std::invalid_argument);
 }
+
+RC_GTEST_PROP(AlgebraicAngle, FunctionsWithOneKeyShareTheirRootsByIndex, ()) {
+  // A form and its negation, keyed alike: every pair of their roots compares as the
+  // exact comparison (without the key) does, and equal roots are identities.
+  const Form form = randomForm(1000);
+  const Form negated{-form.k1, -form.k2, -form.k3};
+  RC_PRE(form.k1 != 0 || form.k2 != 0);
+  const AngleFunction::RootKey key{7, 1, 2, 3, 4, 5};
+  const auto keyed = [&key](const Form& f) {
+    return std::make_shared<AngleFunction>([f](auto type, int chart) {
+      using T = typename decltype(type)::type;
+      return tangentPolynomial(edgeFacetForm(T(f.k1), T(f.k2), T(f.k3)), chart);
+    }, key);
+  };
+  PredicateStatistics keyedStatistics, plainStatistics;
+  AngleAlgebra keyedAlgebra(keyedStatistics), plainAlgebra(plainStatistics);
+  const auto first = keyedAlgebra.roots(keyed(form), PredicateKind::Other);
+  const auto second = keyedAlgebra.roots(keyed(negated), PredicateKind::Other);
+  const auto plainFirst = plainAlgebra.roots(productOf({form}), PredicateKind::Other);
+  const auto plainSecond = plainAlgebra.roots(productOf({negated}), PredicateKind::Other);
+  RC_ASSERT(first.size() == second.size());
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    for (std::size_t j = 0; j < second.size(); ++j) {
+      RC_ASSERT(keyedAlgebra.compare(first[i], second[j]) == plainAlgebra.compare(plainFirst[i], plainSecond[j]));
+    }
+  }
+  RC_ASSERT(keyedStatistics.counts(PredicateKind::RootOrder).identities >= first.size());
+}

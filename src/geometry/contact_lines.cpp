@@ -54,25 +54,34 @@ PatchLine<T> edgeEdgeLine(const ContactPoints& contact) {
 
 ContactPoints contactPoints(const Contact& contact, const Mesh& robot, const MeshTopology& robotTopology,
                             const Mesh& world, const MeshTopology& worldTopology) {
-  const auto corners = [](const Mesh& mesh, std::uint32_t triangle) {
-    const TriangleIndices& t = mesh.triangles()[triangle];
-    return std::array<Point3, 3>{mesh.vertices()[t[0]], mesh.vertices()[t[1]], mesh.vertices()[t[2]]};
+  const auto pointsOf = [&contact](const Mesh& first, std::array<std::uint32_t, 2> firstVertices, const Mesh& second,
+                                   std::array<std::uint32_t, 2> secondVertices) {
+    ContactPoints points{contact.kind, contact.side, {}, {}};
+    for (int i = 0; i < 2; ++i) {
+      points.vertices[i] = firstVertices[i];
+      points.points[i] = first.vertices()[firstVertices[i]];
+      points.vertices[2 + i] = secondVertices[i];
+      points.points[2 + i] = second.vertices()[secondVertices[i]];
+    }
+    return points;
+  };
+  const auto vertexAndFacet = [&contact](const Mesh& vertexMesh, std::uint32_t vertex, const Mesh& facetMesh,
+                                         std::uint32_t triangle) {
+    const TriangleIndices& t = facetMesh.triangles()[triangle];
+    return ContactPoints{contact.kind,
+                         contact.side,
+                         {vertexMesh.vertices()[vertex], facetMesh.vertices()[t[0]], facetMesh.vertices()[t[1]],
+                          facetMesh.vertices()[t[2]]},
+                         {vertex, t[0], t[1], t[2]}};
   };
   switch (contact.kind) {
-    case ContactKind::VertexFacet: {
-      const auto facet = corners(world, contact.world);
-      return {contact.kind, contact.side, {robot.vertices()[contact.robot], facet[0], facet[1], facet[2]}};
-    }
-    case ContactKind::FacetVertex: {
-      const auto facet = corners(robot, contact.robot);
-      return {contact.kind, contact.side, {world.vertices()[contact.world], facet[0], facet[1], facet[2]}};
-    }
+    case ContactKind::VertexFacet: return vertexAndFacet(robot, contact.robot, world, contact.world);
+    case ContactKind::FacetVertex: return vertexAndFacet(world, contact.world, robot, contact.robot);
     case ContactKind::EdgeEdge: break;
   }
   const MeshEdge& a = robotTopology.edges()[contact.robot];
   const MeshEdge& b = worldTopology.edges()[contact.world];
-  return {contact.kind, contact.side,
-          {robot.vertices()[a.from], robot.vertices()[a.to], world.vertices()[b.from], world.vertices()[b.to]}};
+  return pointsOf(robot, {a.from, a.to}, world, {b.from, b.to});
 }
 
 template <class T>

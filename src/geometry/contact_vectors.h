@@ -3,9 +3,12 @@
 // Vectors of mesh coordinates in any number type, for the patch formulas of
 // DESIGN.md section 3.
 
+#include <algorithm>
 #include <array>
+#include <cstdint>
 
 #include "freespace/geometry/mesh.h"
+#include "freespace/numbers/algebraic_angle.h"
 #include "freespace/numbers/angle_polynomial.h"
 
 namespace freespace::detail {
@@ -70,6 +73,17 @@ TrigLinear<T> rotatedDot(const Vector3T<T>& a, const Vector3T<T>& b) {
 template <class T>
 TrigLinear<T> negated(const TrigLinear<T>& form) {
   return {-form.s, -form.c, -form.k};
+}
+
+/// The RootKey of an EF function (DESIGN.md section 4): (R (x - y)) . n for a robot
+/// vertex pair (x, y) and the normal n of a plane through three environment
+/// vertices, or (R m) . (x - y) for an environment pair and a robot plane.
+/// Reversing the pair or reordering the plane only changes the function by a
+/// constant factor, so the key sorts both.
+inline AngleFunction::RootKey edgeFacetKey(bool robotPair, std::uint32_t x, std::uint32_t y,
+                                          std::array<std::uint32_t, 3> plane) {
+  std::sort(plane.begin(), plane.end());
+  return {robotPair ? 0u : 1u, std::min(x, y), std::max(x, y), plane[0], plane[1], plane[2]};
 }
 
 }  // namespace freespace::detail

@@ -55,7 +55,7 @@ std::pair<double, double> heightRange(const Mesh& mesh, const MeshEdge& edge) {
 /// meshes in the patches' angles.
 std::shared_ptr<const AngleFunction> wedgeCondition(const std::array<Point3, 2>& robotEdge,
                                                     const std::array<Point3, 2>& worldEdge, bool robotNormal,
-                                                    const detail::Corners& face, int sign) {
+                                                    const detail::Corners& face, int sign, AngleFunction::RootKey key) {
   return std::make_shared<AngleFunction>([robotEdge, worldEdge, robotNormal, face, sign](auto type, int chart) {
     using T = typename decltype(type)::type;
     const auto u = detail::difference(detail::pointOf<T>(robotEdge[1]), detail::pointOf<T>(robotEdge[0]));
@@ -63,7 +63,7 @@ std::shared_ptr<const AngleFunction> wedgeCondition(const std::array<Point3, 2>&
     const TrigLinear<T> form =
         robotNormal ? rotatedDot(detail::normalOf<T>(face), v) : rotatedDot(u, detail::normalOf<T>(face));
     return tangentPolynomial(sign > 0 ? form : negated(form), chart);
-  });
+  }, key);
 }
 
 std::array<Point3, 2> endsOf(const Mesh& mesh, const MeshEdge& edge) {
@@ -88,12 +88,19 @@ std::vector<Patch> edgeEdgePatches(const Mesh& robot, const MeshTopology& robotT
       const auto robotEnds = endsOf(robot, robotEdge), worldEnds = endsOf(world, worldEdge);
       const std::array<detail::Corners, 4> faces{detail::cornersOf(robot, a.faces[0]), detail::cornersOf(robot, a.faces[1]),
                                                  detail::cornersOf(world, b.faces[0]), detail::cornersOf(world, b.faces[1])};
+      // (R m) . v is the EF function of the environment edge and a robot face,
+      // (R u) . n that of the robot edge and an environment face.
+      const std::array<AngleFunction::RootKey, 4> keys{
+          detail::edgeFacetKey(false, worldEdge.from, worldEdge.to, robot.triangles()[a.faces[0]]),
+          detail::edgeFacetKey(false, worldEdge.from, worldEdge.to, robot.triangles()[a.faces[1]]),
+          detail::edgeFacetKey(true, robotEdge.from, robotEdge.to, world.triangles()[b.faces[0]]),
+          detail::edgeFacetKey(true, robotEdge.from, robotEdge.to, world.triangles()[b.faces[1]])};
       for (int side : {1, -1}) {
         const std::vector<std::shared_ptr<const AngleFunction>> conditions{
-            wedgeCondition(robotEnds, worldEnds, true, faces[0], side),
-            wedgeCondition(robotEnds, worldEnds, true, faces[1], -side),
-            wedgeCondition(robotEnds, worldEnds, false, faces[2], side),
-            wedgeCondition(robotEnds, worldEnds, false, faces[3], -side)};
+            wedgeCondition(robotEnds, worldEnds, true, faces[0], side, keys[0]),
+            wedgeCondition(robotEnds, worldEnds, true, faces[1], -side, keys[1]),
+            wedgeCondition(robotEnds, worldEnds, false, faces[2], side, keys[2]),
+            wedgeCondition(robotEnds, worldEnds, false, faces[3], -side, keys[3])};
         AngleSet range = algebra.positiveSet(conditions, PredicateKind::EdgeFacet);
         if (!range.empty()) patches.push_back({Contact{ContactKind::EdgeEdge, a.edge, b.edge, side}, std::move(range)});
       }

@@ -16,16 +16,17 @@ using detail::rotatedDot;
 /// the other body's facet plane" as an angle function: (R u) . n > 0 for a robot
 /// edge u and an environment facet normal n, (R m) . v > 0 for a robot facet normal
 /// m and an environment edge v. Coordinates are copied: the function outlives the
-/// meshes in the patches' angles.
+/// meshes in the patches' angles. `key` names the edge and the facet (see
+/// detail::edgeFacetKey).
 std::shared_ptr<const AngleFunction> edgeOutOfFacet(ContactKind kind, const Point3& vertex, const Point3& other,
-                                                    const detail::Corners& facet) {
+                                                    const detail::Corners& facet, AngleFunction::RootKey key) {
   return std::make_shared<AngleFunction>([kind, vertex, other, facet](auto type, int chart) {
     using T = typename decltype(type)::type;
     const auto edge = difference(pointOf<T>(other), pointOf<T>(vertex));
     const auto normal = detail::normalOf<T>(facet);
     return tangentPolynomial(kind == ContactKind::VertexFacet ? rotatedDot(edge, normal) : rotatedDot(normal, edge),
                              chart);
-  });
+  }, key);
 }
 
 /// Whether z lies strictly between the lowest and highest vertex of the triangle.
@@ -49,8 +50,10 @@ void addPatches(ContactKind kind, const Mesh& vertexMesh, const MeshTopology& ve
       std::vector<std::shared_ptr<const AngleFunction>> conditions;
       const detail::Corners facet = detail::cornersOf(facetMesh, triangle);
       for (std::uint32_t edge : vertexTopology.vertexEdges(vertex)) {
-        const Point3& other = vertexMesh.vertices()[vertexTopology.otherEnd(edge, vertex)];
-        conditions.push_back(edgeOutOfFacet(kind, vertexMesh.vertices()[vertex], other, facet));
+        const std::uint32_t other = vertexTopology.otherEnd(edge, vertex);
+        conditions.push_back(edgeOutOfFacet(kind, vertexMesh.vertices()[vertex], vertexMesh.vertices()[other], facet,
+                                            detail::edgeFacetKey(kind == ContactKind::VertexFacet, vertex, other,
+                                                                 facetMesh.triangles()[triangle])));
       }
       AngleSet range = algebra.positiveSet(conditions, PredicateKind::EdgeFacet);
       if (!range.empty()) patches.push_back({contact, std::move(range)});

@@ -165,15 +165,18 @@ const RationalPolynomial& AngleFunction::squareFree(int chart) const {
   return *squareFree_[chart];
 }
 
-AlgebraicAngle::AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, double lower, double upper)
-    : function_(std::move(function)), chart_(chart), lower_(lower), upper_(upper) {}
+AlgebraicAngle::AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, double lower, double upper,
+                               int index)
+    : function_(std::move(function)), chart_(chart), lower_(lower), upper_(upper), index_(index) {}
 
-AlgebraicAngle::AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, const IsolatingInterval& root)
+AlgebraicAngle::AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, const IsolatingInterval& root,
+                               int index)
     : function_(std::move(function)),
       chart_(chart),
       exactRoot_(root),
       lower_(lowerDouble(root.lo)),
-      upper_(upperDouble(root.hi)) {}
+      upper_(upperDouble(root.hi)),
+      index_(index) {}
 
 IsolatingInterval AlgebraicAngle::root() const {
   if (!exactRoot_) return {Rational(lower_), Rational(upper_)};
@@ -229,17 +232,19 @@ std::vector<AlgebraicAngle> AngleAlgebra::roots(const std::shared_ptr<const Angl
   for (int chart = 0; chart < 2; ++chart) {
     if (const auto enclosures = chartRootsInDoubles(function->approximate(chart))) {
       statistics_.recordDecision(kind, kDoubleLevel);
-      for (const Interval& t : *enclosures) angles.emplace_back(function, chart, t.lower(), t.upper());
+      int index = 0;
+      for (const Interval& t : *enclosures) angles.emplace_back(function, chart, t.lower(), t.upper(), index++);
       continue;
     }
     statistics_.recordDecision(kind, kExactLevel);
     const RationalPolynomial& exact = function->exact(chart);
     if (isZero(exact)) throw std::invalid_argument("the angle function vanishes identically");
+    int index = 0;
     for (IsolatingInterval root : isolateRoots(exact, Rational(-1), Rational(1))) {
       // Chart 1 leaves t = +-1 to chart 0.
       if (chart == 1 && root.lo == root.hi && abs(root.lo) == 1) continue;
       tighten(function->squareFree(chart), root);
-      angles.emplace_back(function, chart, root);
+      angles.emplace_back(function, chart, root, index++);
     }
   }
   return angles;
@@ -281,12 +286,35 @@ std::optional<int> AngleAlgebra::compareInDoubles(AlgebraicAngle& a, AlgebraicAn
   });
 }
 
+std::optional<int> AngleAlgebra::compareByKey(const AlgebraicAngle& a, const AlgebraicAngle& b) {
+  if (a.isRational() || b.isRational() || a.chart() != b.chart() || a.index() < 0 || b.index() < 0) return std::nullopt;
+  const auto& keyA = a.function()->key();
+  if (!keyA || keyA != b.function()->key()) return std::nullopt;
+  // Same roots in the chart, isolated in increasing order: the indices decide.
+  if (a.index() == b.index()) statistics_.recordIdentity(PredicateKind::RootOrder);
+  return a.index() < b.index() ? -1 : (a.index() > b.index() ? 1 : 0);
+}
+
 int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
   AlgebraicAngle first = a, second = b;
   if (const std::optional<int> order = compareInDoubles(first, second)) {
     record(PredicateKind::RootOrder, kDoubleLevel, signOf(*order));
     return *order;
   }
+  if (const std::optional<int> order = compareByKey(first, second)) return *order;
+  if (first.isRational() || second.isRational() || first.index() < 0 || second.index() < 0) {
+    return compareEscalated(first, second);
+  }
+  const std::pair<RootId, RootId> pair{{first.function(), first.chart(), first.index()},
+                                       {second.function(), second.chart(), second.index()}};
+  const auto known = escalatedOrders_.find(pair);
+  if (known != escalatedOrders_.end()) return known->second;
+  const int order = compareEscalated(first, second);
+  escalatedOrders_.emplace(pair, order);
+  return order;
+}
+
+int AngleAlgebra::compareEscalated(const AlgebraicAngle& first, const AlgebraicAngle& second) {
   const RationalPolynomial f = exactPolynomialOf(first), g = exactPolynomialOf(second);
   const IsolatingInterval rootA = verifiedIsolating(first), rootB = verifiedIsolating(second);
   // Escalation as in signAt: equal roots are an exact identity, found first.
@@ -307,8 +335,7 @@ int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
 bool AngleAlgebra::contains(const AngleInterval& arc, const AlgebraicAngle& angle) {
   const bool afterFrom = compare(arc.from, angle) <= 0;
   const bool beforeTo = compare(angle, arc.to) <= 0;
-  const bool wraps = compare(arc.to, arc.from) < 0;
-  return wraps ? (afterFrom || beforeTo) : (afterFrom && beforeTo);
+  return arc.wraps ? (afterFrom || beforeTo) : (afterFrom && beforeTo);
 }
 
 bool AngleAlgebra::contains(const AngleSet& set, const AlgebraicAngle& angle) {
@@ -455,10 +482,13 @@ AngleSet AngleAlgebra::closureWhere(const std::vector<std::shared_ptr<const Angl
     const std::size_t gap = (first + step) % count;
     if (!trueGap[gap]) continue;
     const bool continuesRun = trueGap[(gap + count - 1) % count];
+    // Breakpoints are sorted: the arc wraps when it runs on from the last one.
+    const bool wrapsHere = gap + 1 == count;
     if (continuesRun) {
       set.arcs.back().to = breakpoints[(gap + 1) % count];
+      set.arcs.back().wraps = set.arcs.back().wraps || wrapsHere;
     } else {
-      set.arcs.push_back({breakpoints[gap], breakpoints[(gap + 1) % count]});
+      set.arcs.push_back({breakpoints[gap], breakpoints[(gap + 1) % count], wrapsHere});
     }
   }
   std::sort(set.arcs.begin(), set.arcs.end(), [this](const AngleInterval& a, const AngleInterval& b) {

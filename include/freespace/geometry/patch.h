@@ -38,6 +38,8 @@ struct ContactPoints {
   ContactKind kind = ContactKind::VertexFacet;
   int side = 1;
   std::array<Point3, 4> points;
+  /// The points' vertex indices in their meshes.
+  std::array<std::uint32_t, 4> vertices;
 };
 
 ContactPoints contactPoints(const Contact& contact, const Mesh& robot, const MeshTopology& robotTopology,

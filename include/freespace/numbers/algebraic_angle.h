@@ -1,9 +1,12 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
+#include <tuple>
 #include <vector>
 
 #include "freespace/numbers/adaptive_sign.h"
@@ -20,11 +23,17 @@ namespace freespace {
 /// first time they are needed. Use from one thread.
 class AngleFunction {
  public:
+  /// Names a function up to a nonzero constant factor: two functions with the same
+  /// key have the same roots, so their roots are told apart by their index alone
+  /// (a combinatorial identity rule, DESIGN.md section 5). Keys are chosen by the
+  /// caller from input feature indices and are only compared within one AngleAlgebra.
+  using RootKey = std::array<std::uint32_t, 6>;
+
   /// `formula(NumberType<T>{}, chart)` returns the chart's Polynomial<T>, computed
   /// from double inputs; it is written once for every number type.
   template <class Formula>
-  explicit AngleFunction(const Formula& formula)
-      : exactFormula_([formula](int chart) { return formula(NumberType<Rational>{}, chart); }) {
+  explicit AngleFunction(const Formula& formula, std::optional<RootKey> key = std::nullopt)
+      : exactFormula_([formula](int chart) { return formula(NumberType<Rational>{}, chart); }), key_(key) {
     RoundingScope rounding;
     for (int chart = 0; chart < 2; ++chart) approximate_[chart] = formula(NumberType<Interval>{}, chart);
   }
@@ -35,10 +44,12 @@ class AngleFunction {
   /// True when the function vanishes at every angle (decided from the double
   /// interval coefficients when one is certainly not zero, exactly otherwise).
   bool isIdenticallyZero() const;
+  const std::optional<RootKey>& key() const { return key_; }
 
  private:
   std::array<Polynomial<Interval>, 2> approximate_;
   std::function<RationalPolynomial(int)> exactFormula_;
+  std::optional<RootKey> key_;
   mutable std::array<std::optional<RationalPolynomial>, 2> exact_;
   mutable std::array<std::optional<RationalPolynomial>, 2> squareFree_;
 };
@@ -50,10 +61,13 @@ class AngleFunction {
 /// (theta in [-pi/2, pi/2]), chart 1 holds t in (-1, 1) (theta in (pi/2, 3pi/2)).
 class AlgebraicAngle {
  public:
-  /// A root isolated in double intervals by [lower, upper].
-  AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, double lower, double upper);
+  /// A root isolated in double intervals by [lower, upper]; `index` is its place
+  /// among the function's distinct roots in the chart, in increasing t (-1: unknown).
+  AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, double lower, double upper,
+                 int index = -1);
   /// A root isolated exactly.
-  AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, const IsolatingInterval& root);
+  AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, const IsolatingInterval& root,
+                 int index = -1);
   static AlgebraicAngle rational(const HalfAngle& angle);
   /// The rational angle with tangent parameter t (in [-1, 1]) in the chart.
   static AlgebraicAngle rational(int chart, const Rational& t);
@@ -68,6 +82,7 @@ class AlgebraicAngle {
   double lower() const { return lower_; }
   double upper() const { return upper_; }
   bool isRational() const { return !function_; }
+  int index() const { return index_; }
   /// theta in radians, approximately (for output only).
   double radians() const;
 
@@ -81,12 +96,16 @@ class AlgebraicAngle {
   int chart_;
   std::optional<IsolatingInterval> exactRoot_;
   double lower_, upper_;
+  int index_ = -1;
 };
 
 /// An arc of the circle, counterclockwise from `from` to `to` (both included).
+/// `wraps` when it passes through the cut at theta = -pi/2 (`to` precedes `from` in
+/// the order of AngleAlgebra::compare); it is decided once, when the arc is made.
 struct AngleInterval {
   AlgebraicAngle from;
   AlgebraicAngle to;
+  bool wraps = false;
 };
 
 /// A closed set of angles: the whole circle, or disjoint closed arcs in the order of
@@ -141,9 +160,25 @@ class AngleAlgebra {
 
  private:
   std::optional<int> compareInDoubles(AlgebraicAngle& a, AlgebraicAngle& b) const;
+  std::optional<int> compareByKey(const AlgebraicAngle& a, const AlgebraicAngle& b);
+  int compareEscalated(const AlgebraicAngle& a, const AlgebraicAngle& b);
   Sign record(PredicateKind kind, int level, Sign sign);
 
+  /// A root of a function: the function (kept alive, so that its address stays
+  /// unique), the chart and the root's index there.
+  struct RootId {
+    std::shared_ptr<const AngleFunction> function;
+    int chart;
+    int index;
+    bool operator<(const RootId& other) const {
+      return std::tie(function, chart, index) < std::tie(other.function, other.chart, other.index);
+    }
+  };
+
   PredicateStatistics& statistics_;
+  /// Orders of roots that doubles could not separate, decided once: the same pair
+  /// of close roots is met again and again by a construction.
+  std::map<std::pair<RootId, RootId>, int> escalatedOrders_;
 };
 
 }  // namespace freespace

@@ -1,0 +1,215 @@
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <optional>
+
+#include "contact_vectors.h"
+#include "freespace/geometry/patch_curve.h"
+
+namespace freespace {
+
+namespace {
+
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+using BoxPoint = bg::model::point<double, 3, bg::cs::cartesian>;
+using Box = bg::model::box<BoxPoint>;
+using BoxEntry = std::pair<Box, std::uint32_t>;
+
+bool contains(std::initializer_list<std::uint32_t> set, std::uint32_t vertex) {
+  return std::find(set.begin(), set.end(), vertex) != set.end();
+}
+
+/// The EF function an SF function equals up to a constant factor, when the
+/// spiral's vertex and edge lie in the contact's features so that the translation
+/// cancels (DESIGN.md section 5: identities from shared input vertices). With d
+/// placing vertex v on edge e (e(z) its point at v's height):
+///   VF(p, f), robot v on e in f:               n . (R p + d - q0) = (R (p - v)) . n
+///   VF(p, f), environment v in f on h from p:  n . (R (p - h(z))) = lambda (R h) . n
+///   FV(q, g), robot v in g on e from q:        (R m) . (q - e(z)) = lambda (R m) . e
+///   FV(q, g), environment v on h in g:         (R m) . (q - v)
+///   EE(a, b), robot v on b:                    -sigma det(R u, b, R (a0 - v))
+///   EE(a, b), environment v on a:              -sigma det(R u, b, v - b0)
+std::optional<AngleFunction::RootKey> spiralFacetKey(const ContactPoints& line, const SegmentEnd& end) {
+  const auto& [v0, v1, v2, v3] = line.vertices;
+  const std::uint32_t v = end.vertex, e0 = end.edge[0], e1 = end.edge[1];
+  switch (line.kind) {
+    case ContactKind::VertexFacet:
+      if (end.robotVertex && contains({v1, v2, v3}, e0) && contains({v1, v2, v3}, e1)) {
+        return detail::edgeFacetKey(true, v0, v, {v1, v2, v3});
+      }
+      if (!end.robotVertex && contains({v1, v2, v3}, v) && contains({e0, e1}, v0)) {
+        return detail::edgeFacetKey(true, e0, e1, {v1, v2, v3});
+      }
+      return std::nullopt;
+    case ContactKind::FacetVertex:
+      if (end.robotVertex && contains({v1, v2, v3}, v) && contains({e0, e1}, v0)) {
+        return detail::edgeFacetKey(false, e0, e1, {v1, v2, v3});
+      }
+      if (!end.robotVertex && contains({v1, v2, v3}, e0) && contains({v1, v2, v3}, e1)) {
+        return detail::edgeFacetKey(false, v0, v, {v1, v2, v3});
+      }
+      return std::nullopt;
+    case ContactKind::EdgeEdge: break;
+  }
+  if (end.robotVertex && contains({v2, v3}, e0) && contains({v2, v3}, e1)) return detail::edgeFacetKey(false, v2, v3, {v0, v1, v});
+  if (!end.robotVertex && contains({v0, v1}, e0) && contains({v0, v1}, e1)) return detail::edgeFacetKey(true, v0, v1, {v2, v3, v});
+  return std::nullopt;
+}
+
+/// SF: the line of a patch at the spiral end `end` of another patch, as an angle
+/// function (DESIGN.md section 4).
+std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, const SpiralPoints& end,
+                                                  const SegmentEnd& endFeatures) {
+  return std::make_shared<AngleFunction>([line, end](auto type, int chart) {
+    using T = typename decltype(type)::type;
+    return tangentPolynomial(spiralFacetForm(lineOf<T>(line), spiralOf<T>(end)), chart);
+  }, spiralFacetKey(line, endFeatures));
+}
+
+bool shareAnEnd(const PatchSegment& a, const PatchSegment& b) {
+  for (const SegmentEnd& x : a.ends) {
+    for (const SegmentEnd& y : b.ends) {
+      if (x == y) return true;
+    }
+  }
+  return false;
+}
+
+void appendArcEnds(const AngleSet& set, std::vector<AlgebraicAngle>& angles) {
+  for (const AngleInterval& arc : set.arcs) {
+    angles.push_back(arc.from);
+    angles.push_back(arc.to);
+  }
+}
+
+/// A patch's line and end spirals in double intervals and its angle ranges in
+/// radians (from patchBoxes), for the quick rejection.
+struct IntervalPatch {
+  PatchLine<Interval> line;
+  std::array<Spiral<Interval>, 2> ends;
+  std::vector<std::pair<double, double>> angles;
+};
+
+IntervalPatch intervalPatch(const PatchGeometry& patch) {
+  IntervalPatch approximate{lineOf<Interval>(patch.line),
+                            {spiralOf<Interval>(patch.ends[0]), spiralOf<Interval>(patch.ends[1])},
+                            {}};
+  for (const PatchBox& box : patchBoxes(patch)) approximate.angles.emplace_back(box.low[2], box.high[2]);
+  return approximate;
+}
+
+/// Enclosures of cos and sin over the angles [from, to] (radians, from <= to),
+/// padded far beyond the error of the library's cos and sin.
+std::pair<Interval, Interval> cosSinOver(double from, double to) {
+  constexpr double kPadding = 1e-9;
+  double cosLow = std::min(std::cos(from), std::cos(to)), cosHigh = std::max(std::cos(from), std::cos(to));
+  double sinLow = std::min(std::sin(from), std::sin(to)), sinHigh = std::max(std::sin(from), std::sin(to));
+  for (double quarter = std::ceil(from / M_PI_2); quarter * M_PI_2 <= to; quarter += 1) {
+    const int which = static_cast<int>(std::fmod(std::fmod(quarter, 4) + 4, 4));
+    if (which == 0) cosHigh = 1;
+    if (which == 1) sinHigh = 1;
+    if (which == 2) cosLow = -1;
+    if (which == 3) sinLow = -1;
+  }
+  return {Interval(cosLow - kPadding, cosHigh + kPadding), Interval(sinLow - kPadding, sinHigh + kPadding)};
+}
+
+/// The sign of the form over the angles, when certain; else zero.
+int certainSignOver(const TrigLinear<Interval>& form, const Interval& cosine, const Interval& sine) {
+  const std::optional<Sign> sign = certainSign(form.s * sine + form.c * cosine + form.k);
+  return sign ? static_cast<int>(*sign) : 0;
+}
+
+/// False when, at every common angle of the two ranges, both ends of one segment lie
+/// strictly on one side of the other's line: then the segments never cross
+/// (decided in double intervals; true when unsure).
+bool mayCross(const IntervalPatch& a, const IntervalPatch& b) {
+  RoundingScope rounding;
+  const auto oneSide = [](const PatchLine<Interval>& line, const std::array<Spiral<Interval>, 2>& ends,
+                          const Interval& cosine, const Interval& sine) {
+    const int first = certainSignOver(spiralFacetForm(line, ends[0]), cosine, sine);
+    return first != 0 && first == certainSignOver(spiralFacetForm(line, ends[1]), cosine, sine);
+  };
+  for (const auto& [fromA, toA] : a.angles) {
+    for (const auto& [fromB, toB] : b.angles) {
+      const double from = std::max(fromA, fromB), to = std::min(toA, toB);
+      if (from > to) continue;
+      const auto [cosine, sine] = cosSinOver(from, to);
+      if (!oneSide(b.line, a.ends, cosine, sine) && !oneSide(a.line, b.ends, cosine, sine)) return true;
+    }
+  }
+  return false;
+}
+
+Box toBox(const PatchBox& box) {
+  return {BoxPoint(box.low[0], box.low[1], box.low[2]), BoxPoint(box.high[0], box.high[1], box.high[2])};
+}
+
+}  // namespace
+
+AngleSet crossingAngles(const PatchGeometry& a, const PatchGeometry& b, AngleAlgebra& algebra) {
+  if (shareAnEnd(a.segment, b.segment)) {
+    AdaptiveSignEngine(algebra.statistics()).knownIdentity(PredicateKind::SpiralFacet);
+    return {};
+  }
+  // The ends of a on b's line, then the ends of b on a's line.
+  const std::vector<std::shared_ptr<const AngleFunction>> sides{
+      spiralOnLine(b.line, a.ends[0], a.segment.ends[0]), spiralOnLine(b.line, a.ends[1], a.segment.ends[1]),
+      spiralOnLine(a.line, b.ends[0], b.segment.ends[0]), spiralOnLine(a.line, b.ends[1], b.segment.ends[1])};
+  for (const auto& side : sides) {
+    if (side->isIdenticallyZero()) return {};
+  }
+  std::vector<AlgebraicAngle> rangeEnds;
+  appendArcEnds(a.patch.range, rangeEnds);
+  appendArcEnds(b.patch.range, rangeEnds);
+  const auto opposite = [&](const AlgebraicAngle& angle, std::size_t first) {
+    const Sign one = algebra.signAt(*sides[first], angle);
+    return one != Sign::Zero && algebra.signAt(*sides[first + 1], angle) == -one;
+  };
+  return algebra.closureWhere(sides, std::move(rangeEnds), [&](const AlgebraicAngle& angle) {
+    return algebra.contains(a.patch.range, angle) && algebra.contains(b.patch.range, angle) && opposite(angle, 0) &&
+           opposite(angle, 2);
+  }, PredicateKind::SpiralFacet);
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> candidatePatchPairs(const std::vector<PatchGeometry>& patches) {
+  std::vector<BoxEntry> entries;
+  for (std::uint32_t i = 0; i < patches.size(); ++i) {
+    for (const PatchBox& box : patchBoxes(patches[i])) entries.emplace_back(toBox(box), i);
+  }
+  const bgi::rtree<BoxEntry, bgi::rstar<16>> tree(entries.begin(), entries.end());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  std::vector<BoxEntry> found;
+  for (const BoxEntry& entry : entries) {
+    found.clear();
+    tree.query(bgi::intersects(entry.first), std::back_inserter(found));
+    for (const BoxEntry& other : found) {
+      if (entry.second < other.second) pairs.emplace_back(entry.second, other.second);
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
+}
+
+std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra) {
+  std::vector<IntervalPatch> approximate;
+  approximate.reserve(patches.size());
+  {
+    RoundingScope rounding;
+    for (const PatchGeometry& patch : patches) approximate.push_back(intervalPatch(patch));
+  }
+  std::vector<PatchCurve> curves;
+  for (const auto& [first, second] : candidatePatchPairs(patches)) {
+    if (!mayCross(approximate[first], approximate[second])) continue;
+    AngleSet angles = crossingAngles(patches[first], patches[second], algebra);
+    if (!angles.empty()) curves.push_back({first, second, std::move(angles)});
+  }
+  return curves;
+}
+
+}  // namespace freespace

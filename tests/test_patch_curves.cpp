@@ -1,0 +1,90 @@
+// Patch curves against the slice: at rational angles, two active patches' segments
+// (exact rational end points) cross properly exactly when a curve of the pair
+// contains the angle. Every pair of patches is checked, so the candidate pairs from
+// the bounding boxes are checked too.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <map>
+#include <set>
+
+#include "exact_geometry.h"
+#include "freespace/geometry/patch_curve.h"
+#include "random_scene.h"
+
+using namespace freespace;
+using namespace freespace::testing;
+
+namespace {
+
+struct ExactPoint2 {
+  Rational x, y;
+};
+
+Rational orientation(const ExactPoint2& a, const ExactPoint2& b, const ExactPoint2& c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+int signOfRational(const Rational& value) { return value > 0 ? 1 : (value < 0 ? -1 : 0); }
+
+std::array<ExactPoint2, 2> segmentAt(const PatchGeometry& patch, const ExactRotation& r) {
+  std::array<ExactPoint2, 2> ends;
+  for (int e = 0; e < 2; ++e) {
+    const auto point = spiralPoint(spiralOf<Rational>(patch.ends[e]), r.cosine, r.sine);
+    ends[e] = {point[0], point[1]};
+  }
+  return ends;
+}
+
+bool distinctHeights(const Mesh& robot, const Mesh& world) {
+  std::set<double> heights;
+  for (const Mesh* mesh : {&robot, &world}) {
+    for (const Point3& v : mesh->vertices()) {
+      if (!heights.insert(v.z()).second) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+RC_GTEST_PROP(PatchCurves, ContainExactlyTheAnglesWhereTwoSegmentsCross, ()) {
+  const std::unique_ptr<RandomScene> scene = randomTwoObstacleScene();
+  RC_PRE(distinctHeights(scene->robot, scene->world));
+  std::vector<Patch> patches =
+      vertexFacetPatches(scene->robot, scene->robotTopology, scene->world, scene->worldTopology, scene->algebra);
+  const std::vector<Patch> edgePatches =
+      edgeEdgePatches(scene->robot, scene->robotTopology, scene->world, scene->worldTopology, scene->algebra);
+  patches.insert(patches.end(), edgePatches.begin(), edgePatches.end());
+  const std::vector<PatchGeometry> geometries = patchGeometries(patches, scene->robot, scene->robotTopology,
+                                                                scene->world, scene->worldTopology, scene->statistics);
+  std::map<std::pair<std::uint32_t, std::uint32_t>, const PatchCurve*> curveOf;
+  const std::vector<PatchCurve> curves = patchCurves(geometries, scene->algebra);
+  for (const PatchCurve& curve : curves) curveOf[{curve.first, curve.second}] = &curve;
+
+  int crossings = 0;
+  for (int k = 0; k < 16; ++k) {
+    const double theta = -M_PI + (k + 0.37) * (2 * M_PI / 16);
+    const AlgebraicAngle angle = AlgebraicAngle::rational(HalfAngle::fromRadians(theta));
+    const ExactRotation r = rotationAt(theta);
+    std::vector<std::uint32_t> active;
+    for (std::uint32_t i = 0; i < geometries.size(); ++i) {
+      if (scene->algebra.contains(patches[i].range, angle)) active.push_back(i);
+    }
+    for (std::size_t i = 0; i < active.size(); ++i) {
+      const auto a = segmentAt(geometries[active[i]], r);
+      for (std::size_t j = i + 1; j < active.size(); ++j) {
+        const auto b = segmentAt(geometries[active[j]], r);
+        const int a0 = signOfRational(orientation(b[0], b[1], a[0])), a1 = signOfRational(orientation(b[0], b[1], a[1]));
+        const int b0 = signOfRational(orientation(a[0], a[1], b[0])), b1 = signOfRational(orientation(a[0], a[1], b[1]));
+        if (a0 == 0 || a1 == 0 || b0 == 0 || b1 == 0) continue;  // touching: a curve's end, or shared ends
+        const bool cross = a0 == -a1 && b0 == -b1;
+        const auto found = curveOf.find({active[i], active[j]});
+        const bool inCurve = found != curveOf.end() && scene->algebra.contains(found->second->angles, angle);
+        RC_ASSERT(cross == inCurve);
+        crossings += cross;
+      }
+    }
+  }
+  RC_TAG(crossings > 0 ? "crossing segments" : "no crossing");
+}
