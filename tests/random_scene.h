@@ -10,6 +10,9 @@
 #include <optional>
 
 #include "freespace/geometry/mesh_topology.h"
+#include "freespace/geometry/patch.h"
+#include "freespace/geometry/patch_segment.h"
+#include "freespace/input_error.h"
 #include "freespace/numbers/algebraic_angle.h"
 #include "test_meshes.h"
 
@@ -41,6 +44,24 @@ struct RandomScene {
         robotTopology(robot, statistics),
         worldTopology(world, statistics),
         algebra(statistics) {}
+
+  /// The general position the construction needs (requireDistinctHeights).
+  bool hasDistinctHeights() const {
+    try {
+      requireDistinctHeights(robot, world, "random scene");
+      return true;
+    } catch (const InputError&) {
+      return false;
+    }
+  }
+
+  /// Every VF, FV and EE patch.
+  std::vector<Patch> allPatches() {
+    std::vector<Patch> patches = vertexFacetPatches(robot, robotTopology, world, worldTopology, algebra);
+    const std::vector<Patch> edgePatches = edgeEdgePatches(robot, robotTopology, world, worldTopology, algebra);
+    patches.insert(patches.end(), edgePatches.begin(), edgePatches.end());
+    return patches;
+  }
 
   Mesh robot;
   Mesh world;

@@ -6,7 +6,6 @@
 #include <rapidcheck/gtest.h>
 
 #include <map>
-#include <set>
 
 #include "exact_geometry.h"
 #include "freespace/geometry/patch_curve.h"
@@ -36,26 +35,12 @@ std::array<ExactPoint2, 2> segmentAt(const PatchGeometry& patch, const ExactRota
   return ends;
 }
 
-bool distinctHeights(const Mesh& robot, const Mesh& world) {
-  std::set<double> heights;
-  for (const Mesh* mesh : {&robot, &world}) {
-    for (const Point3& v : mesh->vertices()) {
-      if (!heights.insert(v.z()).second) return false;
-    }
-  }
-  return true;
-}
-
 }  // namespace
 
 RC_GTEST_PROP(PatchCurves, ContainExactlyTheAnglesWhereTwoSegmentsCross, ()) {
   const std::unique_ptr<RandomScene> scene = randomTwoObstacleScene();
-  RC_PRE(distinctHeights(scene->robot, scene->world));
-  std::vector<Patch> patches =
-      vertexFacetPatches(scene->robot, scene->robotTopology, scene->world, scene->worldTopology, scene->algebra);
-  const std::vector<Patch> edgePatches =
-      edgeEdgePatches(scene->robot, scene->robotTopology, scene->world, scene->worldTopology, scene->algebra);
-  patches.insert(patches.end(), edgePatches.begin(), edgePatches.end());
+  RC_PRE(scene->hasDistinctHeights());
+  const std::vector<Patch> patches = scene->allPatches();
   const std::vector<PatchGeometry> geometries = patchGeometries(patches, scene->robot, scene->robotTopology,
                                                                 scene->world, scene->worldTopology, scene->statistics);
   std::map<std::pair<std::uint32_t, std::uint32_t>, const PatchCurve*> curveOf;

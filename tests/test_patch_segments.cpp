@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include <set>
 
 #include "exact_geometry.h"
 #include "freespace/geometry/patch_segment.h"
@@ -82,26 +81,12 @@ bool featuresTouch(const Contact& contact, const RandomScene& scene, const Exact
   return false;
 }
 
-bool distinctHeights(const Mesh& robot, const Mesh& world) {
-  std::set<double> heights;
-  for (const Mesh* mesh : {&robot, &world}) {
-    for (const Point3& v : mesh->vertices()) {
-      if (!heights.insert(v.z()).second) return false;
-    }
-  }
-  return true;
-}
-
 }  // namespace
 
 RC_GTEST_PROP(PatchSegments, AreExactlyTheContactsOfTheirFeaturesWithTheFreeSideOnTheLeft, ()) {
   const std::unique_ptr<RandomScene> scene = randomScene();
-  RC_PRE(distinctHeights(scene->robot, scene->world));
-  std::vector<Patch> patches =
-      vertexFacetPatches(scene->robot, scene->robotTopology, scene->world, scene->worldTopology, scene->algebra);
-  const std::vector<Patch> edgePatches =
-      edgeEdgePatches(scene->robot, scene->robotTopology, scene->world, scene->worldTopology, scene->algebra);
-  patches.insert(patches.end(), edgePatches.begin(), edgePatches.end());
+  RC_PRE(scene->hasDistinctHeights());
+  const std::vector<Patch> patches = scene->allPatches();
 
   int checked = 0;
   for (const Patch& patch : patches) {
