@@ -292,6 +292,16 @@ TEST(AlgebraicAngle, PositiveSetsAtTheirExtremes) {
   EXPECT_TRUE(algebra.contains(back, quarterTurn));
   EXPECT_FALSE(algebra.contains(back, at(-M_PI / 2)));  // just past -pi/2, where cos > 0
   EXPECT_FALSE(algebra.contains(back, at(0)));
+  // The open arcs: their ends are exactly excluded, inner angles stay.
+  const auto open = AngleAlgebra::Boundary::Excluded;
+  EXPECT_FALSE(algebra.contains(quadrant, at(0), open));
+  EXPECT_FALSE(algebra.contains(quadrant, quarterTurn, open));
+  EXPECT_TRUE(algebra.contains(quadrant, at(M_PI / 4), open));
+  EXPECT_FALSE(algebra.contains(back, quarterTurn, open));
+  EXPECT_FALSE(algebra.contains(back, minusQuarterTurn, open));
+  EXPECT_TRUE(algebra.contains(back, at(M_PI), open));
+  EXPECT_TRUE(algebra.contains(back, at(-0.51 * M_PI), open));
+  EXPECT_TRUE(algebra.contains(algebra.positiveSet({productOf({{0, 1, 2}})}, PredicateKind::EdgeFacet), at(0), open));
   // A function that vanishes identically is positive nowhere.
   EXPECT_TRUE(algebra.positiveSet({productOf({{0, 1, 2}}), productOf({{0, 0, 0}})}, PredicateKind::EdgeFacet).empty());
   // cos > 0 and -cos > 0 share their boundary points only: empty.

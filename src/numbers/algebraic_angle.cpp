@@ -332,16 +332,17 @@ int AngleAlgebra::compareEscalated(const AlgebraicAngle& first, const AlgebraicA
   return order;
 }
 
-bool AngleAlgebra::contains(const AngleInterval& arc, const AlgebraicAngle& angle) {
-  const bool afterFrom = compare(arc.from, angle) <= 0;
-  const bool beforeTo = compare(angle, arc.to) <= 0;
+bool AngleAlgebra::contains(const AngleInterval& arc, const AlgebraicAngle& angle, Boundary boundary) {
+  const int bound = boundary == Boundary::Included ? 0 : -1;
+  const bool afterFrom = compare(arc.from, angle) <= bound;
+  const bool beforeTo = compare(angle, arc.to) <= bound;
   return arc.wraps ? (afterFrom || beforeTo) : (afterFrom && beforeTo);
 }
 
-bool AngleAlgebra::contains(const AngleSet& set, const AlgebraicAngle& angle) {
+bool AngleAlgebra::contains(const AngleSet& set, const AlgebraicAngle& angle, Boundary boundary) {
   if (set.fullCircle) return true;
   for (const AngleInterval& arc : set.arcs) {
-    if (contains(arc, angle)) return true;
+    if (contains(arc, angle, boundary)) return true;
   }
   return false;
 }

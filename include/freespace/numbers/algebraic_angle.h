@@ -137,10 +137,15 @@ class AngleAlgebra {
   /// i.e. by theta in [-pi/2, 3pi/2).
   int compare(const AlgebraicAngle& a, const AlgebraicAngle& b);
 
+  /// Whether an arc's ends belong to it for `contains`: the closed arc, or the open
+  /// one (its interior; the interior of an AngleSet is the union of its open arcs,
+  /// which are apart).
+  enum class Boundary { Included, Excluded };
+
   /// Whether the arc contains `angle`; an arc whose `to` precedes its `from` wraps
   /// through the cut.
-  bool contains(const AngleInterval& arc, const AlgebraicAngle& angle);
-  bool contains(const AngleSet& set, const AlgebraicAngle& angle);
+  bool contains(const AngleInterval& arc, const AlgebraicAngle& angle, Boundary boundary = Boundary::Included);
+  bool contains(const AngleSet& set, const AlgebraicAngle& angle, Boundary boundary = Boundary::Included);
 
   /// A rational angle strictly inside the open arc from `from` to `to`
   /// (counterclockwise, so through the cut when `to` precedes `from`); the two
