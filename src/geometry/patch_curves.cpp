@@ -6,6 +6,7 @@
 #include <initializer_list>
 #include <optional>
 
+#include "angle_bounds.h"
 #include "contact_vectors.h"
 #include "freespace/geometry/patch_curve.h"
 
@@ -91,7 +92,7 @@ void appendArcEnds(const AngleSet& set, std::vector<AlgebraicAngle>& angles) {
 struct IntervalPatch {
   PatchLine<Interval> line;
   std::array<Spiral<Interval>, 2> ends;
-  std::vector<std::pair<double, double>> angles;
+  std::vector<detail::RadianRange> angles;
 };
 
 IntervalPatch intervalPatch(const PatchGeometry& patch) {
@@ -100,22 +101,6 @@ IntervalPatch intervalPatch(const PatchGeometry& patch) {
                             {}};
   for (const PatchBox& box : patchBoxes(patch)) approximate.angles.emplace_back(box.low[2], box.high[2]);
   return approximate;
-}
-
-/// Enclosures of cos and sin over the angles [from, to] (radians, from <= to),
-/// padded far beyond the error of the library's cos and sin.
-std::pair<Interval, Interval> cosSinOver(double from, double to) {
-  constexpr double kPadding = 1e-9;
-  double cosLow = std::min(std::cos(from), std::cos(to)), cosHigh = std::max(std::cos(from), std::cos(to));
-  double sinLow = std::min(std::sin(from), std::sin(to)), sinHigh = std::max(std::sin(from), std::sin(to));
-  for (double quarter = std::ceil(from / M_PI_2); quarter * M_PI_2 <= to; quarter += 1) {
-    const int which = static_cast<int>(std::fmod(std::fmod(quarter, 4) + 4, 4));
-    if (which == 0) cosHigh = 1;
-    if (which == 1) sinHigh = 1;
-    if (which == 2) cosLow = -1;
-    if (which == 3) sinLow = -1;
-  }
-  return {Interval(cosLow - kPadding, cosHigh + kPadding), Interval(sinLow - kPadding, sinHigh + kPadding)};
 }
 
 /// The sign of the form over the angles, when certain; else zero.
@@ -134,13 +119,9 @@ bool mayCross(const IntervalPatch& a, const IntervalPatch& b) {
     const int first = certainSignOver(spiralFacetForm(line, ends[0]), cosine, sine);
     return first != 0 && first == certainSignOver(spiralFacetForm(line, ends[1]), cosine, sine);
   };
-  for (const auto& [fromA, toA] : a.angles) {
-    for (const auto& [fromB, toB] : b.angles) {
-      const double from = std::max(fromA, fromB), to = std::min(toA, toB);
-      if (from > to) continue;
-      const auto [cosine, sine] = cosSinOver(from, to);
-      if (!oneSide(b.line, a.ends, cosine, sine) && !oneSide(a.line, b.ends, cosine, sine)) return true;
-    }
+  for (const auto& [from, to] : detail::overlap(a.angles, b.angles)) {
+    const auto [cosine, sine] = detail::cosSinOver(from, to);
+    if (!oneSide(b.line, a.ends, cosine, sine) && !oneSide(a.line, b.ends, cosine, sine)) return true;
   }
   return false;
 }

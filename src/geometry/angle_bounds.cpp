@@ -1,0 +1,44 @@
+#include "angle_bounds.h"
+
+#include <algorithm>
+
+#include "freespace/numbers/half_angle.h"
+
+namespace freespace::detail {
+
+namespace {
+
+/// Far above the error of atan on an enclosure's ends.
+constexpr double kAnglePadding = 1e-9;
+
+}  // namespace
+
+std::vector<RadianRange> radianRanges(const AngleSet& set) {
+  if (set.fullCircle) return {{-M_PI, M_PI}};
+  std::vector<RadianRange> ranges;
+  for (const AngleInterval& arc : set.arcs) {
+    const double from = HalfAngle{arc.from.chart(), arc.from.lower()}.radians() - kAnglePadding;
+    const double to = HalfAngle{arc.to.chart(), arc.to.upper()}.radians() + kAnglePadding;
+    if (from <= to) {
+      ranges.emplace_back(std::max(from, -M_PI), std::min(to, M_PI));
+    } else {
+      // Through theta = pi (an arc is less than a full turn).
+      ranges.emplace_back(std::max(from, -M_PI), M_PI);
+      ranges.emplace_back(-M_PI, std::min(to, M_PI));
+    }
+  }
+  return ranges;
+}
+
+std::vector<RadianRange> overlap(const std::vector<RadianRange>& a, const std::vector<RadianRange>& b) {
+  std::vector<RadianRange> common;
+  for (const auto& [fromA, toA] : a) {
+    for (const auto& [fromB, toB] : b) {
+      const double from = std::max(fromA, fromB), to = std::min(toA, toB);
+      if (from <= to) common.emplace_back(from, to);
+    }
+  }
+  return common;
+}
+
+}  // namespace freespace::detail
