@@ -1,7 +1,8 @@
-// The first construction stage on the bundled scenes: perturb the meshes, build their
-// topology, enumerate VF, FV and EE patches. Prints, per scene, the counts, the time
-// of each step, and how the predicates were decided (the share decided in double
-// intervals is the robust layer's target, at least 95%).
+// The first construction stages on the bundled scenes: perturb the meshes, build
+// their topology, enumerate VF, FV and EE patches, their segments, curves and
+// vertices. Prints, per scene, the counts, the time of each step, and how the
+// predicates were decided (the share decided in double intervals is the robust
+// layer's target, at least 95%).
 //
 // Usage: bench_patches [PROBLEM.cfg ...]   (default: every benchmarks/problems/*.cfg)
 #include <chrono>
@@ -11,6 +12,7 @@
 
 #include "freespace/geometry/patch.h"
 #include "freespace/geometry/patch_curve.h"
+#include "freespace/geometry/patch_vertex.h"
 #include "freespace/geometry/perturbed_meshes.h"
 #include "freespace/problem/planar_problem.h"
 
@@ -49,11 +51,15 @@ void measure(const std::string& cfg) {
   start = std::chrono::steady_clock::now();
   const auto curves = patchCurves(geometries, algebra);
   const double curveSeconds = secondsSince(start);
+  start = std::chrono::steady_clock::now();
+  const auto vertices = patchVertices(geometries, curves, algebra);
+  const double vertexSeconds = secondsSince(start);
   std::cout << std::filesystem::path(cfg).stem().string() << ": robot " << meshes.robot.triangles().size()
             << " triangles, world " << meshes.world.triangles().size() << " triangles; " << vertexFacet.size()
             << " VF/FV patches, " << edgeEdge.size() << " EE patches; seconds: perturb " << perturbSeconds
             << ", topology " << topologySeconds << ", VF/FV " << vertexFacetSeconds << ", EE " << edgeEdgeSeconds << ", segments " << segmentSeconds << ", candidate pairs "
-            << pairSeconds << " (" << pairs.size() << "), curves " << curveSeconds << " (" << curves.size() << ")"
+            << pairSeconds << " (" << pairs.size() << "), curves " << curveSeconds << " (" << curves.size() << "), vertices "
+            << vertexSeconds << " (" << vertices.size() << ")"
             << "; decided in double intervals " << std::setprecision(4) << 100 * statistics.doubleIntervalFraction()
             << "%\n"
             << statistics.toText();

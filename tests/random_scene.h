@@ -78,21 +78,39 @@ inline std::unique_ptr<RandomScene> randomScene() {
   return std::make_unique<RandomScene>(std::move(*robot), std::move(*world));
 }
 
-/// A random robot tetrahedron between two random obstacle tetrahedra (one
-/// environment mesh of two components, apart), so that the robot can touch both at
-/// once and patches cross.
+/// Random tetrahedra moved by the given offsets in (x, y), as one mesh of several
+/// components (apart when the offsets are at least 2.1 apart).
+inline Mesh randomTetrahedraAt(const std::vector<std::array<double, 2>>& offsets, double zLow, double zHigh) {
+  std::vector<TriangleSoup> parts;
+  for (const auto& [dx, dy] : offsets) {
+    const std::optional<Mesh> part = randomTetrahedron(zLow, zHigh);
+    RC_PRE(part.has_value());
+    TriangleSoup soup{{}, part->triangles()};
+    for (const Point3& v : part->vertices()) soup.vertices.push_back(v + Point3(dx, dy, 0));
+    parts.push_back(std::move(soup));
+  }
+  return Mesh::fromSoup(joinSoups(parts), "random tetrahedra");
+}
+
+/// A robot of random tetrahedra among random obstacle tetrahedra, at the given
+/// offsets, so that the robot can touch several obstacles at once.
+inline std::unique_ptr<RandomScene> randomSceneAmong(const std::vector<std::array<double, 2>>& robotOffsets,
+                                                     const std::vector<std::array<double, 2>>& worldOffsets) {
+  Mesh robot = randomTetrahedraAt(robotOffsets, 0.1, 1.2);
+  Mesh world = randomTetrahedraAt(worldOffsets, 0.0, 1.0);
+  return std::make_unique<RandomScene>(std::move(robot), std::move(world));
+}
+
+/// A random robot tetrahedron between two random obstacle tetrahedra, so that the
+/// robot can touch both at once and patches cross.
 inline std::unique_ptr<RandomScene> randomTwoObstacleScene() {
-  std::optional<Mesh> robot = randomTetrahedron(0.1, 1.2);
-  std::optional<Mesh> left = randomTetrahedron(0.0, 1.0);
-  std::optional<Mesh> right = randomTetrahedron(0.0, 1.0);
-  RC_PRE(robot.has_value() && left.has_value() && right.has_value());
-  const auto soupOf = [](const Mesh& mesh, double dx) {
-    TriangleSoup soup{{}, mesh.triangles()};
-    for (const Point3& v : mesh.vertices()) soup.vertices.push_back(v + Point3(dx, 0, 0));
-    return soup;
-  };
-  Mesh world = Mesh::fromSoup(joinSoups({soupOf(*left, -1.1), soupOf(*right, 1.1)}), "two obstacles");
-  return std::make_unique<RandomScene>(std::move(*robot), std::move(world));
+  return randomSceneAmong({{0, 0}}, {{-1.1, 0}, {1.1, 0}});
+}
+
+/// A robot of two random tetrahedra among four random obstacle tetrahedra, so that
+/// it can touch three features at once and patch curves meet at vertices.
+inline std::unique_ptr<RandomScene> randomCrowdedScene() {
+  return randomSceneAmong({{0, -1.05}, {0, 1.05}}, {{-2.1, -1.05}, {2.1, -1.05}, {-2.1, 1.05}, {2.1, 1.05}});
 }
 
 }  // namespace freespace::testing
