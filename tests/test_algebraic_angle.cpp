@@ -156,6 +156,9 @@ TEST(AlgebraicAngle, RootsAtChartBoundariesAndAtPi) {
   EXPECT_EQ(algebra.signAt(*productOf({{3, 4, -5 + 1e-9}}), tangent[0]), Sign::Positive);
   EXPECT_THROW(algebra.roots(productOf({{0, 0, 0}}), PredicateKind::EdgeFacet), std::invalid_argument);
   EXPECT_GT(statistics.counts(PredicateKind::SignAtRoot).identities, 0u);
+  // The double root and the vanishing signs left double intervals: their time counts.
+  EXPECT_GT(statistics.counts(PredicateKind::EdgeFacet).escalatedSeconds, 0.0);
+  EXPECT_GT(statistics.counts(PredicateKind::SignAtRoot).escalatedSeconds, 0.0);
 }
 
 TEST(AlgebraicAngle, ArcsWrapThroughTheCut) {

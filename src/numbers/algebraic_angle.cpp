@@ -237,6 +237,7 @@ std::vector<AlgebraicAngle> AngleAlgebra::roots(const std::shared_ptr<const Angl
       continue;
     }
     statistics_.recordDecision(kind, kExactLevel);
+    const EscalationTimer timer(statistics_, kind);
     const RationalPolynomial& exact = function->exact(chart);
     if (isZero(exact)) throw std::invalid_argument("the angle function vanishes identically");
     int index = 0;
@@ -264,6 +265,7 @@ Sign AngleAlgebra::signAt(const AngleFunction& function, const AlgebraicAngle& a
   }
   // Escalation: an exact identity test first (after perturbation, most signs that
   // doubles cannot decide are identities), then the MPFI ladder, then exact.
+  const EscalationTimer timer(statistics_, PredicateKind::SignAtRoot);
   const RationalPolynomial& exact = function.exact(angle.chart());
   if (angle.isRational()) return record(PredicateKind::SignAtRoot, kExactLevel, freespace::signAt(exact, angle.root().lo));
   const RationalPolynomial& squareFree = angle.function()->squareFree(angle.chart());
@@ -315,6 +317,7 @@ int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
 }
 
 int AngleAlgebra::compareEscalated(const AlgebraicAngle& first, const AlgebraicAngle& second) {
+  const EscalationTimer timer(statistics_, PredicateKind::RootOrder);
   const RationalPolynomial f = exactPolynomialOf(first), g = exactPolynomialOf(second);
   const IsolatingInterval rootA = verifiedIsolating(first), rootB = verifiedIsolating(second);
   // Escalation as in signAt: equal roots are an exact identity, found first.

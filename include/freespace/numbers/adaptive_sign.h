@@ -1,6 +1,5 @@
 #pragma once
 
-#include <chrono>
 #include <optional>
 
 #include "freespace/numbers/interval.h"
@@ -34,11 +33,10 @@ class AdaptiveSignEngine {
     if (const std::optional<Sign> sign = doubleIntervalSign(predicate)) {
       return record(kind, static_cast<int>(PrecisionLevel::DoubleInterval), *sign);
     }
-    const auto start = std::chrono::steady_clock::now();
+    const EscalationTimer timer(statistics_, kind);
     int level = static_cast<int>(PrecisionLevel::Exact);
     std::optional<Sign> sign = multiprecisionSign<0>(predicate, level);
     if (!sign) sign = exactSign(Rational(predicate(NumberType<Rational>{})));
-    statistics_.recordEscalatedTime(kind, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     return record(kind, level, *sign);
   }
 

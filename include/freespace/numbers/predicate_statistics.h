@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <chrono>
 #include <cstdint>
 #include <string>
 
@@ -58,6 +59,25 @@ class PredicateStatistics {
  private:
   static std::size_t index(PredicateKind kind) { return static_cast<std::size_t>(kind); }
   std::array<KindCounts, static_cast<std::size_t>(PredicateKind::Count)> counts_{};
+};
+
+/// Adds the time from its construction to its destruction to the escalated time of
+/// a predicate kind: put one in scope where a predicate leaves double intervals.
+class EscalationTimer {
+ public:
+  EscalationTimer(PredicateStatistics& statistics, PredicateKind kind)
+      : statistics_(statistics), kind_(kind), start_(std::chrono::steady_clock::now()) {}
+  ~EscalationTimer() {
+    statistics_.recordEscalatedTime(kind_,
+                                    std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
+  }
+  EscalationTimer(const EscalationTimer&) = delete;
+  EscalationTimer& operator=(const EscalationTimer&) = delete;
+
+ private:
+  PredicateStatistics& statistics_;
+  PredicateKind kind_;
+  std::chrono::steady_clock::time_point start_;
 };
 
 }  // namespace freespace
