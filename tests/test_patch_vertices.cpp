@@ -10,10 +10,9 @@
 #include <map>
 #include <optional>
 
+#include "bundled_scene.h"
 #include "exact_geometry.h"
 #include "freespace/geometry/patch_vertex.h"
-#include "freespace/geometry/perturbed_meshes.h"
-#include "freespace/problem/planar_problem.h"
 #include "random_scene.h"
 
 using namespace freespace;
@@ -207,16 +206,8 @@ RC_GTEST_PROP(PatchVertices, AreExactlyWhereTwoCrossingsOnAPatchSwap, ()) {
 class BundledSceneVertices : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BundledSceneVertices, AreExactlyWhereTwoCrossingsOnAPatchSwap) {
-  const LoadedProblem loaded = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + GetParam());
-  const PerturbedMeshes meshes = perturbMeshes(loaded.robot, loaded.world, PerturbationSettings{});
-  PredicateStatistics statistics;
-  const MeshTopology robotTopology(meshes.robot, statistics), worldTopology(meshes.world, statistics);
-  AngleAlgebra algebra(statistics);
-  std::vector<Patch> patches = vertexFacetPatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
-  const std::vector<Patch> edgePatches = edgeEdgePatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
-  patches.insert(patches.end(), edgePatches.begin(), edgePatches.end());
-  const VertexCheck check = checkVertices(
-      patchGeometries(patches, meshes.robot, robotTopology, meshes.world, worldTopology, statistics), algebra);
+  BundledScene scene(GetParam());
+  const VertexCheck check = checkVertices(scene.geometries, scene.algebra);
   EXPECT_GT(check.vertices, 0);
   EXPECT_GT(check.swaps, 0);
   EXPECT_EQ(check.unsound, 0) << "of " << check.vertices << " vertices";
