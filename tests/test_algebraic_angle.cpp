@@ -351,4 +351,12 @@ RC_GTEST_PROP(AlgebraicAngle, FunctionsWithOneKeyShareTheirRootsByIndex, ()) {
     }
   }
   RC_ASSERT(keyedStatistics.counts(PredicateKind::RootOrder).identities >= first.size());
+  // A keyed function vanishes at the roots of its own key, as the exact test finds.
+  const double escalated = keyedStatistics.counts(PredicateKind::SignAtRoot).escalatedSeconds;
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    RC_ASSERT(keyedAlgebra.signAt(*keyed(negated), first[i]) == Sign::Zero);
+    RC_ASSERT(keyedAlgebra.signAt(*first[i].function(), first[i]) == Sign::Zero);
+    RC_ASSERT(plainAlgebra.signAt(*productOf({negated}), plainFirst[i]) == Sign::Zero);
+  }
+  RC_ASSERT(keyedStatistics.counts(PredicateKind::SignAtRoot).escalatedSeconds == escalated);
 }

@@ -252,6 +252,13 @@ std::vector<AlgebraicAngle> AngleAlgebra::roots(const std::shared_ptr<const Angl
 }
 
 Sign AngleAlgebra::signAt(const AngleFunction& function, const AlgebraicAngle& angle) {
+  // A root of this function, or of one with the same key (the same roots): zero by
+  // construction, a combinatorial identity.
+  const AngleFunction* rootOf = angle.function().get();
+  if (rootOf == &function || (rootOf && function.key() && rootOf->key() == function.key())) {
+    statistics_.recordIdentity(PredicateKind::SignAtRoot);
+    return Sign::Zero;
+  }
   AlgebraicAngle refined = angle;
   const Polynomial<Interval>& p = function.approximate(angle.chart());
   for (int step = 0; step <= kDoubleRefinements; ++step) {
