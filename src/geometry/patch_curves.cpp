@@ -5,6 +5,7 @@
 #include <cmath>
 #include <initializer_list>
 #include <optional>
+#include <stdexcept>
 
 #include "angle_bounds.h"
 #include "contact_vectors.h"
@@ -126,23 +127,31 @@ bool mayCross(const IntervalPatch& a, const IntervalPatch& b) {
   return false;
 }
 
+bool isRangeEnd(const AngleSet& range, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
+  return std::any_of(range.arcs.begin(), range.arcs.end(), [&](const AngleInterval& arc) {
+    return algebra.compare(angle, arc.from) == 0 || algebra.compare(angle, arc.to) == 0;
+  });
+}
+
 Box toBox(const PatchBox& box) {
   return {BoxPoint(box.low[0], box.low[1], box.low[2]), BoxPoint(box.high[0], box.high[1], box.high[2])};
 }
 
 }  // namespace
 
-AngleSet crossingAngles(const PatchGeometry& a, const PatchGeometry& b, AngleAlgebra& algebra) {
+PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t second, const PatchGeometry& b,
+                      AngleAlgebra& algebra) {
+  PatchCurve curve{first, second, {}, {}};
   if (shareAnEnd(a.segment, b.segment)) {
     AdaptiveSignEngine(algebra.statistics()).knownIdentity(PredicateKind::SpiralFacet);
-    return {};
+    return curve;
   }
   // The ends of a on b's line, then the ends of b on a's line.
   const std::vector<std::shared_ptr<const AngleFunction>> sides{
       spiralOnLine(b.line, a.ends[0], a.segment.ends[0]), spiralOnLine(b.line, a.ends[1], a.segment.ends[1]),
       spiralOnLine(a.line, b.ends[0], b.segment.ends[0]), spiralOnLine(a.line, b.ends[1], b.segment.ends[1])};
   for (const auto& side : sides) {
-    if (side->isIdenticallyZero()) return {};
+    if (side->isIdenticallyZero()) return curve;
   }
   std::vector<AlgebraicAngle> rangeEnds;
   appendArcEnds(a.patch.range, rangeEnds);
@@ -151,10 +160,21 @@ AngleSet crossingAngles(const PatchGeometry& a, const PatchGeometry& b, AngleAlg
     const Sign one = algebra.signAt(*sides[first], angle);
     return one != Sign::Zero && algebra.signAt(*sides[first + 1], angle) == -one;
   };
-  return algebra.closureWhere(sides, std::move(rangeEnds), [&](const AlgebraicAngle& angle) {
+  curve.angles = algebra.closureWhere(sides, std::move(rangeEnds), [&](const AlgebraicAngle& angle) {
     return algebra.contains(a.patch.range, angle) && algebra.contains(b.patch.range, angle) && opposite(angle, 0) &&
            opposite(angle, 2);
   }, PredicateKind::SpiralFacet);
+  // Each arc end is where one of the four SF functions vanishes or a range ends:
+  // the property above can change nowhere else.
+  const auto endAt = [&](const AlgebraicAngle& angle) {
+    CurveEnd end;
+    for (int k = 0; k < 4; ++k) end.endOnOtherLine[k / 2][k % 2] = algebra.signAt(*sides[k], angle) == Sign::Zero;
+    end.rangeEnd = {isRangeEnd(a.patch.range, angle, algebra), isRangeEnd(b.patch.range, angle, algebra)};
+    if (!end.any()) throw std::logic_error("patchCurve: an arc of a curve ends without a cause");
+    return end;
+  };
+  for (const AngleInterval& arc : curve.angles.arcs) curve.ends.push_back({endAt(arc.from), endAt(arc.to)});
+  return curve;
 }
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> candidatePatchPairs(const std::vector<PatchGeometry>& patches) {
@@ -187,8 +207,8 @@ std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches, A
   std::vector<PatchCurve> curves;
   for (const auto& [first, second] : candidatePatchPairs(patches)) {
     if (!mayCross(approximate[first], approximate[second])) continue;
-    AngleSet angles = crossingAngles(patches[first], patches[second], algebra);
-    if (!angles.empty()) curves.push_back({first, second, std::move(angles)});
+    PatchCurve curve = patchCurve(first, patches[first], second, patches[second], algebra);
+    if (!curve.angles.empty()) curves.push_back(std::move(curve));
   }
   return curves;
 }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -8,21 +9,44 @@
 
 namespace freespace {
 
+/// Why an arc of a curve ends (DESIGN.md section 6: a curve's ends are SF points or
+/// points on a patch's horizontal boundary); more than one cause only in structural
+/// degeneracy. Patch p is 0 for the curve's first patch, 1 for its second.
+struct CurveEnd {
+  /// endOnOtherLine[p][k]: end k of patch p's segment lies on the other patch's
+  /// line. The crossing point reaches p's spiral side there; on the other patch it is
+  /// the point where p's end spiral pierces it.
+  std::array<std::array<bool, 2>, 2> endOnOtherLine{};
+  /// rangeEnd[p]: the angle ends patch p's range; the crossing point reaches p's
+  /// horizontal edge.
+  std::array<bool, 2> rangeEnd{};
+
+  bool any() const {
+    return endOnOtherLine[0][0] || endOnOtherLine[0][1] || endOnOtherLine[1][0] || endOnOtherLine[1][1] ||
+           rangeEnd[0] || rangeEnd[1];
+  }
+};
+
 /// Where two patches meet (DESIGN.md section 4, FF): the angles at which their
 /// segments cross. At each such angle the crossing is one point moving with theta,
-/// the intersection of the two lines (Cramer's rule); the curve's ends are SF angles
-/// (an end of one segment on the other) or ends of the patches' ranges.
+/// the intersection of the two lines (Cramer's rule).
 struct PatchCurve {
   std::uint32_t first = 0;
   std::uint32_t second = 0;
   AngleSet angles;
+  /// For each arc of `angles`, why it ends at its `from` and at its `to` (nothing
+  /// for a full circle).
+  std::vector<std::array<CurveEnd, 2>> ends;
 };
 
-/// The closure of the set of angles in both ranges where the two segments cross at
-/// a point inside both: each segment's ends lie strictly on opposite sides of the
-/// other's line (four SF functions). Empty when the segments share an end (their
-/// lines then always meet at it) or their lines coincide.
-AngleSet crossingAngles(const PatchGeometry& a, const PatchGeometry& b, AngleAlgebra& algebra);
+/// The curve of patches `first` (geometry a) and `second` (geometry b): the closure
+/// of the set of angles in both ranges where the two segments cross at a point
+/// inside both, i.e. each segment's ends lie strictly on opposite sides of the
+/// other's line (four SF functions), with the causes of its arcs' ends. Empty when
+/// the segments share an end (their lines then always meet at it) or their lines
+/// coincide. Throws std::logic_error if an arc end has no cause (a bug).
+PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t second, const PatchGeometry& b,
+                      AngleAlgebra& algebra);
 
 /// The pairs (i < j) of patches whose boxes (patchBoxes) overlap, each once: a
 /// superset of the pairs that cross.
