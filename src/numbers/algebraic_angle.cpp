@@ -297,8 +297,9 @@ std::optional<int> AngleAlgebra::compareInDoubles(AlgebraicAngle& a, AlgebraicAn
 
 std::optional<int> AngleAlgebra::compareByKey(const AlgebraicAngle& a, const AlgebraicAngle& b) {
   if (a.isRational() || b.isRational() || a.chart() != b.chart() || a.index() < 0 || b.index() < 0) return std::nullopt;
+  // Roots of one function, or of two with one key, have the same roots.
   const auto& keyA = a.function()->key();
-  if (!keyA || keyA != b.function()->key()) return std::nullopt;
+  if (a.function() != b.function() && (!keyA || keyA != b.function()->key())) return std::nullopt;
   // Same roots in the chart, isolated in increasing order: the indices decide.
   if (a.index() == b.index()) statistics_.recordIdentity(PredicateKind::RootOrder);
   return a.index() < b.index() ? -1 : (a.index() > b.index() ? 1 : 0);
