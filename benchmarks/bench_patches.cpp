@@ -52,13 +52,17 @@ void measure(const std::string& cfg) {
   const auto curves = patchCurves(geometries, algebra);
   const double curveSeconds = secondsSince(start);
   start = std::chrono::steady_clock::now();
-  const auto vertices = patchVertices(geometries, curves, algebra);
+  const auto overlaps = patchOverlaps(geometries, algebra);
+  const double overlapSeconds = secondsSince(start);
+  start = std::chrono::steady_clock::now();
+  const auto vertices = patchVertices(geometries, curves, overlaps, algebra);
   const double vertexSeconds = secondsSince(start);
   std::cout << std::filesystem::path(cfg).stem().string() << ": robot " << meshes.robot.triangles().size()
             << " triangles, world " << meshes.world.triangles().size() << " triangles; " << vertexFacet.size()
             << " VF/FV patches, " << edgeEdge.size() << " EE patches; seconds: perturb " << perturbSeconds
             << ", topology " << topologySeconds << ", VF/FV " << vertexFacetSeconds << ", EE " << edgeEdgeSeconds << ", segments " << segmentSeconds << ", candidate pairs "
-            << pairSeconds << " (" << pairs.size() << "), curves " << curveSeconds << " (" << curves.size() << "), vertices "
+            << pairSeconds << " (" << pairs.size() << "), curves " << curveSeconds << " (" << curves.size() << "), overlaps " << overlapSeconds << " (" << overlaps.size()
+            << "), vertices "
             << vertexSeconds << " (" << vertices.size() << ")"
             << "; decided in double intervals " << std::setprecision(4) << 100 * statistics.doubleIntervalFraction()
             << "%\n"

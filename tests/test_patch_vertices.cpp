@@ -20,7 +20,20 @@ using namespace freespace::testing;
 
 namespace {
 
+/// Three patches (f, g, h) where f is the one whose crossings with g and h are
+/// compared: a vertex's patches in increasing order, or for two parallel patches
+/// with the crossing one first.
 using Triple = std::array<std::uint32_t, 3>;
+
+Triple orderedTriple(const PatchVertex& vertex) {
+  if (vertex.crossing < 0) return vertex.patches;
+  Triple triple{vertex.patches[vertex.crossing], 0, 0};
+  int next = 1;
+  for (int i = 0; i < 3; ++i) {
+    if (i != vertex.crossing) triple[next++] = vertex.patches[i];
+  }
+  return triple;
+}
 
 int signOfRational(const Rational& value) { return value > 0 ? 1 : (value < 0 ? -1 : 0); }
 
@@ -83,6 +96,7 @@ struct VertexCheck {
   int vertices = 0;
   int unsound = 0;
   int gaps = 0;
+  int parallelGaps = 0;  // gaps of triples with two parallel patches
   int missed = 0;
   int swaps = 0;
 };
@@ -105,76 +119,106 @@ const AlgebraicAngle* nearest(AngleAlgebra& algebra, const AlgebraicAngle& angle
   return best;
 }
 
+ExactRotation rotationOf(const AlgebraicAngle& angle) {
+  const Rational t = angle.root().lo, w = 1 + t * t, chartSign(angle.chart() == 0 ? 1 : -1);
+  return {chartSign * (1 - t * t) / w, chartSign * 2 * t / w};
+}
+
 /// The order of f's crossings with g and h at a rational angle.
 std::optional<int> crossingOrderAt(const std::vector<PatchGeometry>& patches, const Triple& triple,
                                    const AlgebraicAngle& angle) {
-  const IsolatingInterval t = angle.root();
-  const Rational w = 1 + t.lo * t.lo;
-  const Rational sign(angle.chart() == 0 ? 1 : -1);
-  return crossingOrder(patches, triple, {sign * (1 - t.lo * t.lo) / w, sign * 2 * t.lo / w});
+  return crossingOrder(patches, triple, rotationOf(angle));
 }
 
 /// Soundness: at rational angles between each vertex and the nearest event on either
 /// side (an end of the arcs of f's curves with g and h, or another vertex of the
-/// three), f crosses g and h, in swapped order.
+/// three), f crosses g and h, in swapped order (f: see Triple).
 void checkEachVertexSwaps(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
                           const std::vector<PatchVertex>& vertices, AngleAlgebra& algebra, VertexCheck& check) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, const PatchCurve*> curveOf;
   for (const PatchCurve& curve : curves) curveOf[{curve.first, curve.second}] = &curve;
+  const auto curveOfPair = [&](std::uint32_t a, std::uint32_t b) { return curveOf[{std::min(a, b), std::max(a, b)}]; };
   for (const PatchVertex& vertex : vertices) {
-    const auto& [f, g, h] = vertex.patches;
+    const Triple triple = orderedTriple(vertex);
+    const auto& [f, g, h] = triple;
     check.vertices++;
-    if (!(f < g && g < h && curveOf.count({f, g}) && curveOf.count({f, h}))) {
+    const bool sorted = vertex.patches[0] < vertex.patches[1] && vertex.patches[1] < vertex.patches[2];
+    if (!(sorted && curveOfPair(f, g) && curveOfPair(f, h))) {
       check.unsound++;
       continue;
     }
     std::vector<const AlgebraicAngle*> events;
-    for (const PatchCurve* curve : {curveOf[{f, g}], curveOf[{f, h}]}) {
+    for (const PatchCurve* curve : {curveOfPair(f, g), curveOfPair(f, h)}) {
       for (const AngleInterval& arc : curve->angles.arcs) events.insert(events.end(), {&arc.from, &arc.to});
     }
     for (const PatchVertex& other : vertices) {
-      if (&other != &vertex && other.patches == vertex.patches) events.push_back(&other.angle);
+      if (&other != &vertex && orderedTriple(other) == triple) events.push_back(&other.angle);
     }
     if (events.empty()) continue;  // two full circles and one vertex: nothing to compare with
     const AlgebraicAngle before = algebra.rationalBetween(*nearest(algebra, vertex.angle, events, true), vertex.angle);
     const AlgebraicAngle after = algebra.rationalBetween(vertex.angle, *nearest(algebra, vertex.angle, events, false));
-    const auto orderBefore = crossingOrderAt(patches, vertex.patches, before);
-    const auto orderAfter = crossingOrderAt(patches, vertex.patches, after);
+    const auto orderBefore = crossingOrderAt(patches, triple, before);
+    const auto orderAfter = crossingOrderAt(patches, triple, after);
     check.unsound += !(orderBefore && orderAfter && *orderBefore == -*orderAfter);
   }
 }
 
-/// Completeness: for every three patches with three curves, between consecutive
-/// sample angles where f's curves with g and h both run on, the crossings swap
-/// exactly when an odd number of the triple's vertices lie between the samples.
+/// Whether the two patches' lines are parallel at the rational angle (exactly).
+bool parallelAt(const PatchGeometry& a, const PatchGeometry& b, const AlgebraicAngle& angle) {
+  const ExactRotation r = rotationOf(angle);
+  const ExactSlice x = sliceOf(a, r), y = sliceOf(b, r);
+  return x.nx * y.ny - x.ny * y.nx == 0;
+}
+
+/// Completeness: for every three patches f, g, h where f has curves with g and h and
+/// either g and h have a curve too (f the smallest) or their lines are parallel,
+/// between consecutive sample angles where f's curves with g and h both run on, the
+/// crossings swap exactly when an odd number of the triple's vertices lie between
+/// the samples.
 void checkSwapsBetweenSamples(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
                               const std::vector<PatchVertex>& vertices, AngleAlgebra& algebra, VertexCheck& check) {
   std::map<std::pair<std::uint32_t, std::uint32_t>, const PatchCurve*> curveOf;
-  for (const PatchCurve& curve : curves) curveOf[{curve.first, curve.second}] = &curve;
+  std::map<std::uint32_t, std::vector<std::uint32_t>> partners;
+  for (const PatchCurve& curve : curves) {
+    curveOf[{curve.first, curve.second}] = &curve;
+    partners[curve.first].push_back(curve.second);
+    partners[curve.second].push_back(curve.first);
+  }
+  const auto curveOfPair = [&](std::uint32_t a, std::uint32_t b) -> const PatchCurve* {
+    const auto found = curveOf.find({std::min(a, b), std::max(a, b)});
+    return found == curveOf.end() ? nullptr : found->second;
+  };
   std::map<Triple, std::vector<const PatchVertex*>> verticesOf;
-  for (const PatchVertex& vertex : vertices) verticesOf[vertex.patches].push_back(&vertex);
+  for (const PatchVertex& vertex : vertices) verticesOf[orderedTriple(vertex)].push_back(&vertex);
   constexpr int kSamples = 48;
   std::vector<AlgebraicAngle> samples;  // increasing in the cut order, from theta = -pi/2
   for (int k = 0; k < kSamples; ++k) {
     samples.push_back(AlgebraicAngle::rational(HalfAngle::fromRadians(-M_PI / 2 + (k + 0.37) * (2 * M_PI / kSamples))));
   }
-  for (const auto& [pair, fg] : curveOf) {
-    for (auto other = curveOf.upper_bound(pair); other != curveOf.end() && other->first.first == pair.first; ++other) {
-      if (!curveOf.count({pair.second, other->first.second})) continue;
-      const PatchCurve* fh = other->second;
-      const Triple triple{pair.first, pair.second, other->first.second};
-      for (int k = 0; k + 1 < kSamples; ++k) {
-        const AlgebraicAngle &a = samples[k], &b = samples[k + 1];
-        if (!coversGap(algebra, fg->angles, a, b) || !coversGap(algebra, fh->angles, a, b)) continue;
-        const auto orderA = crossingOrderAt(patches, triple, a);
-        const auto orderB = crossingOrderAt(patches, triple, b);
-        int between = 0;
-        for (const PatchVertex* vertex : verticesOf[triple]) {
-          between += algebra.compare(a, vertex->angle) < 0 && algebra.compare(vertex->angle, b) < 0;
+  for (auto& [f, around] : partners) {
+    std::sort(around.begin(), around.end());
+    for (std::size_t i = 0; i < around.size(); ++i) {
+      for (std::size_t j = i + 1; j < around.size(); ++j) {
+        const std::uint32_t g = around[i], h = around[j];
+        const bool threeCurves = curveOfPair(g, h) != nullptr;
+        if (threeCurves && f > g) continue;
+        const Triple triple{f, g, h};
+        const PatchCurve *fg = curveOfPair(f, g), *fh = curveOfPair(f, h);
+        for (int k = 0; k + 1 < kSamples; ++k) {
+          const AlgebraicAngle &a = samples[k], &b = samples[k + 1];
+          if (!coversGap(algebra, fg->angles, a, b) || !coversGap(algebra, fh->angles, a, b)) continue;
+          if (!threeCurves && !(parallelAt(patches[g], patches[h], a) && parallelAt(patches[g], patches[h], b))) continue;
+          const auto orderA = crossingOrderAt(patches, triple, a);
+          const auto orderB = crossingOrderAt(patches, triple, b);
+          int between = 0;
+          for (const PatchVertex* vertex : verticesOf[triple]) {
+            between += algebra.compare(a, vertex->angle) < 0 && algebra.compare(vertex->angle, b) < 0;
+          }
+          check.gaps++;
+          check.parallelGaps += !threeCurves;
+          check.missed += !(orderA && orderB && (*orderA != *orderB) == (between % 2 == 1));
+          check.swaps += between;
         }
-        check.gaps++;
-        check.missed += !(orderA && orderB && (*orderA != *orderB) == (between % 2 == 1));
-        check.swaps += between;
       }
     }
   }
@@ -182,7 +226,8 @@ void checkSwapsBetweenSamples(const std::vector<PatchGeometry>& patches, const s
 
 VertexCheck checkVertices(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra) {
   const std::vector<PatchCurve> curves = patchCurves(patches, algebra);
-  const std::vector<PatchVertex> vertices = patchVertices(patches, curves, algebra);
+  const std::vector<PatchOverlap> overlaps = patchOverlaps(patches, algebra);
+  const std::vector<PatchVertex> vertices = patchVertices(patches, curves, overlaps, algebra);
   VertexCheck check;
   checkEachVertexSwaps(patches, curves, vertices, algebra, check);
   checkSwapsBetweenSamples(patches, curves, vertices, algebra, check);
@@ -211,7 +256,58 @@ TEST_P(BundledSceneVertices, AreExactlyWhereTwoCrossingsOnAPatchSwap) {
   EXPECT_GT(check.vertices, 0);
   EXPECT_GT(check.swaps, 0);
   EXPECT_EQ(check.unsound, 0) << "of " << check.vertices << " vertices";
-  EXPECT_EQ(check.missed, 0) << "of " << check.gaps << " gaps";
+  EXPECT_EQ(check.missed, 0) << "of " << check.gaps << " gaps, " << check.parallelGaps << " of parallel patches";
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledSceneVertices, ::testing::Values("cage.cfg", "keyhole.cfg", "turn_around.cfg"));
+
+namespace {
+
+/// Overlaps against the slice: just beside each overlap's angle (an end of its
+/// isolating interval, narrowed) the two lines are parallel, and the ends of one
+/// segment lie along the other's direction as the overlap's flags say. Returns how
+/// many overlaps disagree.
+int wrongOverlaps(const std::vector<PatchGeometry>& patches, const std::vector<PatchOverlap>& overlaps) {
+  int wrong = 0;
+  for (const PatchOverlap& overlap : overlaps) {
+    AlgebraicAngle narrow = overlap.angle;
+    while (narrow.upper() - narrow.lower() > 1e-12 && narrow.refineInDoubles()) {
+    }
+    const ExactRotation r = rotationOf(AlgebraicAngle::rational(narrow.chart(), narrow.lower()));
+    bool right = overlap.patches[0] < overlap.patches[1];
+    for (int p = 0; p < 2; ++p) {
+      const ExactSlice fixed = sliceOf(patches[overlap.patches[p]], r), moving = sliceOf(patches[overlap.patches[1 - p]], r);
+      right = right && fixed.nx * moving.ny - fixed.ny * moving.nx == 0;
+      const Rational dx = fixed.to[0] - fixed.from[0], dy = fixed.to[1] - fixed.from[1];
+      const auto along = [&](const std::array<Rational, 2>& point, const std::array<Rational, 2>& from) {
+        return (point[0] - from[0]) * dx + (point[1] - from[1]) * dy;
+      };
+      const bool beforeStart = along(moving.from, fixed.from) < 0 || along(moving.to, fixed.from) < 0;
+      const bool afterEnd = along(moving.from, fixed.to) > 0 || along(moving.to, fixed.to) > 0;
+      right = right && beforeStart == overlap.reachesEnd[p][0] && afterEnd == overlap.reachesEnd[p][1];
+    }
+    wrong += !right;
+  }
+  return wrong;
+}
+
+}  // namespace
+
+RC_GTEST_PROP(PatchOverlaps, ReachTheEndsTheOtherSegmentRunsBeyond, ()) {
+  const std::unique_ptr<RandomScene> scene = randomCrowdedScene();
+  RC_PRE(scene->hasDistinctHeights());
+  const std::vector<PatchGeometry> patches = patchGeometries(scene->allPatches(), scene->robot, scene->robotTopology,
+                                                             scene->world, scene->worldTopology, scene->statistics);
+  const std::vector<PatchOverlap> overlaps = patchOverlaps(patches, scene->algebra);
+  RC_ASSERT(wrongOverlaps(patches, overlaps) == 0);
+  RC_TAG(overlaps.empty() ? "no overlap" : "overlaps");
+}
+
+TEST(PatchOverlaps, BundledScenesReachTheEndsTheOtherSegmentRunsBeyond) {
+  for (const char* name : {"cage.cfg", "turn_around.cfg", "table.cfg"}) {
+    BundledScene scene(name);
+    const std::vector<PatchOverlap> overlaps = patchOverlaps(scene.geometries, scene.algebra);
+    EXPECT_GT(overlaps.size(), 0u) << name;
+    EXPECT_EQ(wrongOverlaps(scene.geometries, overlaps), 0) << name << ", of " << overlaps.size();
+  }
+}

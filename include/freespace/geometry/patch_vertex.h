@@ -11,27 +11,62 @@ namespace freespace {
 
 /// Where three patches meet (DESIGN.md section 4, FFF): an angle at which the three
 /// patch lines are concurrent at a point inside the three segments. The point is
-/// where two curves of one patch cross in that patch's domain, and it lies on the
-/// third curve of the three patches.
+/// where two curves of one patch cross in that patch's domain. Usually it lies on
+/// the third curve, of the other two patches. But two contacts with one facet (of
+/// two vertices of the other body) have parallel lines at every angle, and no
+/// curve: they pass through each other at the angles where their lines coincide,
+/// meeting along a horizontal segment, and the vertex is where a third patch
+/// crosses them there.
 struct PatchVertex {
   /// The three patches, in increasing order.
   std::array<std::uint32_t, 3> patches{};
   AlgebraicAngle angle;
+  /// For two parallel patches and one crossing them: the place of the crossing one
+  /// in `patches`; otherwise -1.
+  int crossing = -1;
 };
+
+/// Whether the two patches' lines have the same normal n = R a1 + a2 at every angle:
+/// two contacts with one facet, of two vertices of the other body. Their lines are
+/// then parallel, and they coincide where their constant terms w agree.
+bool haveParallelLines(const PatchGeometry& a, const PatchGeometry& b);
+
+/// Two patches with parallel lines passing through each other: at an angle inside
+/// both ranges where their lines coincide and their segments overlap, they meet
+/// along a horizontal segment, an edge of the arrangement that is not a curve.
+struct PatchOverlap {
+  /// The two patches, in increasing order.
+  std::array<std::uint32_t, 2> patches{};
+  AlgebraicAngle angle;
+  /// reachesEnd[p][k]: the overlap reaches end k of patch p's segment (the other
+  /// segment runs on beyond it).
+  std::array<std::array<bool, 2>, 2> reachesEnd{};
+};
+
+/// Every overlap: for each pair of patches with parallel lines, the roots of
+/// w_a - w_b (an EF function: for contacts of vertices x, y with one facet of
+/// normal n it is (R (x - y)) . n up to sign) inside both open ranges where the
+/// segments overlap, decided from the signs there of (e - f) . (f1 - f0) for ends
+/// e of one segment and f, f0, f1 of the other. Sorted by patches, then by angle.
+std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra);
 
 /// The FFF polynomial of three patch lines as an angle function: the determinant
 /// det[n_i, w_i] of the lines (threePatchPolynomial), zero where they are concurrent.
 std::shared_ptr<const AngleFunction> threePatchFunction(const ContactPoints& a, const ContactPoints& b,
                                                         const ContactPoints& c);
 
-/// Every vertex: for three patches that pairwise have curves, the roots of their FFF
-/// polynomial inside the three curves' open angle sets (a root at a curve's end is
-/// where that curve ends, not a vertex of this kind). Inside a curve's angle set the
-/// two segments cross at one point inside both, so at such a root the three
-/// crossings are one point inside the three segments. Triples whose FFF determinant
-/// has a certain sign in double intervals over the curves' common angles are
-/// rejected before any root is isolated. Sorted by patches, then by angle.
+/// Every vertex. For three patches that pairwise have curves: the roots of their
+/// FFF polynomial inside the open angle sets of the curves of one patch with the
+/// other two (a root at a curve's end is where that curve ends, not a vertex of
+/// this kind). Inside a curve's angle set the two segments cross at one point
+/// inside both, so at such a root the three crossings are one point inside the three
+/// segments. Triples whose FFF determinant has a certain sign in double intervals
+/// over the curves' common angles are rejected before any root is isolated. For an
+/// overlap of two parallel patches and a third with curves with both: the overlap's
+/// angle, when it is inside both curves' open angle sets. Sorted by patches, then by
+/// angle.
 std::vector<PatchVertex> patchVertices(const std::vector<PatchGeometry>& patches,
-                                       const std::vector<PatchCurve>& curves, AngleAlgebra& algebra);
+                                       const std::vector<PatchCurve>& curves,
+                                       const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra);
 
 }  // namespace freespace
