@@ -259,7 +259,8 @@ TEST_P(BundledSceneVertices, AreExactlyWhereTwoCrossingsOnAPatchSwap) {
   EXPECT_EQ(check.missed, 0) << "of " << check.gaps << " gaps, " << check.parallelGaps << " of parallel patches";
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, BundledSceneVertices, ::testing::Values("cage.cfg", "keyhole.cfg", "turn_around.cfg"));
+INSTANTIATE_TEST_SUITE_P(Scenes, BundledSceneVertices,
+                         ::testing::Values("cage.cfg", "keyhole.cfg", "overhang.cfg", "table.cfg", "turn_around.cfg"));
 
 namespace {
 
