@@ -11,6 +11,7 @@
 
 #include "freespace/geometry/mesh_topology.h"
 #include "freespace/geometry/patch.h"
+#include "freespace/geometry/patch_geometry.h"
 #include "freespace/geometry/patch_segment.h"
 #include "freespace/input_error.h"
 #include "freespace/numbers/algebraic_angle.h"
@@ -61,6 +62,11 @@ struct RandomScene {
     const std::vector<Patch> edgePatches = edgeEdgePatches(robot, robotTopology, world, worldTopology, algebra);
     patches.insert(patches.end(), edgePatches.begin(), edgePatches.end());
     return patches;
+  }
+
+  /// Every patch with its segment and input points.
+  std::vector<PatchGeometry> allPatchGeometries() {
+    return patchGeometries(allPatches(), robot, robotTopology, world, worldTopology, statistics);
   }
 
   Mesh robot;

@@ -239,8 +239,7 @@ VertexCheck checkVertices(const std::vector<PatchGeometry>& patches, AngleAlgebr
 RC_GTEST_PROP(PatchVertices, AreExactlyWhereTwoCrossingsOnAPatchSwap, ()) {
   const std::unique_ptr<RandomScene> scene = randomCrowdedScene();
   RC_PRE(scene->hasDistinctHeights());
-  const std::vector<PatchGeometry> patches = patchGeometries(scene->allPatches(), scene->robot, scene->robotTopology,
-                                                             scene->world, scene->worldTopology, scene->statistics);
+  const std::vector<PatchGeometry> patches = scene->allPatchGeometries();
   const VertexCheck check = checkVertices(patches, scene->algebra);
   RC_ASSERT(check.unsound == 0);
   RC_ASSERT(check.missed == 0);
@@ -297,8 +296,7 @@ int wrongOverlaps(const std::vector<PatchGeometry>& patches, const std::vector<P
 RC_GTEST_PROP(PatchOverlaps, ReachTheEndsTheOtherSegmentRunsBeyond, ()) {
   const std::unique_ptr<RandomScene> scene = randomCrowdedScene();
   RC_PRE(scene->hasDistinctHeights());
-  const std::vector<PatchGeometry> patches = patchGeometries(scene->allPatches(), scene->robot, scene->robotTopology,
-                                                             scene->world, scene->worldTopology, scene->statistics);
+  const std::vector<PatchGeometry> patches = scene->allPatchGeometries();
   const std::vector<PatchOverlap> overlaps = patchOverlaps(patches, scene->algebra);
   RC_ASSERT(wrongOverlaps(patches, overlaps) == 0);
   RC_TAG(overlaps.empty() ? "no overlap" : "overlaps");

@@ -137,8 +137,7 @@ BoundaryCheck checkSliceBoundary(const Mesh& robot, const Mesh& world, const std
 RC_GTEST_PROP(SliceBoundary, LiesOnThePatchSegments, ()) {
   const std::unique_ptr<RandomScene> scene = randomCrowdedScene();
   RC_PRE(scene->hasDistinctHeights());
-  const std::vector<PatchGeometry> patches = patchGeometries(scene->allPatches(), scene->robot, scene->robotTopology,
-                                                             scene->world, scene->worldTopology, scene->statistics);
+  const std::vector<PatchGeometry> patches = scene->allPatchGeometries();
   const BoundaryCheck check = checkSliceBoundary(scene->robot, scene->world, patches, scene->algebra, 4, 200);
   RC_ASSERT(check.unexplained == 0);
   RC_ASSERT(check.notColliding == 0);
