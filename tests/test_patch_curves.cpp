@@ -73,3 +73,62 @@ RC_GTEST_PROP(PatchCurves, ContainExactlyTheAnglesWhereTwoSegmentsCross, ()) {
   }
   RC_TAG(crossings > 0 ? "crossing segments" : "no crossing");
 }
+
+namespace {
+
+/// The exact polynomial, in the chart, of (R a) . b = cos (a . b)_xy + sin (a x b)_xy
+/// + a_z b_z, straight from the definition.
+RationalPolynomial rotatedDotPolynomial(const Exact3& a, const Exact3& b, int chart) {
+  return tangentPolynomial(TrigLinear<Rational>{a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y, a.z * b.z}, chart);
+}
+
+bool proportional(const RationalPolynomial& p, const RationalPolynomial& q) {
+  const auto &a = p.coefficients(), &b = q.coefficients();
+  const std::size_t size = std::max(a.size(), b.size());
+  const auto at = [](const std::vector<Rational>& c, std::size_t i) { return i < c.size() ? c[i] : Rational(0); };
+  bool anyNonzero = false;
+  for (std::size_t i = 0; i < size; ++i) {
+    anyNonzero = anyNonzero || at(a, i) != 0;
+    for (std::size_t j = 0; j < size; ++j) {
+      if (at(a, i) * at(b, j) != at(a, j) * at(b, i)) return false;
+    }
+  }
+  return anyNonzero;
+}
+
+/// The EF function a key names (edgeFacetKey): (R (x - y)) . n for robot vertices x,
+/// y and the normal n of an environment plane, or (R m) . (x - y) for environment
+/// vertices and a robot plane.
+RationalPolynomial keyedPolynomial(const AngleFunction::RootKey& key, const Mesh& robot, const Mesh& world, int chart) {
+  const bool robotPair = key[0] == 0;
+  const Mesh& pairMesh = robotPair ? robot : world;
+  const Mesh& planeMesh = robotPair ? world : robot;
+  const Exact3 difference = minus(exactPoint(pairMesh.vertices()[key[1]]), exactPoint(pairMesh.vertices()[key[2]]));
+  const Exact3 p0 = exactPoint(planeMesh.vertices()[key[3]]);
+  const Exact3 normal = cross(minus(exactPoint(planeMesh.vertices()[key[4]]), p0),
+                              minus(exactPoint(planeMesh.vertices()[key[5]]), p0));
+  return robotPair ? rotatedDotPolynomial(difference, normal, chart) : rotatedDotPolynomial(normal, difference, chart);
+}
+
+}  // namespace
+
+RC_GTEST_PROP(PatchCurves, KeyedSpiralFacetFunctionsAreTheirKeysEdgeFacetFunctions, ()) {
+  const std::unique_ptr<RandomScene> scene = randomTwoObstacleScene();
+  RC_PRE(scene->hasDistinctHeights());
+  const std::vector<PatchGeometry> patches = scene->allPatchGeometries();
+  int keyed = 0;
+  for (const PatchGeometry& line : patches) {
+    for (const PatchGeometry& other : patches) {
+      for (int k = 0; k < 2; ++k) {
+        const auto function = spiralOnLine(line.line, other.ends[k], other.segment.ends[k]);
+        // Identically zero (a patch's line at its own end): never compared.
+        if (!function->key() || function->isIdenticallyZero()) continue;
+        keyed++;
+        for (int chart = 0; chart < 2; ++chart) {
+          RC_ASSERT(proportional(function->exact(chart), keyedPolynomial(*function->key(), scene->robot, scene->world, chart)));
+        }
+      }
+    }
+  }
+  RC_TAG(keyed > 0 ? "keyed functions" : "no keyed function");
+}

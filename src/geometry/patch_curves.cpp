@@ -62,16 +62,6 @@ std::optional<AngleFunction::RootKey> spiralFacetKey(const ContactPoints& line, 
   return std::nullopt;
 }
 
-/// SF: the line of a patch at the spiral end `end` of another patch, as an angle
-/// function (DESIGN.md section 4).
-std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, const SpiralPoints& end,
-                                                  const SegmentEnd& endFeatures) {
-  return std::make_shared<AngleFunction>([line, end](auto type, int chart) {
-    using T = typename decltype(type)::type;
-    return tangentPolynomial(spiralFacetForm(lineOf<T>(line), spiralOf<T>(end)), chart);
-  }, spiralFacetKey(line, endFeatures));
-}
-
 bool shareAnEnd(const PatchSegment& a, const PatchSegment& b) {
   for (const SegmentEnd& x : a.ends) {
     for (const SegmentEnd& y : b.ends) {
@@ -138,6 +128,14 @@ Box toBox(const PatchBox& box) {
 }
 
 }  // namespace
+
+std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, const SpiralPoints& end,
+                                                  const SegmentEnd& endFeatures) {
+  return std::make_shared<AngleFunction>([line, end](auto type, int chart) {
+    using T = typename decltype(type)::type;
+    return tangentPolynomial(spiralFacetForm(lineOf<T>(line), spiralOf<T>(end)), chart);
+  }, spiralFacetKey(line, endFeatures));
+}
 
 PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t second, const PatchGeometry& b,
                       AngleAlgebra& algebra) {

@@ -39,6 +39,14 @@ struct PatchCurve {
   std::vector<std::array<CurveEnd, 2>> ends;
 };
 
+/// SF: the line of a patch at a segment end (a spiral) of another patch, as an angle
+/// function (DESIGN.md section 4). When the spiral's vertex and edge lie in the
+/// contact's features, so that the translation cancels, it is an EF function up to a
+/// constant factor and carries that EF function's key (DESIGN.md section 5:
+/// identities from shared input vertices).
+std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, const SpiralPoints& end,
+                                                  const SegmentEnd& endFeatures);
+
 /// The curve of patches `first` (geometry a) and `second` (geometry b): the closure
 /// of the set of angles in both ranges where the two segments cross at a point
 /// inside both, i.e. each segment's ends lie strictly on opposite sides of the
