@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "angle_bounds.h"
+
 namespace freespace {
 
 std::vector<PatchGeometry> patchGeometries(const std::vector<Patch>& patches, const Mesh& robot,
@@ -67,18 +69,8 @@ PatchBox boxOver(const PatchGeometry& patch, double from, double to) {
 }  // namespace
 
 std::vector<PatchBox> patchBoxes(const PatchGeometry& patch) {
-  if (patch.patch.range.fullCircle) return {boxOver(patch, -M_PI, M_PI)};
   std::vector<PatchBox> boxes;
-  for (const AngleInterval& arc : patch.patch.range.arcs) {
-    const double from = arc.from.radians(), to = arc.to.radians();
-    if (from <= to + kAnglePadding) {
-      boxes.push_back(boxOver(patch, std::min(from, to), std::max(from, to)));
-    } else {
-      // Through theta = pi.
-      boxes.push_back(boxOver(patch, from, M_PI));
-      boxes.push_back(boxOver(patch, -M_PI, to));
-    }
-  }
+  for (const auto& [from, to] : detail::radianRanges(patch.patch.range)) boxes.push_back(boxOver(patch, from, to));
   return boxes;
 }
 

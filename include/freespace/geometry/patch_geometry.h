@@ -28,8 +28,9 @@ struct PatchBox {
 };
 
 /// Boxes that contain the patch's segment at every angle of its range (one per arc,
-/// two for an arc through theta = pi), computed in doubles and padded so that they
-/// contain the exact segments with a wide margin over rounding.
+/// two for an arc through theta = pi; each arc taken from the outer ends of its
+/// angles' enclosures), computed in doubles and padded so that they contain the
+/// exact segments with a wide margin over rounding.
 std::vector<PatchBox> patchBoxes(const PatchGeometry& patch);
 
 }  // namespace freespace
