@@ -4,6 +4,7 @@
 // computed straight from its definition, independently of the library's formulas.
 
 #include "freespace/geometry/mesh.h"
+#include "freespace/numbers/algebraic_angle.h"
 #include "freespace/numbers/angle_polynomial.h"
 #include "freespace/numbers/half_angle.h"
 #include "freespace/numbers/rational.h"
@@ -18,6 +19,13 @@ inline ExactRotation rotationAt(double theta) {
   ExactRotation rotation;
   HalfAngle::fromRadians(theta).cosSin(rotation.cosine, rotation.sine);
   return rotation;
+}
+
+/// The rotation at a rational angle (AlgebraicAngle::isRational), from its chart's
+/// tangent parameter t (HalfAngle's formulas).
+inline ExactRotation rotationOf(const AlgebraicAngle& rationalAngle) {
+  const Rational t = rationalAngle.root().lo, w = 1 + t * t, chartSign(rationalAngle.chart() == 0 ? 1 : -1);
+  return {chartSign * (1 - t * t) / w, chartSign * 2 * t / w};
 }
 
 struct Exact3 {

@@ -14,11 +14,6 @@ using namespace freespace::testing;
 
 namespace {
 
-ExactRotation rotationOf(const AlgebraicAngle& angle) {
-  const Rational t = angle.root().lo, w = 1 + t * t, chartSign(angle.chart() == 0 ? 1 : -1);
-  return {chartSign * (1 - t * t) / w, chartSign * 2 * t / w};
-}
-
 bool inBox(const PatchBox& box, const std::array<Rational, 2>& point, double theta) {
   return box.low[0] <= point[0] && point[0] <= box.high[0] && box.low[1] <= point[1] && point[1] <= box.high[1] &&
          box.low[2] <= theta && theta <= box.high[2];

@@ -119,11 +119,6 @@ const AlgebraicAngle* nearest(AngleAlgebra& algebra, const AlgebraicAngle& angle
   return best;
 }
 
-ExactRotation rotationOf(const AlgebraicAngle& angle) {
-  const Rational t = angle.root().lo, w = 1 + t * t, chartSign(angle.chart() == 0 ? 1 : -1);
-  return {chartSign * (1 - t * t) / w, chartSign * 2 * t / w};
-}
-
 /// The order of f's crossings with g and h at a rational angle.
 std::optional<int> crossingOrderAt(const std::vector<PatchGeometry>& patches, const Triple& triple,
                                    const AlgebraicAngle& angle) {
