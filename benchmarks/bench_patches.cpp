@@ -1,6 +1,6 @@
 // The first construction stages on the bundled scenes: perturb the meshes, build
-// their topology, enumerate VF, FV and EE patches, their segments, curves and
-// vertices. Prints, per scene, the counts, the time of each step, and how the
+// their topology, enumerate VF, FV and EE patches, their segments, curves, overlaps
+// and vertices. Prints, per scene, the counts, the time of each step, and how the
 // predicates were decided (the share decided in double intervals is the robust
 // layer's target, at least 95%).
 //

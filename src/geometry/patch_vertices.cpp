@@ -62,12 +62,12 @@ PatchVertex crossingOfOverlap(std::uint32_t f, const PatchOverlap& overlap) {
 /// y)) . n, with the same sign convention whichever body the vertices are on.
 std::shared_ptr<const AngleFunction> coincidence(const PatchGeometry& a, const PatchGeometry& b) {
   const bool robotVertices = a.patch.contact.kind == ContactKind::VertexFacet;
-  const auto& plane = a.line.vertices;
+  const auto& vertices = a.line.vertices;  // the vertex, then the facet's corners
   return std::make_shared<AngleFunction>([x = a.line, y = b.line](auto type, int chart) {
     using T = typename decltype(type)::type;
     const PatchLine<T> first = lineOf<T>(x), second = lineOf<T>(y);
     return tangentPolynomial(TrigLinear<T>{first.k1 - second.k1, first.k2 - second.k2, first.k3 - second.k3}, chart);
-  }, detail::edgeFacetKey(robotVertices, a.line.vertices[0], b.line.vertices[0], {plane[1], plane[2], plane[3]}));
+  }, detail::edgeFacetKey(robotVertices, vertices[0], b.line.vertices[0], {vertices[1], vertices[2], vertices[3]}));
 }
 
 /// (e - f) . (f1 - f0) for points e, f, f0, f1 moving as u + R v: linear in cos and
@@ -111,16 +111,9 @@ std::optional<std::array<bool, 2>> endsReached(const PatchGeometry& fixed, const
 
 }  // namespace
 
-bool haveParallelLines(const PatchGeometry& a, const PatchGeometry& b) {
-  const Contact &x = a.patch.contact, &y = b.patch.contact;
-  if (x.kind != y.kind) return false;
-  if (x.kind == ContactKind::VertexFacet) return x.world == y.world;
-  if (x.kind == ContactKind::FacetVertex) return x.robot == y.robot;
-  return false;
-}
-
 std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra) {
-  // Contacts with one facet, by kind and facet.
+  // Contacts with one facet, by kind and facet: two contacts of vertices with one
+  // facet have the same normal n = R a1 + a2 at every angle, so parallel lines.
   std::map<std::pair<int, std::uint32_t>, std::vector<std::uint32_t>> byFacet;
   for (std::uint32_t i = 0; i < patches.size(); ++i) {
     const Contact& contact = patches[i].patch.contact;

@@ -26,14 +26,11 @@ struct PatchVertex {
   int crossing = -1;
 };
 
-/// Whether the two patches' lines have the same normal n = R a1 + a2 at every angle:
-/// two contacts with one facet, of two vertices of the other body. Their lines are
-/// then parallel, and they coincide where their constant terms w agree.
-bool haveParallelLines(const PatchGeometry& a, const PatchGeometry& b);
-
-/// Two patches with parallel lines passing through each other: at an angle inside
-/// both ranges where their lines coincide and their segments overlap, they meet
-/// along a horizontal segment, an edge of the arrangement that is not a curve.
+/// Two patches with parallel lines passing through each other. Two contacts with one
+/// facet, of two vertices of the other body, have the same normal n = R a1 + a2 at
+/// every angle, and their lines coincide where their constant terms w agree. At such
+/// an angle inside both ranges where their segments overlap, they meet along a
+/// horizontal segment, an edge of the arrangement that is not a curve.
 struct PatchOverlap {
   /// The two patches, in increasing order.
   std::array<std::uint32_t, 2> patches{};
