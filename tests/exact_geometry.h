@@ -28,6 +28,17 @@ inline ExactRotation rotationOf(const AlgebraicAngle& rationalAngle) {
   return {chartSign * (1 - t * t) / w, chartSign * 2 * t / w};
 }
 
+inline int signOfRational(const Rational& value) { return value > 0 ? 1 : (value < 0 ? -1 : 0); }
+
+struct ExactPoint2 {
+  Rational x, y;
+};
+
+/// The sign of the orientation of (a, b, c): +1 counterclockwise.
+inline int orientation(const ExactPoint2& a, const ExactPoint2& b, const ExactPoint2& c) {
+  return signOfRational((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+}
+
 struct Exact3 {
   Rational x, y, z;
 };

@@ -16,16 +16,6 @@ using namespace freespace::testing;
 
 namespace {
 
-struct ExactPoint2 {
-  Rational x, y;
-};
-
-Rational orientation(const ExactPoint2& a, const ExactPoint2& b, const ExactPoint2& c) {
-  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
-
-int signOfRational(const Rational& value) { return value > 0 ? 1 : (value < 0 ? -1 : 0); }
-
 std::array<ExactPoint2, 2> segmentAt(const PatchGeometry& patch, const ExactRotation& r) {
   std::array<ExactPoint2, 2> ends;
   for (int e = 0; e < 2; ++e) {
@@ -60,8 +50,8 @@ RC_GTEST_PROP(PatchCurves, ContainExactlyTheAnglesWhereTwoSegmentsCross, ()) {
       const auto a = segmentAt(geometries[active[i]], r);
       for (std::size_t j = i + 1; j < active.size(); ++j) {
         const auto b = segmentAt(geometries[active[j]], r);
-        const int a0 = signOfRational(orientation(b[0], b[1], a[0])), a1 = signOfRational(orientation(b[0], b[1], a[1]));
-        const int b0 = signOfRational(orientation(a[0], a[1], b[0])), b1 = signOfRational(orientation(a[0], a[1], b[1]));
+        const int a0 = orientation(b[0], b[1], a[0]), a1 = orientation(b[0], b[1], a[1]);
+        const int b0 = orientation(a[0], a[1], b[0]), b1 = orientation(a[0], a[1], b[1]);
         if (a0 == 0 || a1 == 0 || b0 == 0 || b1 == 0) continue;  // touching: a curve's end, or shared ends
         const bool cross = a0 == -a1 && b0 == -b1;
         const auto found = curveOf.find({active[i], active[j]});

@@ -35,8 +35,6 @@ Triple orderedTriple(const PatchVertex& vertex) {
   return triple;
 }
 
-int signOfRational(const Rational& value) { return value > 0 ? 1 : (value < 0 ? -1 : 0); }
-
 struct ExactSlice {
   Rational nx, ny, w;  // the line n . d + w = 0
   std::array<Rational, 2> from, to;

@@ -10,6 +10,7 @@
 #include <random>
 
 #include "bundled_scene.h"
+#include "exact_geometry.h"
 #include "freespace/collision/exact_collision_checker.h"
 #include "random_scene.h"
 
@@ -17,15 +18,6 @@ using namespace freespace;
 using namespace freespace::testing;
 
 namespace {
-
-struct ExactPoint2 {
-  Rational x, y;
-};
-
-int orientation(const ExactPoint2& a, const ExactPoint2& b, const ExactPoint2& c) {
-  const Rational value = (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-  return value > 0 ? 1 : (value < 0 ? -1 : 0);
-}
 
 bool between(const Rational& a, const Rational& b, const Rational& value) {
   return (a <= value && value <= b) || (b <= value && value <= a);
