@@ -256,27 +256,39 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BundledSceneVertices,
 
 namespace {
 
-/// Overlaps against the slice: just beside each overlap's angle (an end of its
-/// isolating interval, narrowed) the two lines are parallel, and the ends of one
-/// segment lie along the other's direction as the overlap's flags say. Returns how
-/// many overlaps disagree.
+/// Overlaps against the slice, at rational angles just before and just after each
+/// overlap's angle (the ends of its isolating interval, narrowed). The lines pass
+/// through each other there: every end of one segment that is not also an end of the
+/// other (a shared end stays on both lines) changes side of the other's line. And the
+/// ends of one segment lie along the other's direction as the overlap's flags say,
+/// a shared end reaching the end it is. Returns how many overlaps disagree.
 int wrongOverlaps(const std::vector<PatchGeometry>& patches, const std::vector<PatchOverlap>& overlaps) {
   int wrong = 0;
   for (const PatchOverlap& overlap : overlaps) {
     AlgebraicAngle narrow = overlap.angle;
     while (narrow.upper() - narrow.lower() > 1e-12 && narrow.refineInDoubles()) {
     }
-    const ExactRotation r = rotationOf(AlgebraicAngle::rational(narrow.chart(), narrow.lower()));
+    const ExactRotation before = rotationOf(AlgebraicAngle::rational(narrow.chart(), narrow.lower()));
+    const ExactRotation after = rotationOf(AlgebraicAngle::rational(narrow.chart(), narrow.upper()));
     bool right = overlap.patches[0] < overlap.patches[1];
     for (int p = 0; p < 2; ++p) {
-      const ExactSlice fixed = sliceOf(patches[overlap.patches[p]], r), moving = sliceOf(patches[overlap.patches[1 - p]], r);
-      right = right && fixed.nx * moving.ny - fixed.ny * moving.nx == 0;
+      const PatchGeometry &fixedPatch = patches[overlap.patches[p]], &movingPatch = patches[overlap.patches[1 - p]];
+      const ExactSlice fixed = sliceOf(fixedPatch, before), moving = sliceOf(movingPatch, before);
+      const ExactSlice fixedAfter = sliceOf(fixedPatch, after), movingAfter = sliceOf(movingPatch, after);
+      const auto shared = [&](int k, int j) { return movingPatch.segment.ends[k] == fixedPatch.segment.ends[j]; };
+      for (int k = 0; k < 2; ++k) {
+        const std::array<Rational, 2>& end = k == 0 ? moving.from : moving.to;
+        const std::array<Rational, 2>& endAfter = k == 0 ? movingAfter.from : movingAfter.to;
+        if (!shared(k, 0) && !shared(k, 1)) right = right && side(fixed, end) * side(fixedAfter, endAfter) < 0;
+      }
       const Rational dx = fixed.to[0] - fixed.from[0], dy = fixed.to[1] - fixed.from[1];
       const auto along = [&](const std::array<Rational, 2>& point, const std::array<Rational, 2>& from) {
         return (point[0] - from[0]) * dx + (point[1] - from[1]) * dy;
       };
-      const bool beforeStart = along(moving.from, fixed.from) < 0 || along(moving.to, fixed.from) < 0;
-      const bool afterEnd = along(moving.from, fixed.to) > 0 || along(moving.to, fixed.to) > 0;
+      const bool beforeStart = along(moving.from, fixed.from) < 0 || along(moving.to, fixed.from) < 0 ||
+                               shared(0, 0) || shared(1, 0);
+      const bool afterEnd = along(moving.from, fixed.to) > 0 || along(moving.to, fixed.to) > 0 || shared(0, 1) ||
+                            shared(1, 1);
       right = right && beforeStart == overlap.reachesEnd[p][0] && afterEnd == overlap.reachesEnd[p][1];
     }
     wrong += !right;

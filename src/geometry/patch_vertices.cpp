@@ -70,6 +70,29 @@ std::shared_ptr<const AngleFunction> coincidence(const PatchGeometry& a, const P
   }, detail::edgeFacetKey(robotVertices, vertices[0], b.line.vertices[0], {vertices[1], vertices[2], vertices[3]}));
 }
 
+/// det(v, u, u') of hingedEdgePairs as an angle function, for EE points p and q whose
+/// edges on the robot (robotHinge) or on the environment leave one vertex, at end
+/// atP of p's edge and atQ of q's.
+std::shared_ptr<const AngleFunction> hingeCoincidence(const ContactPoints& p, int atP, const ContactPoints& q, int atQ,
+                                                      bool robotHinge) {
+  const int first = robotHinge ? 0 : 2;  // where the hinged edges' points are
+  const int shared = robotHinge ? 2 : 0;
+  const Point3 x = p.points[first + atP], a = p.points[first + 1 - atP], b = q.points[first + 1 - atQ];
+  const Point3 from = p.points[shared], to = p.points[shared + 1];
+  const AngleFunction::RootKey key = detail::edgeFacetKey(
+      !robotHinge, p.vertices[shared], p.vertices[shared + 1],
+      {p.vertices[first + atP], p.vertices[first + 1 - atP], q.vertices[first + 1 - atQ]});
+  return std::make_shared<AngleFunction>([x, a, b, from, to, robotHinge](auto type, int chart) {
+    using T = typename decltype(type)::type;
+    using detail::pointOf;
+    const auto origin = pointOf<T>(x);
+    const auto plane = detail::cross(detail::difference(pointOf<T>(a), origin), detail::difference(pointOf<T>(b), origin));
+    const auto edge = detail::difference(pointOf<T>(to), pointOf<T>(from));
+    // (R m) . v for a robot plane and an environment edge, (R u) . n the other way.
+    return tangentPolynomial(robotHinge ? detail::rotatedDot(plane, edge) : detail::rotatedDot(edge, plane), chart);
+  }, key);
+}
+
 /// (e - f) . (f1 - f0) for points e, f, f0, f1 moving as u + R v: linear in cos and
 /// sin, because (R v) . (R v') = v . v' and u . (R v) = cos (u . v) + sin (v x u).
 template <class T>
@@ -82,9 +105,15 @@ TrigLinear<T> spiralDifferenceDot(const Spiral<T>& e, const Spiral<T>& f, const 
 }
 
 /// The sign at `angle` of (end k of `moving` - end j of `fixed`) . (fixed's end 1 -
-/// its end 0): where the end lies along the other segment's direction.
+/// its end 0): where the end lies along the other segment's direction. Zero only
+/// for a shared end (the same spiral: two EE contacts with edges from one vertex
+/// both end where it lies on the shared edge).
 Sign alongSegment(const PatchGeometry& moving, int k, const PatchGeometry& fixed, int j, const AlgebraicAngle& angle,
                   AngleAlgebra& algebra) {
+  if (moving.segment.ends[k] == fixed.segment.ends[j]) {
+    algebra.statistics().recordIdentity(PredicateKind::SpiralFacet);
+    return Sign::Zero;
+  }
   const AngleFunction along([e = moving.ends[k], f = fixed.ends[j], f0 = fixed.ends[0], f1 = fixed.ends[1]](auto type,
                                                                                                         int chart) {
     using T = typename decltype(type)::type;
@@ -92,47 +121,119 @@ Sign alongSegment(const PatchGeometry& moving, int k, const PatchGeometry& fixed
                              chart);
   });
   const Sign sign = algebra.signAt(along, angle);
-  if (sign == Sign::Zero) throw std::logic_error("patchOverlaps: segment ends of parallel patches coincide");
+  if (sign == Sign::Zero) throw std::logic_error("patchOverlaps: segment ends of coincident patches coincide");
   return sign;
 }
 
-/// Which ends of `fixed`'s segment the other segment runs beyond, at an angle where
-/// their lines coincide; nullopt when the segments do not overlap.
+/// Which ends of `fixed`'s segment the other segment reaches (runs up to or beyond),
+/// at an angle where their lines coincide; nullopt when the segments do not overlap
+/// (they may touch at a shared end).
 std::optional<std::array<bool, 2>> endsReached(const PatchGeometry& fixed, const PatchGeometry& moving,
                                                const AlgebraicAngle& angle, AngleAlgebra& algebra) {
-  std::array<bool, 2> beforeStart{}, afterEnd{};
+  std::array<Sign, 2> fromStart{}, fromEnd{};
   for (int k = 0; k < 2; ++k) {
-    beforeStart[k] = alongSegment(moving, k, fixed, 0, angle, algebra) == Sign::Negative;
-    afterEnd[k] = alongSegment(moving, k, fixed, 1, angle, algebra) == Sign::Positive;
+    fromStart[k] = alongSegment(moving, k, fixed, 0, angle, algebra);
+    fromEnd[k] = alongSegment(moving, k, fixed, 1, angle, algebra);
   }
-  if ((beforeStart[0] && beforeStart[1]) || (afterEnd[0] && afterEnd[1])) return std::nullopt;
-  return std::array<bool, 2>{beforeStart[0] || beforeStart[1], afterEnd[0] || afterEnd[1]};
+  const auto atOrBefore = [](Sign s) { return s != Sign::Positive; };
+  const auto atOrAfter = [](Sign s) { return s != Sign::Negative; };
+  if ((atOrBefore(fromStart[0]) && atOrBefore(fromStart[1])) || (atOrAfter(fromEnd[0]) && atOrAfter(fromEnd[1]))) {
+    return std::nullopt;
+  }
+  return std::array<bool, 2>{atOrBefore(fromStart[0]) || atOrBefore(fromStart[1]),
+                             atOrAfter(fromEnd[0]) || atOrAfter(fromEnd[1])};
 }
 
-}  // namespace
+/// Two patches whose lines coincide at the roots of `coincidence` (and nowhere else).
+struct CoincidentPair {
+  std::uint32_t a = 0, b = 0;  // a < b
+  std::shared_ptr<const AngleFunction> coincidence;
+};
 
-std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra) {
-  // Contacts with one facet, by kind and facet: two contacts of vertices with one
-  // facet have the same normal n = R a1 + a2 at every angle, so parallel lines.
+/// Contacts with one facet, of two vertices of the other body: they have the same
+/// normal n = R a1 + a2 at every angle, so parallel lines.
+std::vector<CoincidentPair> parallelPairs(const std::vector<PatchGeometry>& patches) {
   std::map<std::pair<int, std::uint32_t>, std::vector<std::uint32_t>> byFacet;
   for (std::uint32_t i = 0; i < patches.size(); ++i) {
     const Contact& contact = patches[i].patch.contact;
     if (contact.kind == ContactKind::VertexFacet) byFacet[{0, contact.world}].push_back(i);
     if (contact.kind == ContactKind::FacetVertex) byFacet[{1, contact.robot}].push_back(i);
   }
-  std::vector<PatchOverlap> overlaps;
-  constexpr auto open = AngleAlgebra::Boundary::Excluded;
+  std::vector<CoincidentPair> pairs;
   for (const auto& [facet, members] : byFacet) {
     for (std::size_t i = 0; i < members.size(); ++i) {
       for (std::size_t j = i + 1; j < members.size(); ++j) {
-        const PatchGeometry &a = patches[members[i]], &b = patches[members[j]];
-        for (const AlgebraicAngle& root : algebra.roots(coincidence(a, b), PredicateKind::EdgeFacet)) {
-          if (!algebra.contains(a.patch.range, root, open) || !algebra.contains(b.patch.range, root, open)) continue;
-          const auto onA = endsReached(a, b, root, algebra);
-          if (!onA) continue;
-          overlaps.push_back({{members[i], members[j]}, root, {*onA, *endsReached(b, a, root, algebra)}});
-        }
+        pairs.push_back({members[i], members[j], coincidence(patches[members[i]], patches[members[j]])});
       }
+    }
+  }
+  return pairs;
+}
+
+/// The vertex two edges (vertex index pairs) share, if they share exactly one.
+std::optional<int> sharedEnd(std::array<std::uint32_t, 2> e, std::array<std::uint32_t, 2> f) {
+  if (e == f || (e[0] == f[1] && e[1] == f[0])) return std::nullopt;
+  for (int i = 0; i < 2; ++i) {
+    if (e[i] == f[0] || e[i] == f[1]) return i;
+  }
+  return std::nullopt;
+}
+
+/// Two EE contacts that share one edge, whose other edges leave one vertex x, to a
+/// and a'. With the other edges' directions u, u' from x and the shared edge's
+/// direction v, each line is "x + d lies on the plane through the shared edge
+/// spanned by v and u (or u')", and when v lies in the plane of x, a, a' the two
+/// planes are that plane: the lines coincide where det(v, u, u') = 0. For a shared
+/// environment edge that is (R (u x u')) . v, for a shared robot edge (R u) . (v x
+/// v'): an EF function of the shared edge and the plane (x, a, a'), keyed as one.
+/// When (x, a, a') is a triangle of the mesh, its roots are ends of both ranges.
+std::vector<CoincidentPair> hingedEdgePairs(const std::vector<PatchGeometry>& patches) {
+  // EE points: robot edge a0 -> a1, environment edge b0 -> b1.
+  std::map<std::pair<int, std::array<std::uint32_t, 2>>, std::vector<std::uint32_t>> byEdge;
+  for (std::uint32_t i = 0; i < patches.size(); ++i) {
+    const ContactPoints& line = patches[i].line;
+    if (line.kind != ContactKind::EdgeEdge) continue;
+    for (int body = 0; body < 2; ++body) {
+      std::array<std::uint32_t, 2> edge{line.vertices[2 * body], line.vertices[2 * body + 1]};
+      std::sort(edge.begin(), edge.end());
+      byEdge[{body, edge}].push_back(i);
+    }
+  }
+  std::vector<CoincidentPair> pairs;
+  for (const auto& [shared, members] : byEdge) {
+    const int other = 1 - shared.first;  // the body whose edges differ
+    for (std::size_t i = 0; i < members.size(); ++i) {
+      for (std::size_t j = i + 1; j < members.size(); ++j) {
+        const ContactPoints &p = patches[members[i]].line, &q = patches[members[j]].line;
+        const std::optional<int> atP = sharedEnd({p.vertices[2 * other], p.vertices[2 * other + 1]},
+                                                 {q.vertices[2 * other], q.vertices[2 * other + 1]});
+        if (!atP) continue;
+        const int atQ = q.vertices[2 * other] == p.vertices[2 * other + *atP] ? 0 : 1;
+        pairs.push_back({members[i], members[j], hingeCoincidence(p, *atP, q, atQ, other == 0)});
+      }
+    }
+  }
+  return pairs;
+}
+
+}  // namespace
+
+std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra) {
+  std::vector<CoincidentPair> pairs = parallelPairs(patches);
+  const std::vector<CoincidentPair> hinged = hingedEdgePairs(patches);
+  pairs.insert(pairs.end(), hinged.begin(), hinged.end());
+  std::sort(pairs.begin(), pairs.end(), [](const CoincidentPair& x, const CoincidentPair& y) {
+    return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
+  });
+  std::vector<PatchOverlap> overlaps;
+  constexpr auto open = AngleAlgebra::Boundary::Excluded;
+  for (const CoincidentPair& pair : pairs) {
+    const PatchGeometry &a = patches[pair.a], &b = patches[pair.b];
+    for (const AlgebraicAngle& root : algebra.roots(pair.coincidence, PredicateKind::EdgeFacet)) {
+      if (!algebra.contains(a.patch.range, root, open) || !algebra.contains(b.patch.range, root, open)) continue;
+      const auto onA = endsReached(a, b, root, algebra);
+      if (!onA) continue;
+      overlaps.push_back({{pair.a, pair.b}, root, {*onA, *endsReached(b, a, root, algebra)}});
     }
   }
   return overlaps;

@@ -26,25 +26,35 @@ struct PatchVertex {
   int crossing = -1;
 };
 
-/// Two patches with parallel lines passing through each other. Two contacts with one
-/// facet, of two vertices of the other body, have the same normal n = R a1 + a2 at
-/// every angle, and their lines coincide where their constant terms w agree. At such
-/// an angle inside both ranges where their segments overlap, they meet along a
-/// horizontal segment, an edge of the arrangement that is not a curve.
+/// Two patches passing through each other along a horizontal segment, an edge of
+/// the arrangement that is not a curve: at an angle inside both ranges their lines
+/// coincide and their segments overlap. Structurally, lines coincide at isolated
+/// angles in two ways:
+///   - two contacts with one facet, of two vertices of the other body, have the same
+///     normal n = R a1 + a2 at every angle, and their lines coincide where their
+///     constant terms w agree;
+///   - two EE contacts sharing one edge, whose other edges leave one vertex, have
+///     one line where the shared edge is parallel to the plane of the other two
+///     edges (see patchOverlaps).
 struct PatchOverlap {
   /// The two patches, in increasing order.
   std::array<std::uint32_t, 2> patches{};
   AlgebraicAngle angle;
   /// reachesEnd[p][k]: the overlap reaches end k of patch p's segment (the other
-  /// segment runs on beyond it).
+  /// segment runs up to it, at a shared end, or beyond it).
   std::array<std::array<bool, 2>, 2> reachesEnd{};
 };
 
-/// Every overlap: for each pair of patches with parallel lines, the roots of
-/// w_a - w_b (an EF function: for contacts of vertices x, y with one facet of
-/// normal n it is (R (x - y)) . n up to sign) inside both open ranges where the
-/// segments overlap, decided from the signs there of (e - f) . (f1 - f0) for ends
-/// e of one segment and f, f0, f1 of the other. Sorted by patches, then by angle.
+/// Every overlap: for each pair of patches whose lines coincide at isolated angles,
+/// the roots of their coincidence function inside both open ranges where the
+/// segments overlap, decided from the signs there of (e - f) . (f1 - f0) for ends e
+/// of one segment and f, f0, f1 of the other. The coincidence function is an EF
+/// function of input vertices, keyed as one: for contacts of vertices x, y with a
+/// facet of normal n, w_a - w_b = (R (x - y)) . n up to sign; for EE contacts sharing
+/// an edge of direction v whose other edges run from x to a and a', det(v, u, u')
+/// with u = a - x, u' = a' - x (the two lines "x + d on the plane through the shared
+/// edge spanned by v and u" are one when v, u, u' are coplanar), which is (R (u x
+/// u')) . v for a shared environment edge. Sorted by patches, then by angle.
 std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra);
 
 /// The FFF polynomial of three patch lines as an angle function: the determinant
