@@ -1,6 +1,6 @@
 // The first construction stages on the bundled scenes: perturb the meshes, build
 // their topology, enumerate VF, FV and EE patches, their segments, curves, overlaps
-// and vertices. Prints, per scene, the counts, the time of each step, and how the
+// and vertices, and subdivide every patch into sub-faces. Prints, per scene, the counts, the time of each step, and how the
 // predicates were decided (the share decided in double intervals is the robust
 // layer's target, at least 95%).
 //
@@ -12,6 +12,7 @@
 
 #include "freespace/geometry/patch.h"
 #include "freespace/geometry/patch_curve.h"
+#include "freespace/geometry/patch_subdivision.h"
 #include "freespace/geometry/patch_vertex.h"
 #include "freespace/geometry/perturbed_meshes.h"
 #include "freespace/problem/planar_problem.h"
@@ -57,13 +58,26 @@ void measure(const std::string& cfg) {
   start = std::chrono::steady_clock::now();
   const auto vertices = patchVertices(geometries, curves, overlaps, algebra);
   const double vertexSeconds = secondsSince(start);
+  start = std::chrono::steady_clock::now();
+  std::size_t slabs = 0, subFaces = 0;
+  std::string subdivisionFailure;
+  try {
+    for (const PatchSubdivision& subdivision : patchSubdivisions(geometries, curves, vertices, overlaps, algebra)) {
+      slabs += subdivision.slabs.size();
+      subFaces += subdivision.faceCount;
+    }
+  } catch (const std::logic_error& error) {
+    subdivisionFailure = std::string(" FAILED: ") + error.what();
+  }
+  const double subdivisionSeconds = secondsSince(start);
   std::cout << std::filesystem::path(cfg).stem().string() << ": robot " << meshes.robot.triangles().size()
             << " triangles, world " << meshes.world.triangles().size() << " triangles; " << vertexFacet.size()
             << " VF/FV patches, " << edgeEdge.size() << " EE patches; seconds: perturb " << perturbSeconds
             << ", topology " << topologySeconds << ", VF/FV " << vertexFacetSeconds << ", EE " << edgeEdgeSeconds << ", segments " << segmentSeconds << ", candidate pairs "
             << pairSeconds << " (" << pairs.size() << "), curves " << curveSeconds << " (" << curves.size() << "), overlaps " << overlapSeconds << " (" << overlaps.size()
             << "), vertices "
-            << vertexSeconds << " (" << vertices.size() << ")"
+            << vertexSeconds << " (" << vertices.size() << "), subdivision " << subdivisionSeconds << " (" << slabs
+            << " slabs, " << subFaces << " sub-faces" << subdivisionFailure << ")"
             << "; decided in double intervals " << std::setprecision(4) << 100 * statistics.doubleIntervalFraction()
             << "%\n"
             << statistics.toText();

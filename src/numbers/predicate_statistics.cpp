@@ -15,6 +15,7 @@ const char* predicateKindName(PredicateKind kind) {
     case PredicateKind::ThreePatch: return "fff";
     case PredicateKind::SignAtRoot: return "sign_at_root";
     case PredicateKind::RootOrder: return "root_order";
+    case PredicateKind::CrossingOrder: return "crossing_order";
     case PredicateKind::Other: return "other";
     case PredicateKind::Count: break;
   }

@@ -17,6 +17,7 @@ enum class PredicateKind : int {
   ThreePatch,    // FFF: three patch lines concurrent, degree 4
   SignAtRoot,    // sign of an angle polynomial at an algebraic angle
   RootOrder,     // order of two algebraic angles
+  CrossingOrder, // order of two lines' crossings along a patch's segment
   Other,
   Count
 };

@@ -1,0 +1,430 @@
+#include "freespace/geometry/patch_subdivision.h"
+
+#include <algorithm>
+#include <numeric>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "freespace/numbers/adaptive_sign.h"
+
+namespace freespace {
+
+namespace {
+
+constexpr std::uint32_t kNoCurve = UINT32_MAX;
+
+/// The value of `other`'s line at end k of `patch`'s segment, at the angle with the
+/// given cosine and sine (an SF value, DESIGN.md section 4).
+template <class T>
+T lineAtEnd(const PatchGeometry& patch, int k, const PatchGeometry& other, const T& cosine, const T& sine) {
+  const TrigLinear<T> form = spiralFacetForm(lineOf<T>(other.line), spiralOf<T>(patch.ends[k]));
+  return form.s * sine + form.c * cosine + form.k;
+}
+
+/// With V_g(k) the value of g's line at end k of the patch, g crosses the segment at
+/// lambda_g = V_g(0) / (V_g(0) - V_g(1)), and V_g(0), V_g(1) have opposite signs, so
+///   sign(lambda_h - lambda_g) = sign((V_g(0) V_h(1) - V_h(0) V_g(1)) V_g(0) V_h(0)).
+template <class T>
+T crossingOrderValue(const PatchGeometry& patch, const PatchGeometry& g, const PatchGeometry& h, const T& cosine,
+                     const T& sine) {
+  const T g0 = lineAtEnd(patch, 0, g, cosine, sine), g1 = lineAtEnd(patch, 1, g, cosine, sine);
+  const T h0 = lineAtEnd(patch, 0, h, cosine, sine), h1 = lineAtEnd(patch, 1, h, cosine, sine);
+  return (g0 * h1 - h0 * g1) * g0 * h0;
+}
+
+/// V_g(0) V_h(1) - V_h(0) V_g(1) (see crossingOrderValue) as an angle function:
+/// lambda_h - lambda_g = that / ((V_g(0) - V_g(1)) (V_h(0) - V_h(1))).
+AngleFunction crossingDifference(const PatchGeometry& patch, const PatchGeometry& g, const PatchGeometry& h) {
+  return AngleFunction([ends = patch.ends, g = g.line, h = h.line](auto type, int chart) {
+    using T = typename decltype(type)::type;
+    const auto value = [&](const ContactPoints& line, int k) {
+      return spiralFacetForm(lineOf<T>(line), spiralOf<T>(ends[k]));
+    };
+    const TrigLinear<T> h0 = value(h, 0);
+    return tangentPolynomial(value(g, 0), chart) * tangentPolynomial(value(h, 1), chart) +
+           tangentPolynomial(TrigLinear<T>{-h0.s, -h0.c, -h0.k}, chart) * tangentPolynomial(value(g, 1), chart);
+  });
+}
+
+/// V_g(0) - V_g(1): its sign is that of the denominator of lambda_g.
+AngleFunction endValueDifference(const PatchGeometry& patch, const PatchGeometry& g) {
+  return AngleFunction([ends = patch.ends, g = g.line](auto type, int chart) {
+    using T = typename decltype(type)::type;
+    const PatchLine<T> line = lineOf<T>(g);
+    const TrigLinear<T> v0 = spiralFacetForm(line, spiralOf<T>(ends[0])), v1 = spiralFacetForm(line, spiralOf<T>(ends[1]));
+    return tangentPolynomial(TrigLinear<T>{v0.s - v1.s, v0.c - v1.c, v0.k - v1.k}, chart);
+  });
+}
+
+/// An event of one patch: the angle, the curve of the patch it involves (none for an
+/// end of the patch's range or an overlap), whether it is an overlap (a horizontal
+/// cut), and the ends of the patch's segment the event's point or cut reaches.
+struct PatchEvent {
+  AlgebraicAngle angle;
+  std::uint32_t curve = kNoCurve;
+  bool cut = false;
+  std::array<bool, 2> onSide{};
+};
+
+/// The events at one angle: their curves, each with the segment ends it reaches.
+struct EventGroup {
+  AlgebraicAngle angle;
+  std::vector<std::uint32_t> curves;
+  std::vector<std::array<bool, 2>> curveOnSide;
+  bool cut = false;
+  std::array<bool, 2> onSide{};
+};
+
+class UnionFind {
+ public:
+  std::uint32_t add() {
+    parent_.push_back(static_cast<std::uint32_t>(parent_.size()));
+    return parent_.back();
+  }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent_[x] != x) x = parent_[x] = parent_[parent_[x]];
+    return x;
+  }
+  void join(std::uint32_t a, std::uint32_t b) { parent_[find(a)] = find(b); }
+
+ private:
+  std::vector<std::uint32_t> parent_;
+};
+
+/// The curves of `order` that an event involves: where they start, how many there
+/// are, and the others in order.
+struct InvolvedBlock {
+  std::vector<std::uint32_t> others;
+  std::optional<std::size_t> start;
+  std::size_t size = 0;
+  bool contiguous = true;
+};
+
+InvolvedBlock involvedBlock(const std::vector<std::uint32_t>& order, const std::vector<std::uint32_t>& involved) {
+  InvolvedBlock block;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    if (std::find(involved.begin(), involved.end(), order[i]) == involved.end()) {
+      block.others.push_back(order[i]);
+      continue;
+    }
+    if (block.start && *block.start + block.size != i) block.contiguous = false;
+    if (!block.start) block.start = i;
+    block.size++;
+  }
+  return block;
+}
+
+/// Subdivides one patch from its curves, vertices and overlaps.
+class PatchSweep {
+ public:
+  PatchSweep(std::uint32_t patch, const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
+             AngleAlgebra& algebra)
+      : patch_(patch), patches_(patches), curves_(curves), algebra_(algebra) {}
+
+  void addCurve(std::uint32_t curve) {
+    curvesOfPatch_.push_back(curve);
+    const PatchCurve& c = curves_[curve];
+    const int side = c.first == patch_ ? 0 : 1;
+    curveWith_[c.first == patch_ ? c.second : c.first] = curve;
+    for (std::size_t i = 0; i < c.angles.arcs.size(); ++i) {
+      for (int end = 0; end < 2; ++end) {
+        const std::array<bool, 2>& onSide = c.ends[i][end].endOnOtherLine[side];
+        events_.push_back({end == 0 ? c.angles.arcs[i].from : c.angles.arcs[i].to, curve, false, onSide});
+      }
+    }
+  }
+
+  /// At a vertex of three crossing patches, the patch's curves with the other two
+  /// swap. At a vertex on an overlap the crossing patch's two curves swap, and on
+  /// each parallel patch only its curve with the crossing patch takes part.
+  void addVertex(const PatchVertex& vertex) {
+    const bool onParallelPatch = vertex.crossing >= 0 && vertex.patches[vertex.crossing] != patch_;
+    for (std::uint32_t other : vertex.patches) {
+      if (other == patch_) continue;
+      if (onParallelPatch && other != vertex.patches[vertex.crossing]) continue;
+      events_.push_back({vertex.angle, curveWith_.at(other), false, {}});
+    }
+  }
+
+  void addOverlap(const PatchOverlap& overlap) {
+    const int side = overlap.patches[0] == patch_ ? 0 : 1;
+    events_.push_back({overlap.angle, kNoCurve, true, overlap.reachesEnd[side]});
+  }
+
+  PatchSubdivision run() {
+    const AngleSet& range = patches_[patch_].patch.range;
+    if (range.fullCircle) {
+      sweepCircle();
+    } else {
+      for (const AngleInterval& arc : range.arcs) sweepArc(arc);
+    }
+    return finish();
+  }
+
+ private:
+  /// Sorts events counterclockwise from `origin` and merges equal angles.
+  std::vector<EventGroup> groupFrom(const AlgebraicAngle& origin, std::vector<PatchEvent> events) {
+    const auto beforeOrigin = [&](const AlgebraicAngle& angle) { return algebra_.compare(angle, origin) < 0; };
+    std::sort(events.begin(), events.end(), [&](const PatchEvent& a, const PatchEvent& b) {
+      const bool wrapsA = beforeOrigin(a.angle), wrapsB = beforeOrigin(b.angle);
+      if (wrapsA != wrapsB) return wrapsB;
+      return algebra_.compare(a.angle, b.angle) < 0;
+    });
+    std::vector<EventGroup> groups;
+    for (const PatchEvent& event : events) {
+      if (groups.empty() || algebra_.compare(groups.back().angle, event.angle) != 0) {
+        groups.push_back({event.angle, {}, {}, false, {}});
+      }
+      EventGroup& group = groups.back();
+      if (event.curve != kNoCurve) {
+        group.curves.push_back(event.curve);
+        group.curveOnSide.push_back(event.onSide);
+      }
+      group.cut = group.cut || event.cut;
+      group.onSide[0] = group.onSide[0] || event.onSide[0];
+      group.onSide[1] = group.onSide[1] || event.onSide[1];
+    }
+    return groups;
+  }
+
+  void sweepArc(const AngleInterval& arc) {
+    std::vector<PatchEvent> inside{{arc.from, kNoCurve, false, {}}, {arc.to, kNoCurve, false, {}}};
+    for (const PatchEvent& event : events_) {
+      if (algebra_.contains(arc, event.angle)) inside.push_back(event);
+    }
+    const std::vector<EventGroup> groups = groupFrom(arc.from, std::move(inside));
+    const std::size_t first = subdivision_.slabs.size();
+    for (std::size_t k = 0; k + 1 < groups.size(); ++k) {
+      addSlab(groups[k].angle, groups[k + 1].angle, algebra_.rationalBetween(groups[k].angle, groups[k + 1].angle));
+    }
+    for (std::size_t k = 1; k + 1 < groups.size(); ++k) join(first + k - 1, first + k, groups[k]);
+  }
+
+  void sweepCircle() {
+    if (events_.empty()) {
+      const AlgebraicAngle anywhere = AlgebraicAngle::rational(0, 0.0);
+      addSlab(anywhere, anywhere, anywhere);
+      return;
+    }
+    AlgebraicAngle origin = events_.front().angle;
+    for (const PatchEvent& event : events_) {
+      if (algebra_.compare(event.angle, origin) < 0) origin = event.angle;
+    }
+    const std::vector<EventGroup> groups = groupFrom(origin, events_);
+    const std::size_t count = groups.size();
+    for (std::size_t k = 0; k < count; ++k) {
+      const AlgebraicAngle& from = groups[k].angle;
+      const AlgebraicAngle& to = groups[(k + 1) % count].angle;
+      // A single event: the slab runs once around, from it back to it; the rational
+      // angle opposite it (t = 0 of the other chart) lies inside.
+      addSlab(from, to, count == 1 ? AlgebraicAngle::rational(1 - from.chart(), 0.0) : algebra_.rationalBetween(from, to));
+    }
+    for (std::size_t k = 0; k < count; ++k) join(k, (k + 1) % count, groups[(k + 1) % count]);
+  }
+
+  void addSlab(const AlgebraicAngle& from, const AlgebraicAngle& to, const AlgebraicAngle& sample) {
+    PatchSlab slab{from, to, sample, {}, {}};
+    for (std::uint32_t curve : curvesOfPatch_) {
+      if (algebra_.contains(curves_[curve].angles, sample)) slab.curves.push_back(curve);
+    }
+    std::sort(slab.curves.begin(), slab.curves.end(), [&](std::uint32_t a, std::uint32_t b) {
+      const Sign order = crossingOrder(patches_[patch_], other(a), other(b), sample, algebra_);
+      if (order == Sign::Zero) fail("two curves cross the segment at one point", sample, {a, b});
+      return order == Sign::Positive;
+    });
+    for (std::size_t gap = 0; gap <= slab.curves.size(); ++gap) slab.faces.push_back(trapezoids_.add());
+    subdivision_.slabs.push_back(std::move(slab));
+  }
+
+  const PatchGeometry& other(std::uint32_t curve) const { return patches_[otherPatch(curve)]; }
+
+  std::uint32_t otherPatch(std::uint32_t curve) const {
+    const PatchCurve& c = curves_[curve];
+    return c.first == patch_ ? c.second : c.first;
+  }
+
+  [[noreturn]] void fail(const std::string& problem, const AlgebraicAngle& angle,
+                         const std::vector<std::uint32_t>& curves) const {
+    std::ostringstream message;
+    message << "patchSubdivisions: on patch " << patch_ << " at theta " << angle.radians() << ", " << problem
+            << " (curves with patches";
+    for (std::uint32_t curve : curves) message << ' ' << otherPatch(curve);
+    message << ')';
+    throw std::logic_error(message.str());
+  }
+
+  /// Joins the trapezoids of slab `left` to those of the next slab `right` across
+  /// the events of `group` (see patchSubdivisions).
+  void join(std::size_t left, std::size_t right, const EventGroup& group) {
+    if (group.cut) {
+      joinAcrossCut(left, right, group);
+    } else {
+      joinAtPoints(left, right, group);
+    }
+  }
+
+  /// Across events at points: a trapezoid of one slab continues in a trapezoid of
+  /// the other when their sides at the event's angle share an open piece of the
+  /// segment. The sides are intervals between the crossings of consecutive curves
+  /// there, ranked exactly along the segment (the event's curves meet in points,
+  /// several curves in one point, and a group may hold several points).
+  void joinAtPoints(std::size_t left, std::size_t right, const EventGroup& group) {
+    const PatchSlab &l = subdivision_.slabs[left], &r = subdivision_.slabs[right];
+    const auto [rank, last] = ranksAt(group, l.curves, r.curves);
+    const auto side = [&](const std::vector<std::uint32_t>& curves, std::size_t gap) {
+      return std::make_pair(gap == 0 ? 0 : rank.at(curves[gap - 1]), gap == curves.size() ? last : rank.at(curves[gap]));
+    };
+    for (std::size_t i = 0, j = 0; i < l.faces.size() && j < r.faces.size();) {
+      const auto [lowL, highL] = side(l.curves, i);
+      const auto [lowR, highR] = side(r.curves, j);
+      if (std::max(lowL, lowR) < std::min(highL, highR)) trapezoids_.join(l.faces[i], r.faces[j]);
+      if (highL < highR) {
+        ++i;
+      } else if (highR < highL) {
+        ++j;
+      } else {
+        ++i, ++j;
+      }
+    }
+  }
+
+  /// The ranks along the segment, at the group's angle, of the crossings of the
+  /// curves of two slabs: 0 at end 0, 1, 2, ... for distinct interior points, and
+  /// one more than the largest at end 1 (a curve ending on the segment's end), with
+  /// the rank of end 1.
+  std::pair<std::unordered_map<std::uint32_t, int>, int> ranksAt(const EventGroup& group, const std::vector<std::uint32_t>& left,
+                                                 const std::vector<std::uint32_t>& right) {
+    std::unordered_map<std::uint32_t, int> rank;
+    std::vector<std::uint32_t> interior, atEnd1;
+    std::unordered_set<std::uint32_t> seen;
+    for (const std::vector<std::uint32_t>* curves : {&left, &right}) {
+      for (std::uint32_t curve : *curves) {
+        if (!seen.insert(curve).second) continue;
+        const auto event = std::find(group.curves.begin(), group.curves.end(), curve);
+        const bool involved = event != group.curves.end();
+        const std::array<bool, 2> onSide = involved ? group.curveOnSide[event - group.curves.begin()] : std::array<bool, 2>{};
+        if (onSide[0]) {
+          rank[curve] = 0;
+        } else {
+          (onSide[1] ? atEnd1 : interior).push_back(curve);
+        }
+      }
+    }
+    std::unordered_map<std::uint32_t, Sign> denominator;
+    for (std::uint32_t curve : interior) {
+      denominator[curve] = algebra_.signAt(endValueDifference(patches_[patch_], other(curve)), group.angle);
+      if (denominator[curve] == Sign::Zero) fail("a curve's line contains the segment", group.angle, {curve});
+    }
+    // sign(lambda_h - lambda_g) at the event's angle.
+    const auto order = [&](std::uint32_t g, std::uint32_t h) {
+      const Sign difference = algebra_.signAt(crossingDifference(patches_[patch_], other(g), other(h)), group.angle);
+      return static_cast<int>(difference) * static_cast<int>(denominator[g]) * static_cast<int>(denominator[h]);
+    };
+    std::sort(interior.begin(), interior.end(), [&](std::uint32_t g, std::uint32_t h) { return order(g, h) > 0; });
+    int next = 0;
+    for (std::size_t i = 0; i < interior.size(); ++i) {
+      if (i == 0 || order(interior[i - 1], interior[i]) != 0) ++next;
+      rank[interior[i]] = next;
+    }
+    for (std::uint32_t curve : atEnd1) rank[curve] = next + 1;
+    return {rank, next + 1};
+  }
+
+  /// Across an overlap: the curves crossing the cut, and those ending at its ends,
+  /// form one block; the trapezoids along the cut are not continued, those beyond
+  /// its ends are.
+  void joinAcrossCut(std::size_t left, std::size_t right, const EventGroup& group) {
+    const PatchSlab &l = subdivision_.slabs[left], &r = subdivision_.slabs[right];
+    const InvolvedBlock before = involvedBlock(l.curves, group.curves), after = involvedBlock(r.curves, group.curves);
+    if (!before.contiguous || !after.contiguous) fail("the event's curves are not together", group.angle, group.curves);
+    if (before.others != after.others) fail("curves not at the event change order", group.angle, group.curves);
+    if (!before.start && !after.start) {
+      if (group.cut && group.onSide[0] && group.onSide[1]) return;  // a cut across the whole segment
+      for (std::size_t gap = 0; gap < l.faces.size(); ++gap) trapezoids_.join(l.faces[gap], r.faces[gap]);
+      return;
+    }
+    const std::size_t below = before.start ? *before.start : *after.start;
+    if (before.start && after.start && *before.start != *after.start) {
+      fail("the event's curves are not at one place", group.angle, group.curves);
+    }
+    if ((group.onSide[0] && below != 0) || (group.onSide[1] && below != before.others.size())) {
+      fail("the event reaches a segment end behind other curves", group.angle, group.curves);
+    }
+    for (std::size_t gap = 0; gap < below; ++gap) trapezoids_.join(l.faces[gap], r.faces[gap]);
+    for (std::size_t above = 1; above <= before.others.size() - below; ++above) {
+      trapezoids_.join(l.faces[below + before.size + above], r.faces[below + after.size + above]);
+    }
+    // The trapezoids touching the event's point (or cut) from below and from above.
+    if (!group.onSide[0]) trapezoids_.join(l.faces[below], r.faces[below]);
+    if (!group.onSide[1]) trapezoids_.join(l.faces[below + before.size], r.faces[below + after.size]);
+  }
+
+  PatchSubdivision finish() {
+    std::unordered_map<std::uint32_t, std::uint32_t> faceOfRoot;
+    for (PatchSlab& slab : subdivision_.slabs) {
+      for (std::uint32_t& face : slab.faces) {
+        face = faceOfRoot.emplace(trapezoids_.find(face), static_cast<std::uint32_t>(faceOfRoot.size())).first->second;
+      }
+    }
+    subdivision_.faceCount = static_cast<std::uint32_t>(faceOfRoot.size());
+    return std::move(subdivision_);
+  }
+
+  std::uint32_t patch_;
+  const std::vector<PatchGeometry>& patches_;
+  const std::vector<PatchCurve>& curves_;
+  AngleAlgebra& algebra_;
+  std::vector<std::uint32_t> curvesOfPatch_;
+  std::unordered_map<std::uint32_t, std::uint32_t> curveWith_;
+  std::vector<PatchEvent> events_;
+  UnionFind trapezoids_;
+  PatchSubdivision subdivision_;
+};
+
+}  // namespace
+
+Sign crossingOrder(const PatchGeometry& patch, const PatchGeometry& first, const PatchGeometry& second,
+                   const AlgebraicAngle& rationalAngle, AngleAlgebra& algebra) {
+  if (rationalAngle.lower() == rationalAngle.upper()) {
+    const HalfAngle at{rationalAngle.chart(), rationalAngle.lower()};
+    return AdaptiveSignEngine(algebra.statistics()).sign(PredicateKind::CrossingOrder, [&](auto type) {
+      using T = typename decltype(type)::type;
+      T cosine, sine;
+      at.cosSin(cosine, sine);
+      return crossingOrderValue(patch, first, second, cosine, sine);
+    });
+  }
+  // A rational angle that is not a double: exactly.
+  const Rational t = rationalAngle.root().lo, w = 1 + t * t, chartSign(rationalAngle.chart() == 0 ? 1 : -1);
+  const Rational cosine = chartSign * (1 - t * t) / w, sine = chartSign * 2 * t / w;
+  algebra.statistics().recordDecision(PredicateKind::CrossingOrder, static_cast<int>(PrecisionLevel::Exact));
+  return exactSign(crossingOrderValue(patch, first, second, cosine, sine));
+}
+
+std::vector<PatchSubdivision> patchSubdivisions(const std::vector<PatchGeometry>& patches,
+                                                const std::vector<PatchCurve>& curves,
+                                                const std::vector<PatchVertex>& vertices,
+                                                const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra) {
+  std::vector<PatchSweep> sweeps;
+  sweeps.reserve(patches.size());
+  for (std::uint32_t patch = 0; patch < patches.size(); ++patch) sweeps.emplace_back(patch, patches, curves, algebra);
+  for (std::uint32_t curve = 0; curve < curves.size(); ++curve) {
+    sweeps[curves[curve].first].addCurve(curve);
+    sweeps[curves[curve].second].addCurve(curve);
+  }
+  for (const PatchVertex& vertex : vertices) {
+    for (std::uint32_t patch : vertex.patches) sweeps[patch].addVertex(vertex);
+  }
+  for (const PatchOverlap& overlap : overlaps) {
+    for (std::uint32_t patch : overlap.patches) sweeps[patch].addOverlap(overlap);
+  }
+  std::vector<PatchSubdivision> subdivisions;
+  subdivisions.reserve(patches.size());
+  for (PatchSweep& sweep : sweeps) subdivisions.push_back(sweep.run());
+  return subdivisions;
+}
+
+}  // namespace freespace
