@@ -35,6 +35,9 @@ bool contains(std::initializer_list<std::uint32_t> set, std::uint32_t vertex) {
 ///   FV(q, g), environment v on h in g:         (R m) . (q - v)
 ///   EE(a, b), robot v on b:                    -sigma det(R u, b, R (a0 - v))
 ///   EE(a, b), environment v on a:              -sigma det(R u, b, v - b0)
+///   EE(a, b), robot end v of a on h from b's end: a lies in the plane of b and h,
+///                                              (R (a1 - a0)) . (b x h) = 0
+///   EE(a, b), environment end v of b on h from a's end: likewise with roles swapped
 std::optional<AngleFunction::RootKey> spiralFacetKey(const ContactPoints& line, const SegmentEnd& end) {
   const auto& [v0, v1, v2, v3] = line.vertices;
   const std::uint32_t v = end.vertex, e0 = end.edge[0], e1 = end.edge[1];
@@ -59,6 +62,19 @@ std::optional<AngleFunction::RootKey> spiralFacetKey(const ContactPoints& line, 
   }
   if (end.robotVertex && contains({v2, v3}, e0) && contains({v2, v3}, e1)) return detail::edgeFacetKey(false, v2, v3, {v0, v1, v});
   if (!end.robotVertex && contains({v0, v1}, e0) && contains({v0, v1}, e1)) return detail::edgeFacetKey(true, v0, v1, {v2, v3, v});
+  // An end of one edge on an edge sharing an end with the other: the first edge
+  // passes through the plane of the two others' edges, and lies in it.
+  const auto hinge = [](std::uint32_t e0, std::uint32_t e1, std::uint32_t f0, std::uint32_t f1) -> std::optional<std::uint32_t> {
+    if (e0 == f0 || e0 == f1) return e1;
+    if (e1 == f0 || e1 == f1) return e0;
+    return std::nullopt;
+  };
+  if (end.robotVertex && contains({v0, v1}, v)) {
+    if (const auto apart = hinge(e0, e1, v2, v3)) return detail::edgeFacetKey(true, v0, v1, {v2, v3, *apart});
+  }
+  if (!end.robotVertex && contains({v2, v3}, v)) {
+    if (const auto apart = hinge(e0, e1, v0, v1)) return detail::edgeFacetKey(false, v2, v3, {v0, v1, *apart});
+  }
   return std::nullopt;
 }
 
@@ -129,12 +145,21 @@ Box toBox(const PatchBox& box) {
 
 }  // namespace
 
+/// The key of any SF function: the line's contact kind and input vertices, and the
+/// spiral's vertex and edge, which determine the function up to the line's sign
+/// (kinds 2 to 7, apart from the EF keys' 0 and 1).
+AngleFunction::RootKey spiralLineKey(const ContactPoints& line, const SegmentEnd& end) {
+  const std::uint32_t kind = 2 + 2 * static_cast<std::uint32_t>(line.kind) + (end.robotVertex ? 1 : 0);
+  const auto& v = line.vertices;
+  return {kind, v[0], v[1], v[2], v[3], end.vertex, end.edge[0], end.edge[1], 0};
+}
+
 std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, const SpiralPoints& end,
                                                   const SegmentEnd& endFeatures) {
   return std::make_shared<AngleFunction>([line, end](auto type, int chart) {
     using T = typename decltype(type)::type;
     return tangentPolynomial(spiralFacetForm(lineOf<T>(line), spiralOf<T>(end)), chart);
-  }, spiralFacetKey(line, endFeatures));
+  }, spiralFacetKey(line, endFeatures).value_or(spiralLineKey(line, endFeatures)));
 }
 
 PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t second, const PatchGeometry& b,

@@ -62,11 +62,18 @@ AngleFunction endValueDifference(const PatchGeometry& patch, const PatchGeometry
 /// An event of one patch: the angle, the curve of the patch it involves (none for an
 /// end of the patch's range or an overlap), whether it is an overlap (a horizontal
 /// cut), and the ends of the patch's segment the event's point or cut reaches.
+/// Names the point of the patch where an event's curve crosses the segment, when a
+/// combinatorial rule knows it (kind first, 0 for unnamed, then the rule's indices):
+/// curves at one named point cross there together, with no exact test.
+using PointKey = std::array<std::uint32_t, 7>;
+constexpr std::uint32_t kUnnamed = 0, kSpiralPoint = 1, kHorizontalEdge = 2, kVertexPoint = 3;
+
 struct PatchEvent {
   AlgebraicAngle angle;
   std::uint32_t curve = kNoCurve;
   bool cut = false;
   std::array<bool, 2> onSide{};
+  PointKey point{};
 };
 
 /// The events at one angle: their curves, each with the segment ends it reaches.
@@ -74,6 +81,7 @@ struct EventGroup {
   AlgebraicAngle angle;
   std::vector<std::uint32_t> curves;
   std::vector<std::array<bool, 2>> curveOnSide;
+  std::vector<PointKey> curvePoint;
   bool cut = false;
   std::array<bool, 2> onSide{};
 };
@@ -131,27 +139,46 @@ class PatchSweep {
     curveWith_[c.first == patch_ ? c.second : c.first] = curve;
     for (std::size_t i = 0; i < c.angles.arcs.size(); ++i) {
       for (int end = 0; end < 2; ++end) {
-        const std::array<bool, 2>& onSide = c.ends[i][end].endOnOtherLine[side];
-        events_.push_back({end == 0 ? c.angles.arcs[i].from : c.angles.arcs[i].to, curve, false, onSide});
+        const AlgebraicAngle& angle = end == 0 ? c.angles.arcs[i].from : c.angles.arcs[i].to;
+        const CurveEnd& cause = c.ends[i][end];
+        events_.push_back({angle, curve, false, cause.endOnOtherLine[side], endPoint(curve, cause, angle)});
       }
     }
+  }
+
+  /// Where a curve ends inside the patch, by its cause: at the spiral of the other
+  /// patch's segment end that pierces the patch, or on the other patch's horizontal
+  /// edge. Patches whose ranges end at the same EF function's root have one line
+  /// there (the edge lies in the facet's plane), so one point on this segment.
+  PointKey endPoint(std::uint32_t curve, const CurveEnd& cause, const AlgebraicAngle& angle) const {
+    const int other = curves_[curve].first == patch_ ? 1 : 0;
+    for (int k = 0; k < 2; ++k) {
+      if (!cause.endOnOtherLine[other][k]) continue;
+      const SegmentEnd& spiral = patches_[otherPatch(curve)].segment.ends[k];
+      return {kSpiralPoint, spiral.robotVertex, spiral.vertex, spiral.edge[0], spiral.edge[1], 0, 0};
+    }
+    if (cause.rangeEnd[other] && angle.function() && angle.function()->key()) {
+      const AngleFunction::RootKey& key = *angle.function()->key();
+      return {kHorizontalEdge, key[0], key[1], key[2], key[3], key[4], key[5]};
+    }
+    return {};
   }
 
   /// At a vertex of three crossing patches, the patch's curves with the other two
   /// swap. At a vertex on an overlap the crossing patch's two curves swap, and on
   /// each parallel patch only its curve with the crossing patch takes part.
-  void addVertex(const PatchVertex& vertex) {
+  void addVertex(const PatchVertex& vertex, std::uint32_t index) {
     const bool onParallelPatch = vertex.crossing >= 0 && vertex.patches[vertex.crossing] != patch_;
     for (std::uint32_t other : vertex.patches) {
       if (other == patch_) continue;
       if (onParallelPatch && other != vertex.patches[vertex.crossing]) continue;
-      events_.push_back({vertex.angle, curveWith_.at(other), false, {}});
+      events_.push_back({vertex.angle, curveWith_.at(other), false, {}, {kVertexPoint, index, 0, 0, 0, 0, 0}});
     }
   }
 
   void addOverlap(const PatchOverlap& overlap) {
     const int side = overlap.patches[0] == patch_ ? 0 : 1;
-    events_.push_back({overlap.angle, kNoCurve, true, overlap.reachesEnd[side]});
+    events_.push_back({overlap.angle, kNoCurve, true, overlap.reachesEnd[side], {}});
   }
 
   PatchSubdivision run() {
@@ -176,12 +203,13 @@ class PatchSweep {
     std::vector<EventGroup> groups;
     for (const PatchEvent& event : events) {
       if (groups.empty() || algebra_.compare(groups.back().angle, event.angle) != 0) {
-        groups.push_back({event.angle, {}, {}, false, {}});
+        groups.push_back({event.angle, {}, {}, {}, false, {}});
       }
       EventGroup& group = groups.back();
       if (event.curve != kNoCurve) {
         group.curves.push_back(event.curve);
         group.curveOnSide.push_back(event.onSide);
+        group.curvePoint.push_back(event.point);
       }
       group.cut = group.cut || event.cut;
       group.onSide[0] = group.onSide[0] || event.onSide[0];
@@ -191,7 +219,7 @@ class PatchSweep {
   }
 
   void sweepArc(const AngleInterval& arc) {
-    std::vector<PatchEvent> inside{{arc.from, kNoCurve, false, {}}, {arc.to, kNoCurve, false, {}}};
+    std::vector<PatchEvent> inside{{arc.from, kNoCurve, false, {}, {}}, {arc.to, kNoCurve, false, {}, {}}};
     for (const PatchEvent& event : events_) {
       if (algebra_.contains(arc, event.angle)) inside.push_back(event);
     }
@@ -300,12 +328,14 @@ class PatchSweep {
     std::unordered_map<std::uint32_t, int> rank;
     std::vector<std::uint32_t> interior, atEnd1;
     std::unordered_set<std::uint32_t> seen;
+    std::unordered_map<std::uint32_t, PointKey> point;
     for (const std::vector<std::uint32_t>* curves : {&left, &right}) {
       for (std::uint32_t curve : *curves) {
         if (!seen.insert(curve).second) continue;
         const auto event = std::find(group.curves.begin(), group.curves.end(), curve);
         const bool involved = event != group.curves.end();
         const std::array<bool, 2> onSide = involved ? group.curveOnSide[event - group.curves.begin()] : std::array<bool, 2>{};
+        point[curve] = involved ? group.curvePoint[event - group.curves.begin()] : PointKey{};
         if (onSide[0]) {
           rank[curve] = 0;
         } else {
@@ -320,6 +350,7 @@ class PatchSweep {
     }
     // sign(lambda_h - lambda_g) at the event's angle.
     const auto order = [&](std::uint32_t g, std::uint32_t h) {
+      if (point[g][0] != kUnnamed && point[g] == point[h]) return 0;
       const Sign difference = algebra_.signAt(crossingDifference(patches_[patch_], other(g), other(h)), group.angle);
       return static_cast<int>(difference) * static_cast<int>(denominator[g]) * static_cast<int>(denominator[h]);
     };
@@ -415,8 +446,8 @@ std::vector<PatchSubdivision> patchSubdivisions(const std::vector<PatchGeometry>
     sweeps[curves[curve].first].addCurve(curve);
     sweeps[curves[curve].second].addCurve(curve);
   }
-  for (const PatchVertex& vertex : vertices) {
-    for (std::uint32_t patch : vertex.patches) sweeps[patch].addVertex(vertex);
+  for (std::uint32_t index = 0; index < vertices.size(); ++index) {
+    for (std::uint32_t patch : vertices[index].patches) sweeps[patch].addVertex(vertices[index], index);
   }
   for (const PatchOverlap& overlap : overlaps) {
     for (std::uint32_t patch : overlap.patches) sweeps[patch].addOverlap(overlap);

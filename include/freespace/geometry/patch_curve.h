@@ -43,7 +43,9 @@ struct PatchCurve {
 /// function (DESIGN.md section 4). When the spiral's vertex and edge lie in the
 /// contact's features, so that the translation cancels, it is an EF function up to a
 /// constant factor and carries that EF function's key (DESIGN.md section 5:
-/// identities from shared input vertices).
+/// identities from shared input vertices). Otherwise it carries a key of the line's
+/// input vertices and the spiral's features, so that the same SF function built for
+/// two curves has its roots recognised as one.
 std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, const SpiralPoints& end,
                                                   const SegmentEnd& endFeatures);
 

@@ -27,7 +27,7 @@ class AngleFunction {
   /// key have the same roots, so their roots are told apart by their index alone
   /// (a combinatorial identity rule, DESIGN.md section 5). Keys are chosen by the
   /// caller from input feature indices and are only compared within one AngleAlgebra.
-  using RootKey = std::array<std::uint32_t, 6>;
+  using RootKey = std::array<std::uint32_t, 9>;
 
   /// `formula(NumberType<T>{}, chart)` returns the chart's Polynomial<T>, computed
   /// from double inputs; it is written once for every number type.
