@@ -417,22 +417,42 @@ class PatchSweep {
 
 }  // namespace
 
-Sign crossingOrder(const PatchGeometry& patch, const PatchGeometry& first, const PatchGeometry& second,
-                   const AlgebraicAngle& rationalAngle, AngleAlgebra& algebra) {
+namespace {
+
+/// The sign of value(cosine, sine) at a rational angle: adaptively when its t is a
+/// double, exactly otherwise.
+template <class Value>
+Sign signAtRationalAngle(const AlgebraicAngle& rationalAngle, PredicateKind kind, AngleAlgebra& algebra,
+                         const Value& value) {
   if (rationalAngle.lower() == rationalAngle.upper()) {
     const HalfAngle at{rationalAngle.chart(), rationalAngle.lower()};
-    return AdaptiveSignEngine(algebra.statistics()).sign(PredicateKind::CrossingOrder, [&](auto type) {
+    return AdaptiveSignEngine(algebra.statistics()).sign(kind, [&](auto type) {
       using T = typename decltype(type)::type;
       T cosine, sine;
       at.cosSin(cosine, sine);
-      return crossingOrderValue(patch, first, second, cosine, sine);
+      return value(cosine, sine);
     });
   }
-  // A rational angle that is not a double: exactly.
   const Rational t = rationalAngle.root().lo, w = 1 + t * t, chartSign(rationalAngle.chart() == 0 ? 1 : -1);
   const Rational cosine = chartSign * (1 - t * t) / w, sine = chartSign * 2 * t / w;
-  algebra.statistics().recordDecision(PredicateKind::CrossingOrder, static_cast<int>(PrecisionLevel::Exact));
-  return exactSign(crossingOrderValue(patch, first, second, cosine, sine));
+  algebra.statistics().recordDecision(kind, static_cast<int>(PrecisionLevel::Exact));
+  return exactSign(value(cosine, sine));
+}
+
+}  // namespace
+
+Sign crossingOrder(const PatchGeometry& patch, const PatchGeometry& first, const PatchGeometry& second,
+                   const AlgebraicAngle& rationalAngle, AngleAlgebra& algebra) {
+  return signAtRationalAngle(rationalAngle, PredicateKind::CrossingOrder, algebra, [&](const auto& cosine, const auto& sine) {
+    return crossingOrderValue(patch, first, second, cosine, sine);
+  });
+}
+
+Sign sideOfEnd(const PatchGeometry& patch, int k, const PatchGeometry& other, const AlgebraicAngle& rationalAngle,
+               AngleAlgebra& algebra) {
+  return signAtRationalAngle(rationalAngle, PredicateKind::SpiralFacet, algebra, [&](const auto& cosine, const auto& sine) {
+    return lineAtEnd(patch, k, other, cosine, sine);
+  });
 }
 
 std::vector<PatchSubdivision> patchSubdivisions(const std::vector<PatchGeometry>& patches,

@@ -30,7 +30,7 @@ struct SegmentEnd {
 /// The two ends of a patch's segment at every angle of its range. They are ordered
 /// so that ends[1] - ends[0] is the line's normal n = R a1 + a2 turned by +90
 /// degrees: walking from ends[0] to ends[1], the free side (the line's positive
-/// side) is on the left.
+/// side) is on the right.
 struct PatchSegment {
   std::array<SegmentEnd, 2> ends;
 };

@@ -16,8 +16,8 @@ namespace freespace {
 struct PatchSlab {
   AlgebraicAngle from;
   AlgebraicAngle to;
-  /// A rational angle strictly inside (from equal to `to` when the slab is a whole
-  /// circle without events).
+  /// A rational angle strictly inside. A whole circle from an event back to it has
+  /// `from` equal to `to`; a whole circle without events has all three equal.
   AlgebraicAngle sample;
   /// The curves that cross the segment in the slab, by increasing lambda.
   std::vector<std::uint32_t> curves;
@@ -39,6 +39,11 @@ struct PatchSubdivision {
 /// `first`'s crossing is nearer end 0.
 Sign crossingOrder(const PatchGeometry& patch, const PatchGeometry& first, const PatchGeometry& second,
                    const AlgebraicAngle& rationalAngle, AngleAlgebra& algebra);
+
+/// The side of `other`'s line that end k of `patch`'s segment lies on, at a rational
+/// angle (the sign of the SF value there).
+Sign sideOfEnd(const PatchGeometry& patch, int k, const PatchGeometry& other, const AlgebraicAngle& rationalAngle,
+               AngleAlgebra& algebra);
 
 /// The subdivision of every patch. The events of a patch are the ends of its range's
 /// arcs, the ends of its curves' arcs, its vertices and its overlaps. Between two

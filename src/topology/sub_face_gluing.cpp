@@ -1,0 +1,157 @@
+#include "freespace/topology/sub_face_gluing.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+#include <stdexcept>
+#include <tuple>
+
+#include "freespace/numbers/half_angle.h"
+
+namespace freespace {
+
+namespace {
+
+/// Keeps each glued pair of sub-faces once (the first angle it was seen at).
+class GlueList {
+ public:
+  void add(SubFaceId a, SubFaceId b, GluedEdge edge, const AlgebraicAngle& at) {
+    if (std::make_pair(b.patch, b.face) < std::make_pair(a.patch, a.face)) std::swap(a, b);
+    if (seen_.insert({a.patch, a.face, b.patch, b.face}).second) glues_.push_back({a, b, edge, at});
+  }
+  std::vector<SubFaceGlue> take() { return std::move(glues_); }
+
+ private:
+  std::set<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> seen_;
+  std::vector<SubFaceGlue> glues_;
+};
+
+std::uint32_t otherPatch(const PatchCurve& curve, std::uint32_t patch) {
+  return curve.first == patch ? curve.second : curve.first;
+}
+
+/// The sub-face of the slab on the side of `curve` (at index `at` of its curves)
+/// that holds end 1 of the segment when `towardEnd1`, else end 0.
+std::uint32_t faceBeside(const PatchSlab& slab, std::size_t at, bool towardEnd1) {
+  return slab.faces[towardEnd1 ? at + 1 : at];
+}
+
+std::size_t indexOf(const PatchSlab& slab, std::uint32_t curve) {
+  const auto found = std::find(slab.curves.begin(), slab.curves.end(), curve);
+  if (found == slab.curves.end()) throw std::logic_error("glueAcrossCurves: a curve is missing from a slab");
+  return static_cast<std::size_t>(found - slab.curves.begin());
+}
+
+/// cos and sin of a rational angle, exactly.
+std::pair<Rational, Rational> exactCosSin(const AlgebraicAngle& rationalAngle) {
+  Rational cosine, sine;
+  if (rationalAngle.lower() == rationalAngle.upper()) {
+    HalfAngle{rationalAngle.chart(), rationalAngle.lower()}.cosSin(cosine, sine);
+    return {cosine, sine};
+  }
+  const Rational t = rationalAngle.root().lo, w = 1 + t * t, chartSign(rationalAngle.chart() == 0 ? 1 : -1);
+  return {chartSign * (1 - t * t) / w, chartSign * 2 * t / w};
+}
+
+/// A segment leaving a spiral's point: its patch, which of its ends the spiral is,
+/// and its direction from the point.
+struct Spoke {
+  std::uint32_t patch;
+  int end;
+  std::array<Rational, 2> direction;
+};
+
+/// Counterclockwise order of directions, starting along +x.
+bool before(const std::array<Rational, 2>& a, const std::array<Rational, 2>& b) {
+  const auto half = [](const std::array<Rational, 2>& u) { return u[1] > 0 || (u[1] == 0 && u[0] > 0) ? 0 : 1; };
+  if (half(a) != half(b)) return half(a) < half(b);
+  return a[0] * b[1] - a[1] * b[0] > 0;
+}
+
+}  // namespace
+
+const PatchSlab* slabAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
+  for (const PatchSlab& slab : subdivision.slabs) {
+    const int order = algebra.compare(slab.from, slab.to);
+    // A slab from an event back to itself runs once around; one whose sample is its
+    // `from` too is a whole circle without events.
+    if (order == 0) {
+      if (algebra.compare(slab.from, angle) != 0 || algebra.compare(slab.from, slab.sample) == 0) return &slab;
+      continue;
+    }
+    if (algebra.contains(AngleInterval{slab.from, slab.to, order > 0}, angle, AngleAlgebra::Boundary::Excluded)) {
+      return &slab;
+    }
+  }
+  return nullptr;
+}
+
+std::vector<SubFaceGlue> glueAcrossCurves(const std::vector<PatchGeometry>& patches,
+                                          const std::vector<PatchCurve>& curves,
+                                          const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
+  GlueList glues;
+  for (std::uint32_t f = 0; f < patches.size(); ++f) {
+    for (const PatchSlab& slab : subdivisions[f].slabs) {
+      for (std::size_t i = 0; i < slab.curves.size(); ++i) {
+        const std::uint32_t g = otherPatch(curves[slab.curves[i]], f);
+        if (g < f) continue;  // each curve from its first patch's slabs
+        const PatchSlab* across = slabAt(subdivisions[g], slab.sample, algebra);
+        if (!across) throw std::logic_error("glueAcrossCurves: a curve's other patch has no slab there");
+        // f's half on g's positive side is the one holding f's end that is there.
+        const bool fTowardEnd1 = sideOfEnd(patches[f], 1, patches[g], slab.sample, algebra) == Sign::Positive;
+        const bool gTowardEnd1 = sideOfEnd(patches[g], 1, patches[f], slab.sample, algebra) == Sign::Positive;
+        glues.add({f, faceBeside(slab, i, fTowardEnd1)},
+                  {g, faceBeside(*across, indexOf(*across, slab.curves[i]), gTowardEnd1)}, GluedEdge::Curve,
+                  slab.sample);
+      }
+    }
+  }
+  return glues.take();
+}
+
+std::vector<SubFaceGlue> glueAroundSpirals(const std::vector<PatchGeometry>& patches,
+                                           const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
+  std::map<std::tuple<bool, std::uint32_t, std::uint32_t, std::uint32_t>, std::vector<std::pair<std::uint32_t, int>>>
+      bySpiral;
+  for (std::uint32_t patch = 0; patch < patches.size(); ++patch) {
+    for (int k = 0; k < 2; ++k) {
+      const SegmentEnd& end = patches[patch].segment.ends[k];
+      bySpiral[{end.robotVertex, end.vertex, end.edge[0], end.edge[1]}].push_back({patch, k});
+    }
+  }
+  GlueList glues;
+  for (const auto& [spiral, around] : bySpiral) {
+    if (around.size() < 2) continue;
+    for (const auto& [patch, unusedEnd] : around) {
+      for (const PatchSlab& slab : subdivisions[patch].slabs) {
+        const auto [cosine, sine] = exactCosSin(slab.sample);
+        std::vector<Spoke> spokes;
+        std::vector<const PatchSlab*> slabs;
+        for (const auto& [other, k] : around) {
+          const PatchSlab* at = other == patch ? &slab : slabAt(subdivisions[other], slab.sample, algebra);
+          if (!at) continue;
+          const auto from = spiralPoint(spiralOf<Rational>(patches[other].ends[k]), cosine, sine);
+          const auto to = spiralPoint(spiralOf<Rational>(patches[other].ends[1 - k]), cosine, sine);
+          spokes.push_back({other, k, {to[0] - from[0], to[1] - from[1]}});
+          slabs.push_back(at);
+        }
+        std::vector<std::size_t> order(spokes.size());
+        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+        std::sort(order.begin(), order.end(),
+                  [&](std::size_t a, std::size_t b) { return before(spokes[a].direction, spokes[b].direction); });
+        // The sector counterclockwise from spoke a to the next spoke b: a's positive
+        // side (right of end 0 -> end 1, PatchSegment) faces it when the spiral is a's
+        // end 1, b's when it is b's end 0.
+        for (std::size_t i = 0; i < order.size() && order.size() > 1; ++i) {
+          const std::size_t a = order[i], b = order[(i + 1) % order.size()];
+          if (spokes[a].end != 1 || spokes[b].end != 0) continue;
+          glues.add({spokes[a].patch, slabs[a]->faces.back()}, {spokes[b].patch, slabs[b]->faces.front()},
+                    GluedEdge::Spiral, slab.sample);
+        }
+      }
+    }
+  }
+  return glues.take();
+}
+
+}  // namespace freespace
