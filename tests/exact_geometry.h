@@ -4,6 +4,7 @@
 // computed straight from its definition, independently of the library's formulas.
 
 #include "freespace/geometry/mesh.h"
+#include "freespace/geometry/patch_geometry.h"
 #include "freespace/numbers/algebraic_angle.h"
 #include "freespace/numbers/angle_polynomial.h"
 #include "freespace/numbers/half_angle.h"
@@ -63,6 +64,20 @@ inline Rational lineValue(const PatchLine<Rational>& line, const ExactRotation& 
   const Rational nx = r.cosine * line.a1x - r.sine * line.a1y + line.a2x;
   const Rational ny = r.sine * line.a1x + r.cosine * line.a1y + line.a2y;
   return nx * d.x + ny * d.y + line.k1 * r.sine + line.k2 * r.cosine + line.k3;
+}
+
+/// A patch's segment at a rational angle: its exact ends and its line n . d + w = 0.
+struct ExactSlice {
+  std::array<Rational, 2> end0, end1;
+  Rational nx, ny, w;
+
+  Rational valueAt(const std::array<Rational, 2>& point) const { return nx * point[0] + ny * point[1] + w; }
+};
+
+inline ExactSlice sliceOf(const PatchGeometry& patch, const ExactRotation& r) {
+  const LineAtAngle<Rational> line = lineAtAngle(lineOf<Rational>(patch.line), r.cosine, r.sine);
+  return {spiralPoint(spiralOf<Rational>(patch.ends[0]), r.cosine, r.sine),
+          spiralPoint(spiralOf<Rational>(patch.ends[1]), r.cosine, r.sine), line.nx, line.ny, line.w};
 }
 
 }  // namespace freespace::testing

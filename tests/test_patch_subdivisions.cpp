@@ -19,20 +19,6 @@ using namespace freespace::testing;
 
 namespace {
 
-/// A patch's segment at a rational angle: its exact ends and line.
-struct ExactSlice {
-  std::array<Rational, 2> end0, end1;
-  Rational nx, ny, w;
-
-  Rational valueAt(const std::array<Rational, 2>& point) const { return nx * point[0] + ny * point[1] + w; }
-};
-
-ExactSlice sliceOf(const PatchGeometry& patch, const ExactRotation& r) {
-  const LineAtAngle<Rational> line = lineAtAngle(lineOf<Rational>(patch.line), r.cosine, r.sine);
-  return {spiralPoint(spiralOf<Rational>(patch.ends[0]), r.cosine, r.sine),
-          spiralPoint(spiralOf<Rational>(patch.ends[1]), r.cosine, r.sine), line.nx, line.ny, line.w};
-}
-
 bool strictlyOpposite(const Rational& a, const Rational& b) { return signOfRational(a) * signOfRational(b) < 0; }
 
 /// Whether the segments of a and b at a rational angle whose parameter is a double

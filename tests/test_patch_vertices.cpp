@@ -35,25 +35,13 @@ Triple orderedTriple(const PatchVertex& vertex) {
   return triple;
 }
 
-struct ExactSlice {
-  Rational nx, ny, w;  // the line n . d + w = 0
-  std::array<Rational, 2> from, to;
-};
-
-ExactSlice sliceOf(const PatchGeometry& patch, const ExactRotation& r) {
-  const PatchLine<Rational> line = lineOf<Rational>(patch.line);
-  const LineAtAngle<Rational> at = lineAtAngle(line, r.cosine, r.sine);
-  return {at.nx, at.ny, at.w, spiralPoint(spiralOf<Rational>(patch.ends[0]), r.cosine, r.sine),
-          spiralPoint(spiralOf<Rational>(patch.ends[1]), r.cosine, r.sine)};
-}
-
 int side(const ExactSlice& line, const std::array<Rational, 2>& point) {
-  return signOfRational(line.nx * point[0] + line.ny * point[1] + line.w);
+  return signOfRational(line.valueAt(point));
 }
 
 /// Whether the two segments cross at a point inside both (no end on the other line).
 bool crossProperly(const ExactSlice& a, const ExactSlice& b) {
-  const int a0 = side(b, a.from), a1 = side(b, a.to), b0 = side(a, b.from), b1 = side(a, b.to);
+  const int a0 = side(b, a.end0), a1 = side(b, a.end1), b0 = side(a, b.end0), b1 = side(a, b.end1);
   return a0 != 0 && a0 == -a1 && b0 != 0 && b0 == -b1;
 }
 
@@ -277,17 +265,17 @@ int wrongOverlaps(const std::vector<PatchGeometry>& patches, const std::vector<P
       const ExactSlice fixedAfter = sliceOf(fixedPatch, after), movingAfter = sliceOf(movingPatch, after);
       const auto shared = [&](int k, int j) { return movingPatch.segment.ends[k] == fixedPatch.segment.ends[j]; };
       for (int k = 0; k < 2; ++k) {
-        const std::array<Rational, 2>& end = k == 0 ? moving.from : moving.to;
-        const std::array<Rational, 2>& endAfter = k == 0 ? movingAfter.from : movingAfter.to;
+        const std::array<Rational, 2>& end = k == 0 ? moving.end0 : moving.end1;
+        const std::array<Rational, 2>& endAfter = k == 0 ? movingAfter.end0 : movingAfter.end1;
         if (!shared(k, 0) && !shared(k, 1)) right = right && side(fixed, end) * side(fixedAfter, endAfter) < 0;
       }
-      const Rational dx = fixed.to[0] - fixed.from[0], dy = fixed.to[1] - fixed.from[1];
+      const Rational dx = fixed.end1[0] - fixed.end0[0], dy = fixed.end1[1] - fixed.end0[1];
       const auto along = [&](const std::array<Rational, 2>& point, const std::array<Rational, 2>& from) {
         return (point[0] - from[0]) * dx + (point[1] - from[1]) * dy;
       };
-      const bool beforeStart = along(moving.from, fixed.from) < 0 || along(moving.to, fixed.from) < 0 ||
+      const bool beforeStart = along(moving.end0, fixed.end0) < 0 || along(moving.end1, fixed.end0) < 0 ||
                                shared(0, 0) || shared(1, 0);
-      const bool afterEnd = along(moving.from, fixed.to) > 0 || along(moving.to, fixed.to) > 0 || shared(0, 1) ||
+      const bool afterEnd = along(moving.end0, fixed.end1) > 0 || along(moving.end1, fixed.end1) > 0 || shared(0, 1) ||
                             shared(1, 1);
       right = right && beforeStart == overlap.reachesEnd[p][0] && afterEnd == overlap.reachesEnd[p][1];
     }

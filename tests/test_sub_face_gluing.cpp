@@ -30,22 +30,10 @@ const Rational kSmallestDelta = [] {
   return delta;
 }();
 
-struct Slice {
-  Point end0, end1;
-  Rational nx, ny, w;
-  Rational valueAt(const Point& p) const { return nx * p[0] + ny * p[1] + w; }
-};
-
-Slice sliceOf(const PatchGeometry& patch, const ExactRotation& r) {
-  const LineAtAngle<Rational> line = lineAtAngle(lineOf<Rational>(patch.line), r.cosine, r.sine);
-  return {spiralPoint(spiralOf<Rational>(patch.ends[0]), r.cosine, r.sine),
-          spiralPoint(spiralOf<Rational>(patch.ends[1]), r.cosine, r.sine), line.nx, line.ny, line.w};
-}
-
-int sideOf(const Slice& s, const Point& p) { return signOfRational(s.valueAt(p)); }
+int sideOf(const ExactSlice& s, const Point& p) { return signOfRational(s.valueAt(p)); }
 
 /// Whether the closed segment pq meets the segment of s (exact orientation tests).
-bool meets(const Point& p, const Point& q, const Slice& s) {
+bool meets(const Point& p, const Point& q, const ExactSlice& s) {
   const ExactPoint2 a{p[0], p[1]}, b{q[0], q[1]}, c{s.end0[0], s.end0[1]}, d{s.end1[0], s.end1[1]};
   const int abc = orientation(a, b, c), abd = orientation(a, b, d), cda = orientation(c, d, a), cdb = orientation(c, d, b);
   return abc * abd <= 0 && cda * cdb <= 0 && !(abc == 0 && abd == 0 && cda == 0 && cdb == 0);
@@ -58,11 +46,11 @@ Point along(const Point& from, const Point& direction, const Rational& scale) {
 /// The sub-face of `patch` at point p of its segment (p on its line) in `slab`.
 std::uint32_t faceAt(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
                      std::uint32_t patch, const PatchSlab& slab, const ExactRotation& r, const Point& p) {
-  const Slice own = sliceOf(patches[patch], r);
+  const ExactSlice own = sliceOf(patches[patch], r);
   std::size_t gap = 0;
   for (std::uint32_t curve : slab.curves) {
     const std::uint32_t other = curves[curve].first == patch ? curves[curve].second : curves[curve].first;
-    const Slice s = sliceOf(patches[other], r);
+    const ExactSlice s = sliceOf(patches[other], r);
     // p is past the crossing when it is on the side of s's line opposite end 0.
     gap += sideOf(s, p) != sideOf(s, own.end0);
   }
@@ -116,7 +104,7 @@ class SliceAt {
 
 /// A point of patch's segment at distance ~delta from `from` toward `toward`,
 /// pushed delta^2 to the positive side.
-Point offPoint(const Slice& s, const Point& from, const Point& direction, const Rational& delta) {
+Point offPoint(const ExactSlice& s, const Point& from, const Point& direction, const Rational& delta) {
   return along(along(from, direction, delta), {s.nx, s.ny}, delta * delta);
 }
 
@@ -124,7 +112,7 @@ bool curveGlueHolds(const std::vector<PatchGeometry>& patches, const std::vector
                     const std::vector<PatchSubdivision>& subdivisions, const SubFaceGlue& glue, AngleAlgebra& algebra) {
   const SliceAt slice(patches, glue.at, algebra);
   const std::uint32_t f = glue.first.patch, g = glue.second.patch;
-  const Slice sf = sliceOf(patches[f], slice.rotation), sg = sliceOf(patches[g], slice.rotation);
+  const ExactSlice sf = sliceOf(patches[f], slice.rotation), sg = sliceOf(patches[g], slice.rotation);
   // The crossing of the two lines (Cramer's rule).
   const Rational det = sf.nx * sg.ny - sf.ny * sg.nx;
   const Point x{(sf.ny * sg.w - sg.ny * sf.w) / det, (sg.nx * sf.w - sf.nx * sg.w) / det};
@@ -150,7 +138,7 @@ bool spiralGlueHolds(const std::vector<PatchGeometry>& patches, const std::vecto
                      const std::vector<PatchSubdivision>& subdivisions, const SubFaceGlue& glue, AngleAlgebra& algebra) {
   const SliceAt slice(patches, glue.at, algebra);
   const std::uint32_t a = glue.first.patch, b = glue.second.patch;
-  const Slice sa = sliceOf(patches[a], slice.rotation), sb = sliceOf(patches[b], slice.rotation);
+  const ExactSlice sa = sliceOf(patches[a], slice.rotation), sb = sliceOf(patches[b], slice.rotation);
   const PatchSlab *slabA = slabAt(subdivisions[a], glue.at, algebra), *slabB = slabAt(subdivisions[b], glue.at, algebra);
   if (!slabA || !slabB) return false;
   for (int ka = 0; ka < 2; ++ka) {
