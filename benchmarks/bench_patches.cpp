@@ -1,6 +1,7 @@
 // The first construction stages on the bundled scenes: perturb the meshes, build
 // their topology, enumerate VF, FV and EE patches, their segments, curves, overlaps
-// and vertices, and subdivide every patch into sub-faces. Prints, per scene, the counts, the time of each step, and how the
+// and vertices, subdivide every patch into sub-faces and glue sub-faces across
+// curves and around spirals. Prints, per scene, the counts, the time of each step, and how the
 // predicates were decided (the share decided in double intervals is the robust
 // layer's target, at least 95%).
 //
@@ -16,6 +17,7 @@
 #include "freespace/geometry/patch_vertex.h"
 #include "freespace/geometry/perturbed_meshes.h"
 #include "freespace/problem/planar_problem.h"
+#include "freespace/topology/sub_face_gluing.h"
 
 using namespace freespace;
 
@@ -59,17 +61,23 @@ void measure(const std::string& cfg) {
   const auto vertices = patchVertices(geometries, curves, overlaps, algebra);
   const double vertexSeconds = secondsSince(start);
   start = std::chrono::steady_clock::now();
-  std::size_t slabs = 0, subFaces = 0;
+  std::size_t slabs = 0, subFaces = 0, curveGlues = 0, spiralGlues = 0;
   std::string subdivisionFailure;
+  double subdivisionSeconds = 0, gluingSeconds = 0;
   try {
-    for (const PatchSubdivision& subdivision : patchSubdivisions(geometries, curves, vertices, overlaps, algebra)) {
+    const std::vector<PatchSubdivision> subdivisions = patchSubdivisions(geometries, curves, vertices, overlaps, algebra);
+    for (const PatchSubdivision& subdivision : subdivisions) {
       slabs += subdivision.slabs.size();
       subFaces += subdivision.faceCount;
     }
+    subdivisionSeconds = secondsSince(start);
+    start = std::chrono::steady_clock::now();
+    curveGlues = glueAcrossCurves(geometries, curves, subdivisions, algebra).size();
+    spiralGlues = glueAroundSpirals(geometries, subdivisions, algebra).size();
+    gluingSeconds = secondsSince(start);
   } catch (const std::logic_error& error) {
     subdivisionFailure = std::string(" FAILED: ") + error.what();
   }
-  const double subdivisionSeconds = secondsSince(start);
   std::cout << std::filesystem::path(cfg).stem().string() << ": robot " << meshes.robot.triangles().size()
             << " triangles, world " << meshes.world.triangles().size() << " triangles; " << vertexFacet.size()
             << " VF/FV patches, " << edgeEdge.size() << " EE patches; seconds: perturb " << perturbSeconds
@@ -77,7 +85,8 @@ void measure(const std::string& cfg) {
             << pairSeconds << " (" << pairs.size() << "), curves " << curveSeconds << " (" << curves.size() << "), overlaps " << overlapSeconds << " (" << overlaps.size()
             << "), vertices "
             << vertexSeconds << " (" << vertices.size() << "), subdivision " << subdivisionSeconds << " (" << slabs
-            << " slabs, " << subFaces << " sub-faces" << subdivisionFailure << ")"
+            << " slabs, " << subFaces << " sub-faces" << subdivisionFailure << "), gluing " << gluingSeconds << " ("
+            << curveGlues << " across curves, " << spiralGlues << " around spirals)"
             << "; decided in double intervals " << std::setprecision(4) << 100 * statistics.doubleIntervalFraction()
             << "%\n"
             << statistics.toText();
