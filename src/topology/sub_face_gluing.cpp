@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 #include <tuple>
@@ -70,32 +71,65 @@ bool before(const std::array<Rational, 2>& a, const std::array<Rational, 2>& b) 
 
 }  // namespace
 
-const PatchSlab* slabAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
-  for (const PatchSlab& slab : subdivision.slabs) {
-    const int order = algebra.compare(slab.from, slab.to);
-    // A slab from an event back to itself runs once around; one whose sample is its
-    // `from` too is a whole circle without events.
-    if (order == 0) {
-      if (algebra.compare(slab.from, angle) != 0 || algebra.compare(slab.from, slab.sample) == 0) return &slab;
-      continue;
-    }
-    if (algebra.contains(AngleInterval{slab.from, slab.to, order > 0}, angle, AngleAlgebra::Boundary::Excluded)) {
-      return &slab;
-    }
+namespace {
+
+bool holds(const PatchSlab& slab, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
+  const int order = algebra.compare(slab.from, slab.to);
+  // A slab from an event back to itself runs once around; one whose sample is its
+  // `from` too is a whole circle without events.
+  if (order == 0) return algebra.compare(slab.from, angle) != 0 || algebra.compare(slab.from, slab.sample) == 0;
+  return algebra.contains(AngleInterval{slab.from, slab.to, order > 0}, angle, AngleAlgebra::Boundary::Excluded);
+}
+
+/// The index of the slab holding `angle`, searched from `start` on (wrapping): the
+/// gluing asks for rising angles, so the search usually ends at once.
+std::optional<std::size_t> slabIndexAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle,
+                                       AngleAlgebra& algebra, std::size_t start) {
+  const std::size_t count = subdivision.slabs.size();
+  for (std::size_t step = 0; step < count; ++step) {
+    const std::size_t i = (start + step) % count;
+    if (holds(subdivision.slabs[i], angle, algebra)) return i;
   }
-  return nullptr;
+  return std::nullopt;
+}
+
+/// Remembers, per patch, where the last search ended.
+class SlabCursor {
+ public:
+  SlabCursor(const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra)
+      : subdivisions_(subdivisions), algebra_(algebra), last_(subdivisions.size(), 0) {}
+
+  const PatchSlab* at(std::uint32_t patch, const AlgebraicAngle& angle) {
+    const auto found = slabIndexAt(subdivisions_[patch], angle, algebra_, last_[patch]);
+    if (!found) return nullptr;
+    last_[patch] = *found;
+    return &subdivisions_[patch].slabs[*found];
+  }
+
+ private:
+  const std::vector<PatchSubdivision>& subdivisions_;
+  AngleAlgebra& algebra_;
+  std::vector<std::size_t> last_;
+};
+
+}  // namespace
+
+const PatchSlab* slabAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
+  const auto found = slabIndexAt(subdivision, angle, algebra, 0);
+  return found ? &subdivision.slabs[*found] : nullptr;
 }
 
 std::vector<SubFaceGlue> glueAcrossCurves(const std::vector<PatchGeometry>& patches,
                                           const std::vector<PatchCurve>& curves,
                                           const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
   GlueList glues;
+  SlabCursor slabs(subdivisions, algebra);
   for (std::uint32_t f = 0; f < patches.size(); ++f) {
     for (const PatchSlab& slab : subdivisions[f].slabs) {
       for (std::size_t i = 0; i < slab.curves.size(); ++i) {
         const std::uint32_t g = otherPatch(curves[slab.curves[i]], f);
         if (g < f) continue;  // each curve from its first patch's slabs
-        const PatchSlab* across = slabAt(subdivisions[g], slab.sample, algebra);
+        const PatchSlab* across = slabs.at(g, slab.sample);
         if (!across) throw std::logic_error("glueAcrossCurves: a curve's other patch has no slab there");
         // f's half on g's positive side is the one holding f's end that is there.
         const bool fTowardEnd1 = sideOfEnd(patches[f], 1, patches[g], slab.sample, algebra) == Sign::Positive;
@@ -120,6 +154,7 @@ std::vector<SubFaceGlue> glueAroundSpirals(const std::vector<PatchGeometry>& pat
     }
   }
   GlueList glues;
+  SlabCursor cursor(subdivisions, algebra);
   for (const auto& [spiral, around] : bySpiral) {
     if (around.size() < 2) continue;
     for (const auto& [patch, unusedEnd] : around) {
@@ -128,7 +163,7 @@ std::vector<SubFaceGlue> glueAroundSpirals(const std::vector<PatchGeometry>& pat
         std::vector<Spoke> spokes;
         std::vector<const PatchSlab*> slabs;
         for (const auto& [other, k] : around) {
-          const PatchSlab* at = other == patch ? &slab : slabAt(subdivisions[other], slab.sample, algebra);
+          const PatchSlab* at = other == patch ? &slab : cursor.at(other, slab.sample);
           if (!at) continue;
           const auto from = spiralPoint(spiralOf<Rational>(patches[other].ends[k]), cosine, sine);
           const auto to = spiralPoint(spiralOf<Rational>(patches[other].ends[1 - k]), cosine, sine);
