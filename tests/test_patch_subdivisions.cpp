@@ -135,7 +135,8 @@ void checkPaths(const std::vector<PatchGeometry>& patches, const std::vector<Pat
   const std::size_t count = subdivision.slabs.size();
   for (std::size_t from = 0; from + 1 < count; ++from) {
     std::size_t to = from + 1;
-    while (to + 1 < count && slabsFollow(subdivision, to, algebra) && std::uniform_int_distribution<int>(0, 1)(random)) {
+    while (to + 1 < count && slabsFollow(subdivision, to + 1, algebra) &&
+           std::uniform_int_distribution<int>(0, 1)(random)) {
       ++to;
     }
     bool follow = true;

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <optional>
 
@@ -300,6 +301,12 @@ TEST(PatchOverlaps, BundledScenesReachTheEndsTheOtherSegmentRunsBeyond) {
     BundledScene scene(name);
     const std::vector<PatchOverlap> overlaps = patchOverlaps(scene.geometries, scene.algebra);
     EXPECT_GT(overlaps.size(), 0u) << name;
+    // Of both kinds: two contacts with one facet, and two EE contacts hinged at one edge.
+    const auto hinged = std::count_if(overlaps.begin(), overlaps.end(), [&](const PatchOverlap& overlap) {
+      return scene.geometries[overlap.patches[0]].patch.contact.kind == ContactKind::EdgeEdge;
+    });
+    EXPECT_GT(hinged, 0) << name;
+    EXPECT_LT(hinged, static_cast<long>(overlaps.size())) << name;
     EXPECT_EQ(wrongOverlaps(scene.geometries, overlaps), 0) << name << ", of " << overlaps.size();
   }
 }

@@ -64,9 +64,9 @@ std::optional<AngleFunction::RootKey> spiralFacetKey(const ContactPoints& line, 
   if (!end.robotVertex && contains({v0, v1}, e0) && contains({v0, v1}, e1)) return detail::edgeFacetKey(true, v0, v1, {v2, v3, v});
   // An end of one edge on an edge sharing an end with the other: the first edge
   // passes through the plane of the two others' edges, and lies in it.
-  const auto hinge = [](std::uint32_t e0, std::uint32_t e1, std::uint32_t f0, std::uint32_t f1) -> std::optional<std::uint32_t> {
-    if (e0 == f0 || e0 == f1) return e1;
-    if (e1 == f0 || e1 == f1) return e0;
+  const auto hinge = [](std::uint32_t a, std::uint32_t b, std::uint32_t f0, std::uint32_t f1) -> std::optional<std::uint32_t> {
+    if (a == f0 || a == f1) return b;
+    if (b == f0 || b == f1) return a;
     return std::nullopt;
   };
   if (end.robotVertex && contains({v0, v1}, v)) {
@@ -143,8 +143,6 @@ Box toBox(const PatchBox& box) {
   return {BoxPoint(box.low[0], box.low[1], box.low[2]), BoxPoint(box.high[0], box.high[1], box.high[2])};
 }
 
-}  // namespace
-
 /// The key of any SF function: the line's contact kind and input vertices, and the
 /// spiral's vertex and edge, which determine the function up to the line's sign
 /// (kinds 2 to 7, apart from the EF keys' 0 and 1).
@@ -153,6 +151,8 @@ AngleFunction::RootKey spiralLineKey(const ContactPoints& line, const SegmentEnd
   const auto& v = line.vertices;
   return {kind, v[0], v[1], v[2], v[3], end.vertex, end.edge[0], end.edge[1], 0};
 }
+
+}  // namespace
 
 std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, const SpiralPoints& end,
                                                   const SegmentEnd& endFeatures) {

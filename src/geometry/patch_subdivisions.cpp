@@ -1,7 +1,6 @@
 #include "freespace/geometry/patch_subdivision.h"
 
 #include <algorithm>
-#include <numeric>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -59,15 +58,16 @@ AngleFunction endValueDifference(const PatchGeometry& patch, const PatchGeometry
   });
 }
 
-/// An event of one patch: the angle, the curve of the patch it involves (none for an
-/// end of the patch's range or an overlap), whether it is an overlap (a horizontal
-/// cut), and the ends of the patch's segment the event's point or cut reaches.
 /// Names the point of the patch where an event's curve crosses the segment, when a
 /// combinatorial rule knows it (kind first, 0 for unnamed, then the rule's indices):
 /// curves at one named point cross there together, with no exact test.
 using PointKey = std::array<std::uint32_t, 7>;
 constexpr std::uint32_t kUnnamed = 0, kSpiralPoint = 1, kHorizontalEdge = 2, kVertexPoint = 3;
 
+/// An event of one patch: the angle, the curve of the patch it involves (none for an
+/// end of the patch's range or an overlap), whether it is an overlap (a horizontal
+/// cut), the ends of the patch's segment the event's point or cut reaches, and the
+/// point's name when known.
 struct PatchEvent {
   AlgebraicAngle angle;
   std::uint32_t curve = kNoCurve;
@@ -157,16 +157,18 @@ class PatchSweep {
       const SegmentEnd& spiral = patches_[otherPatch(curve)].segment.ends[k];
       return {kSpiralPoint, spiral.robotVertex, spiral.vertex, spiral.edge[0], spiral.edge[1], 0, 0};
     }
-    if (cause.rangeEnd[other] && angle.function() && angle.function()->key()) {
-      const AngleFunction::RootKey& key = *angle.function()->key();
-      return {kHorizontalEdge, key[0], key[1], key[2], key[3], key[4], key[5]};
+    // Only EF keys (kinds 0 and 1, six entries) name a range end's function.
+    const auto& key = angle.function() ? angle.function()->key() : std::nullopt;
+    if (cause.rangeEnd[other] && key && (*key)[0] <= 1) {
+      return {kHorizontalEdge, (*key)[0], (*key)[1], (*key)[2], (*key)[3], (*key)[4], (*key)[5]};
     }
     return {};
   }
 
   /// At a vertex of three crossing patches, the patch's curves with the other two
   /// swap. At a vertex on an overlap the crossing patch's two curves swap, and on
-  /// each parallel patch only its curve with the crossing patch takes part.
+  /// each of the two coincident patches only its curve with the crossing patch takes
+  /// part.
   void addVertex(const PatchVertex& vertex, std::uint32_t index) {
     const bool onParallelPatch = vertex.crossing >= 0 && vertex.patches[vertex.crossing] != patch_;
     for (std::uint32_t other : vertex.patches) {
@@ -302,6 +304,18 @@ class PatchSweep {
   void joinAtPoints(std::size_t left, std::size_t right, const EventGroup& group) {
     const PatchSlab &l = subdivision_.slabs[left], &r = subdivision_.slabs[right];
     const auto [rank, last] = ranksAt(group, l.curves, r.curves);
+    // Each slab's curves must meet the event's angle in their order, and the curves
+    // not at the event in the same order on both sides (else an event is missing).
+    for (const std::vector<std::uint32_t>* curves : {&l.curves, &r.curves}) {
+      for (std::size_t i = 1; i < curves->size(); ++i) {
+        if (rank.at((*curves)[i - 1]) > rank.at((*curves)[i])) {
+          fail("curves meet the event's angle out of their order", group.angle, {(*curves)[i - 1], (*curves)[i]});
+        }
+      }
+    }
+    if (involvedBlock(l.curves, group.curves).others != involvedBlock(r.curves, group.curves).others) {
+      fail("curves not at the event change order", group.angle, group.curves);
+    }
     const auto side = [&](const std::vector<std::uint32_t>& curves, std::size_t gap) {
       return std::make_pair(gap == 0 ? 0 : rank.at(curves[gap - 1]), gap == curves.size() ? last : rank.at(curves[gap]));
     };
@@ -320,9 +334,9 @@ class PatchSweep {
   }
 
   /// The ranks along the segment, at the group's angle, of the crossings of the
-  /// curves of two slabs: 0 at end 0, 1, 2, ... for distinct interior points, and
-  /// one more than the largest at end 1 (a curve ending on the segment's end), with
-  /// the rank of end 1.
+  /// curves of two slabs: 0 for end 0 and the curves that reach it, 1, 2, ... for the
+  /// distinct interior points, and one more than the last of them for end 1 and the
+  /// curves that reach it. Returns the ranks and the rank of end 1.
   std::pair<std::unordered_map<std::uint32_t, int>, int> ranksAt(const EventGroup& group, const std::vector<std::uint32_t>& left,
                                                  const std::vector<std::uint32_t>& right) {
     std::unordered_map<std::uint32_t, int> rank;
@@ -346,7 +360,7 @@ class PatchSweep {
     std::unordered_map<std::uint32_t, Sign> denominator;
     for (std::uint32_t curve : interior) {
       denominator[curve] = algebra_.signAt(endValueDifference(patches_[patch_], other(curve)), group.angle);
-      if (denominator[curve] == Sign::Zero) fail("a curve's line contains the segment", group.angle, {curve});
+      if (denominator[curve] == Sign::Zero) fail("a curve's line is parallel to the segment", group.angle, {curve});
     }
     // sign(lambda_h - lambda_g) at the event's angle.
     const auto order = [&](std::uint32_t g, std::uint32_t h) {
@@ -373,7 +387,7 @@ class PatchSweep {
     if (!before.contiguous || !after.contiguous) fail("the event's curves are not together", group.angle, group.curves);
     if (before.others != after.others) fail("curves not at the event change order", group.angle, group.curves);
     if (!before.start && !after.start) {
-      if (group.cut && group.onSide[0] && group.onSide[1]) return;  // a cut across the whole segment
+      if (group.onSide[0] && group.onSide[1]) return;  // a cut across the whole segment
       for (std::size_t gap = 0; gap < l.faces.size(); ++gap) trapezoids_.join(l.faces[gap], r.faces[gap]);
       return;
     }
@@ -433,8 +447,7 @@ Sign signAtRationalAngle(const AlgebraicAngle& rationalAngle, PredicateKind kind
       return value(cosine, sine);
     });
   }
-  const Rational t = rationalAngle.root().lo, w = 1 + t * t, chartSign(rationalAngle.chart() == 0 ? 1 : -1);
-  const Rational cosine = chartSign * (1 - t * t) / w, sine = chartSign * 2 * t / w;
+  const auto [cosine, sine] = exactCosSin(rationalAngle);
   algebra.statistics().recordDecision(kind, static_cast<int>(PrecisionLevel::Exact));
   return exactSign(value(cosine, sine));
 }

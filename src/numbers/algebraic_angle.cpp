@@ -425,6 +425,11 @@ std::optional<AlgebraicAngle> betweenInDoubles(const AlgebraicAngle& from, const
 
 }  // namespace
 
+std::pair<Rational, Rational> exactCosSin(const AlgebraicAngle& rationalAngle) {
+  const Rational t = rationalAngle.root().lo, w = 1 + t * t, chartSign(rationalAngle.chart() == 0 ? 1 : -1);
+  return {chartSign * (1 - t * t) / w, chartSign * 2 * t / w};
+}
+
 AlgebraicAngle AngleAlgebra::rationalBetween(const AlgebraicAngle& from, const AlgebraicAngle& to) {
   const int order = compare(from, to);
   if (order == 0) throw std::invalid_argument("rationalBetween: the two angles are equal");

@@ -7,7 +7,6 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "freespace/numbers/half_angle.h"
 
 namespace freespace {
 
@@ -43,17 +42,6 @@ std::size_t indexOf(const PatchSlab& slab, std::uint32_t curve) {
   return static_cast<std::size_t>(found - slab.curves.begin());
 }
 
-/// cos and sin of a rational angle, exactly.
-std::pair<Rational, Rational> exactCosSin(const AlgebraicAngle& rationalAngle) {
-  Rational cosine, sine;
-  if (rationalAngle.lower() == rationalAngle.upper()) {
-    HalfAngle{rationalAngle.chart(), rationalAngle.lower()}.cosSin(cosine, sine);
-    return {cosine, sine};
-  }
-  const Rational t = rationalAngle.root().lo, w = 1 + t * t, chartSign(rationalAngle.chart() == 0 ? 1 : -1);
-  return {chartSign * (1 - t * t) / w, chartSign * 2 * t / w};
-}
-
 /// A segment leaving a spiral's point: its patch, which of its ends the spiral is,
 /// and its direction from the point.
 struct Spoke {
@@ -82,7 +70,7 @@ bool holds(const PatchSlab& slab, const AlgebraicAngle& angle, AngleAlgebra& alg
 }
 
 /// The index of the slab holding `angle`, searched from `start` on (wrapping): the
-/// gluing asks for rising angles, so the search usually ends at once.
+/// gluing asks mostly for rising angles, so the search usually ends at once.
 std::optional<std::size_t> slabIndexAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle,
                                        AngleAlgebra& algebra, std::size_t start) {
   const std::size_t count = subdivision.slabs.size();
@@ -111,6 +99,32 @@ class SlabCursor {
   AngleAlgebra& algebra_;
   std::vector<std::size_t> last_;
 };
+
+/// One rational angle inside each interval between consecutive slab ends of the
+/// patches around a spiral: the spokes around it and their slabs are the same over
+/// each such interval.
+std::vector<AlgebraicAngle> samplesAround(const std::vector<std::pair<std::uint32_t, int>>& around,
+                                          const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
+  std::vector<AlgebraicAngle> ends;
+  for (const auto& [patch, unusedEnd] : around) {
+    for (const PatchSlab& slab : subdivisions[patch].slabs) {
+      if (algebra.compare(slab.from, slab.sample) == 0) continue;  // a circle without events
+      ends.push_back(slab.from);
+      ends.push_back(slab.to);
+    }
+  }
+  std::sort(ends.begin(), ends.end(), [&](const AlgebraicAngle& a, const AlgebraicAngle& b) {
+    return algebra.compare(a, b) < 0;
+  });
+  ends.erase(std::unique(ends.begin(), ends.end(),
+                         [&](const AlgebraicAngle& a, const AlgebraicAngle& b) { return algebra.compare(a, b) == 0; }),
+             ends.end());
+  if (ends.empty()) return {AlgebraicAngle::rational(0, 0.0)};
+  if (ends.size() == 1) return {AlgebraicAngle::rational(1 - ends[0].chart(), 0.0)};
+  std::vector<AlgebraicAngle> samples;
+  for (std::size_t i = 0; i < ends.size(); ++i) samples.push_back(algebra.rationalBetween(ends[i], ends[(i + 1) % ends.size()]));
+  return samples;
+}
 
 }  // namespace
 
@@ -157,32 +171,32 @@ std::vector<SubFaceGlue> glueAroundSpirals(const std::vector<PatchGeometry>& pat
   SlabCursor cursor(subdivisions, algebra);
   for (const auto& [spiral, around] : bySpiral) {
     if (around.size() < 2) continue;
-    for (const auto& [patch, unusedEnd] : around) {
-      for (const PatchSlab& slab : subdivisions[patch].slabs) {
-        const auto [cosine, sine] = exactCosSin(slab.sample);
-        std::vector<Spoke> spokes;
-        std::vector<const PatchSlab*> slabs;
-        for (const auto& [other, k] : around) {
-          const PatchSlab* at = other == patch ? &slab : cursor.at(other, slab.sample);
-          if (!at) continue;
-          const auto from = spiralPoint(spiralOf<Rational>(patches[other].ends[k]), cosine, sine);
-          const auto to = spiralPoint(spiralOf<Rational>(patches[other].ends[1 - k]), cosine, sine);
-          spokes.push_back({other, k, {to[0] - from[0], to[1] - from[1]}});
-          slabs.push_back(at);
-        }
-        std::vector<std::size_t> order(spokes.size());
-        for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-        std::sort(order.begin(), order.end(),
-                  [&](std::size_t a, std::size_t b) { return before(spokes[a].direction, spokes[b].direction); });
-        // The sector counterclockwise from spoke a to the next spoke b: a's positive
-        // side (right of end 0 -> end 1, PatchSegment) faces it when the spiral is a's
-        // end 1, b's when it is b's end 0.
-        for (std::size_t i = 0; i < order.size() && order.size() > 1; ++i) {
-          const std::size_t a = order[i], b = order[(i + 1) % order.size()];
-          if (spokes[a].end != 1 || spokes[b].end != 0) continue;
-          glues.add({spokes[a].patch, slabs[a]->faces.back()}, {spokes[b].patch, slabs[b]->faces.front()},
-                    GluedEdge::Spiral, slab.sample);
-        }
+    for (const AlgebraicAngle& sample : samplesAround(around, subdivisions, algebra)) {
+      const auto [cosine, sine] = exactCosSin(sample);
+      std::vector<Spoke> spokes;
+      std::vector<const PatchSlab*> slabs;
+      for (const auto& [patch, k] : around) {
+        if (!algebra.contains(patches[patch].patch.range, sample)) continue;
+        const PatchSlab* at = cursor.at(patch, sample);
+        if (!at) throw std::logic_error("glueAroundSpirals: an active patch has no slab at a sample");
+        const auto from = spiralPoint(spiralOf<Rational>(patches[patch].ends[k]), cosine, sine);
+        const auto to = spiralPoint(spiralOf<Rational>(patches[patch].ends[1 - k]), cosine, sine);
+        spokes.push_back({patch, k, {to[0] - from[0], to[1] - from[1]}});
+        slabs.push_back(at);
+      }
+      if (spokes.size() < 2) continue;
+      std::vector<std::size_t> order(spokes.size());
+      for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+      std::sort(order.begin(), order.end(),
+                [&](std::size_t a, std::size_t b) { return before(spokes[a].direction, spokes[b].direction); });
+      // The sector counterclockwise from spoke a to the next spoke b: a's positive
+      // side (right of end 0 -> end 1, PatchSegment) faces it when the spiral is a's
+      // end 1, b's when it is b's end 0.
+      for (std::size_t i = 0; i < order.size(); ++i) {
+        const std::size_t a = order[i], b = order[(i + 1) % order.size()];
+        if (spokes[a].end != 1 || spokes[b].end != 0) continue;
+        glues.add({spokes[a].patch, slabs[a]->faces.back()}, {spokes[b].patch, slabs[b]->faces.front()},
+                  GluedEdge::Spiral, sample);
       }
     }
   }

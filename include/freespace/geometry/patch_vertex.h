@@ -12,17 +12,16 @@ namespace freespace {
 /// Where three patches meet (DESIGN.md section 4, FFF): an angle at which the three
 /// patch lines are concurrent at a point inside the three segments. The point is
 /// where two curves of one patch cross in that patch's domain. Usually it lies on
-/// the third curve, of the other two patches. But two contacts with one facet (of
-/// two vertices of the other body) have parallel lines at every angle, and no
-/// curve: they pass through each other at the angles where their lines coincide,
-/// meeting along a horizontal segment, and the vertex is where a third patch
-/// crosses them there.
+/// the third curve, of the other two patches. But two patches of an overlap
+/// (PatchOverlap) have no curve: they pass through each other at the angle where
+/// their lines coincide, meeting along a horizontal segment, and the vertex is where
+/// a third patch crosses them there.
 struct PatchVertex {
   /// The three patches, in increasing order.
   std::array<std::uint32_t, 3> patches{};
   AlgebraicAngle angle;
-  /// For two parallel patches and one crossing them: the place of the crossing one
-  /// in `patches`; otherwise -1.
+  /// For two coincident patches (an overlap) and one crossing them: the place of the
+  /// crossing one in `patches`; otherwise -1.
   int crossing = -1;
 };
 
@@ -69,7 +68,7 @@ std::shared_ptr<const AngleFunction> threePatchFunction(const ContactPoints& a, 
 /// inside both, so at such a root the three crossings are one point inside the three
 /// segments. Triples whose FFF determinant has a certain sign in double intervals
 /// over the curves' common angles are rejected before any root is isolated. For an
-/// overlap of two parallel patches and a third with curves with both: the overlap's
+/// overlap of two patches and a third with curves with both: the overlap's
 /// angle, when it is inside both curves' open angle sets. Sorted by patches, then by
 /// angle.
 std::vector<PatchVertex> patchVertices(const std::vector<PatchGeometry>& patches,

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "freespace/numbers/adaptive_sign.h"
@@ -116,6 +117,10 @@ struct AngleSet {
 
   bool empty() const { return !fullCircle && arcs.empty(); }
 };
+
+/// The cosine and sine of a rational angle (AlgebraicAngle::isRational), exactly,
+/// from its chart's parameter t (HalfAngle's formulas).
+std::pair<Rational, Rational> exactCosSin(const AlgebraicAngle& rationalAngle);
 
 /// Exact predicates on algebraic angles, filtered in double intervals with exact
 /// rational fallback and exact identity detection (equal roots compare equal; a
