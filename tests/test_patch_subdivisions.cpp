@@ -93,17 +93,50 @@ void checkSlabOrders(const std::vector<PatchGeometry>& patches, const std::vecto
   }
 }
 
+/// The point at `lambda` along the patch's segment as a moving point u + R v.
+template <class T>
+Spiral<T> pointAt(const PatchGeometry& patch, double lambda) {
+  const Spiral<T> a = spiralOf<T>(patch.ends[0]), b = spiralOf<T>(patch.ends[1]);
+  const T l(lambda), m = T(1) - l;
+  return {m * a.ux + l * b.ux, m * a.uy + l * b.uy, m * a.vx + l * b.vx, m * a.vy + l * b.vy};
+}
+
 /// The SF function of the point at `lambda` along the patch's segment on another
 /// patch's line: zero where a path at fixed lambda meets their curve.
 std::shared_ptr<const AngleFunction> pointOnLine(const PatchGeometry& patch, double lambda,
                                                  const PatchGeometry& other) {
   return std::make_shared<AngleFunction>([patch, lambda, other](auto type, int chart) {
     using T = typename decltype(type)::type;
-    const Spiral<T> a = spiralOf<T>(patch.ends[0]), b = spiralOf<T>(patch.ends[1]);
-    const T l(lambda), m = T(1) - l;
-    const Spiral<T> point{m * a.ux + l * b.ux, m * a.uy + l * b.uy, m * a.vx + l * b.vx, m * a.vy + l * b.vy};
-    return tangentPolynomial(spiralFacetForm(lineOf<T>(other.line), point), chart);
+    return tangentPolynomial(spiralFacetForm(lineOf<T>(other.line), pointAt<T>(patch, lambda)), chart);
   });
+}
+
+/// (p - e_k) . (e_(1-k) - e_k) for the point p at `lambda` of the patch and the ends
+/// e of the other's segment, all of the form u + R v: with x = p - e_k = u + R v and
+/// y = e_(1-k) - e_k = a + R b, x . y = u . a + v . b + cos (u . b + a . v)
+/// + sin ((u_y b_x - u_x b_y) + (a_y v_x - a_x v_y)). Positive for both k when p is
+/// strictly inside the other segment (on its line).
+AngleFunction insideOther(const PatchGeometry& patch, double lambda, const PatchGeometry& other, int k) {
+  return AngleFunction([patch, lambda, other, k](auto type, int chart) {
+    using T = typename decltype(type)::type;
+    const Spiral<T> p = pointAt<T>(patch, lambda), e = spiralOf<T>(other.ends[k]), f = spiralOf<T>(other.ends[1 - k]);
+    const T ux = p.ux - e.ux, uy = p.uy - e.uy, vx = p.vx - e.vx, vy = p.vy - e.vy;
+    const T ax = f.ux - e.ux, ay = f.uy - e.uy, bx = f.vx - e.vx, by = f.vy - e.vy;
+    return tangentPolynomial(TrigLinear<T>{(uy * bx - ux * by) + (ay * vx - ax * vy), ux * bx + uy * by + ax * vx + ay * vy,
+                                           ux * ax + uy * ay + vx * bx + vy * by},
+                             chart);
+  });
+}
+
+/// Whether the path at `lambda` crosses the overlap's cut on the patch: the point is
+/// inside (or at an end of) the other patch's segment at the overlap's angle.
+bool crossesCut(const std::vector<PatchGeometry>& patches, std::uint32_t patch, const PatchOverlap& overlap,
+                double lambda, AngleAlgebra& algebra) {
+  const PatchGeometry& other = patches[overlap.patches[0] == patch ? overlap.patches[1] : overlap.patches[0]];
+  for (int k = 0; k < 2; ++k) {
+    if (algebra.signAt(insideOther(patches[patch], lambda, other, k), overlap.angle) == Sign::Negative) return false;
+  }
+  return true;
 }
 
 std::size_t gapAt(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
@@ -123,9 +156,9 @@ bool slabsFollow(const PatchSubdivision& subdivision, std::size_t next, AngleAlg
 
 /// Paths at fixed lambda from one slab's sample to a later slab's sample of the same
 /// arc (slabs follow one another while each one's `to` is the next one's `from`).
-/// Paths past an overlap of the patch are left out: its cut is an edge too.
+/// Paths that cross an overlap's cut are left out: the cut is an edge too.
 void checkPaths(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
-                const std::vector<AlgebraicAngle>& overlapAngles, std::uint32_t patch,
+                const std::vector<PatchOverlap>& overlapsOfPatch, std::uint32_t patch,
                 const PatchSubdivision& subdivision, AngleAlgebra& algebra, std::mt19937_64& random,
                 SubdivisionCheck& check) {
   std::vector<std::uint32_t> curvesOfPatch;
@@ -146,7 +179,9 @@ void checkPaths(const std::vector<PatchGeometry>& patches, const std::vector<Pat
     const AlgebraicAngle &start = subdivision.slabs[from].sample, &end = subdivision.slabs[to].sample;
     const AngleInterval path{start, end, algebra.compare(end, start) < 0};
     bool meets = false;
-    for (const AlgebraicAngle& angle : overlapAngles) meets = meets || algebra.contains(path, angle);
+    for (const PatchOverlap& overlap : overlapsOfPatch) {
+      meets = meets || (algebra.contains(path, overlap.angle) && crossesCut(patches, patch, overlap, lambda, algebra));
+    }
     for (std::uint32_t c : curvesOfPatch) {
       const auto function = pointOnLine(patches[patch], lambda, patches[otherPatch(curves[c], patch)]);
       if (meets || function->isIdenticallyZero()) continue;
@@ -172,15 +207,15 @@ SubdivisionCheck checkSubdivisions(const std::vector<PatchGeometry>& patches, An
     neighbours[a].push_back(b);
     neighbours[b].push_back(a);
   }
-  std::vector<std::vector<AlgebraicAngle>> overlapAngles(patches.size());
+  std::vector<std::vector<PatchOverlap>> overlapsOf(patches.size());
   for (const PatchOverlap& overlap : overlaps) {
-    for (std::uint32_t patch : overlap.patches) overlapAngles[patch].push_back(overlap.angle);
+    for (std::uint32_t patch : overlap.patches) overlapsOf[patch].push_back(overlap);
   }
   std::mt19937_64 random(3);
   SubdivisionCheck check;
   for (std::uint32_t patch = 0; patch < patches.size(); ++patch) {
     checkSlabOrders(patches, curves, patch, neighbours[patch], subdivisions[patch], algebra, check);
-    checkPaths(patches, curves, overlapAngles[patch], patch, subdivisions[patch], algebra, random, check);
+    checkPaths(patches, curves, overlapsOf[patch], patch, subdivisions[patch], algebra, random, check);
     check.faces += static_cast<int>(subdivisions[patch].faceCount);
   }
   return check;
