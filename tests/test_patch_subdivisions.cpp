@@ -50,10 +50,6 @@ Rational crossingLambda(const ExactSlice& a, const ExactSlice& b) {
   return v0 / (v0 - v1);
 }
 
-std::uint32_t otherPatch(const PatchCurve& curve, std::uint32_t patch) {
-  return curve.first == patch ? curve.second : curve.first;
-}
-
 struct SubdivisionCheck {
   int slabs = 0;
   int wrongSlabs = 0;    // slabs whose curves are not the crossing patches in lambda order
@@ -81,7 +77,7 @@ void checkSlabOrders(const std::vector<PatchGeometry>& patches, const std::vecto
     std::vector<std::uint32_t> listed;
     bool increasing = true;
     for (std::size_t i = 0; i < slab.curves.size(); ++i) {
-      listed.push_back(otherPatch(curves[slab.curves[i]], patch));
+      listed.push_back(curves[slab.curves[i]].other(patch));
       if (i > 0) {
         increasing = increasing && crossingLambda(own, sliceOf(patches[listed[i - 1]], r)) <
                                        crossingLambda(own, sliceOf(patches[listed[i]], r));
@@ -145,7 +141,7 @@ std::size_t gapAt(const std::vector<PatchGeometry>& patches, const std::vector<P
   const ExactSlice own = sliceOf(patches[patch], r);
   std::size_t gap = 0;
   for (std::uint32_t curve : slab.curves) {
-    gap += crossingLambda(own, sliceOf(patches[otherPatch(curves[curve], patch)], r)) < Rational(lambda);
+    gap += crossingLambda(own, sliceOf(patches[curves[curve].other(patch)], r)) < Rational(lambda);
   }
   return gap;
 }
@@ -183,7 +179,7 @@ void checkPaths(const std::vector<PatchGeometry>& patches, const std::vector<Pat
       meets = meets || (algebra.contains(path, overlap.angle) && crossesCut(patches, patch, overlap, lambda, algebra));
     }
     for (std::uint32_t c : curvesOfPatch) {
-      const auto function = pointOnLine(patches[patch], lambda, patches[otherPatch(curves[c], patch)]);
+      const auto function = pointOnLine(patches[patch], lambda, patches[curves[c].other(patch)]);
       if (meets || function->isIdenticallyZero()) continue;
       for (const AlgebraicAngle& root : algebra.roots(function, PredicateKind::Other)) {
         meets = meets || (algebra.contains(path, root) && algebra.contains(curves[c].angles, root));

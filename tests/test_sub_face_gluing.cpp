@@ -49,7 +49,7 @@ std::uint32_t faceAt(const std::vector<PatchGeometry>& patches, const std::vecto
   const ExactSlice own = sliceOf(patches[patch], r);
   std::size_t gap = 0;
   for (std::uint32_t curve : slab.curves) {
-    const std::uint32_t other = curves[curve].first == patch ? curves[curve].second : curves[curve].first;
+    const std::uint32_t other = curves[curve].other(patch);
     const ExactSlice s = sliceOf(patches[other], r);
     // p is past the crossing when it is on the side of s's line opposite end 0.
     gap += sideOf(s, p) != sideOf(s, own.end0);

@@ -136,7 +136,7 @@ class PatchSweep {
     curvesOfPatch_.push_back(curve);
     const PatchCurve& c = curves_[curve];
     const int side = c.first == patch_ ? 0 : 1;
-    curveWith_[c.first == patch_ ? c.second : c.first] = curve;
+    curveWith_[c.other(patch_)] = curve;
     for (std::size_t i = 0; i < c.angles.arcs.size(); ++i) {
       for (int end = 0; end < 2; ++end) {
         const AlgebraicAngle& angle = end == 0 ? c.angles.arcs[i].from : c.angles.arcs[i].to;
@@ -271,10 +271,7 @@ class PatchSweep {
 
   const PatchGeometry& other(std::uint32_t curve) const { return patches_[otherPatch(curve)]; }
 
-  std::uint32_t otherPatch(std::uint32_t curve) const {
-    const PatchCurve& c = curves_[curve];
-    return c.first == patch_ ? c.second : c.first;
-  }
+  std::uint32_t otherPatch(std::uint32_t curve) const { return curves_[curve].other(patch_); }
 
   [[noreturn]] void fail(const std::string& problem, const AlgebraicAngle& angle,
                          const std::vector<std::uint32_t>& curves) const {
@@ -428,10 +425,6 @@ class PatchSweep {
   UnionFind trapezoids_;
   PatchSubdivision subdivision_;
 };
-
-}  // namespace
-
-namespace {
 
 /// The sign of value(cosine, sine) at a rational angle: adaptively when its t is a
 /// double, exactly otherwise.

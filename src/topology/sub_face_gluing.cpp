@@ -7,7 +7,6 @@
 #include <stdexcept>
 #include <tuple>
 
-
 namespace freespace {
 
 namespace {
@@ -25,10 +24,6 @@ class GlueList {
   std::set<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> seen_;
   std::vector<SubFaceGlue> glues_;
 };
-
-std::uint32_t otherPatch(const PatchCurve& curve, std::uint32_t patch) {
-  return curve.first == patch ? curve.second : curve.first;
-}
 
 /// The sub-face of the slab on the side of `curve` (at index `at` of its curves)
 /// that holds end 1 of the segment when `towardEnd1`, else end 0.
@@ -56,10 +51,6 @@ bool before(const std::array<Rational, 2>& a, const std::array<Rational, 2>& b) 
   if (half(a) != half(b)) return half(a) < half(b);
   return a[0] * b[1] - a[1] * b[0] > 0;
 }
-
-}  // namespace
-
-namespace {
 
 bool holds(const PatchSlab& slab, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
   const int order = algebra.compare(slab.from, slab.to);
@@ -141,7 +132,7 @@ std::vector<SubFaceGlue> glueAcrossCurves(const std::vector<PatchGeometry>& patc
   for (std::uint32_t f = 0; f < patches.size(); ++f) {
     for (const PatchSlab& slab : subdivisions[f].slabs) {
       for (std::size_t i = 0; i < slab.curves.size(); ++i) {
-        const std::uint32_t g = otherPatch(curves[slab.curves[i]], f);
+        const std::uint32_t g = curves[slab.curves[i]].other(f);
         if (g < f) continue;  // each curve from its first patch's slabs
         const PatchSlab* across = slabs.at(g, slab.sample);
         if (!across) throw std::logic_error("glueAcrossCurves: a curve's other patch has no slab there");

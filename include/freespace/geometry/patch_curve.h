@@ -37,6 +37,9 @@ struct PatchCurve {
   /// For each arc of `angles`, why it ends at its `from` and at its `to` (nothing
   /// for a full circle).
   std::vector<std::array<CurveEnd, 2>> ends;
+
+  /// The curve's patch that is not `patch` (one of its two).
+  std::uint32_t other(std::uint32_t patch) const { return first == patch ? second : first; }
 };
 
 /// SF: the line of a patch at a segment end (a spiral) of another patch, as an angle
