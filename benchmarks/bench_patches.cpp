@@ -17,7 +17,7 @@
 #include "freespace/geometry/patch_vertex.h"
 #include "freespace/geometry/perturbed_meshes.h"
 #include "freespace/problem/planar_problem.h"
-#include "freespace/topology/sub_face_gluing.h"
+#include "freespace/topology/shells.h"
 
 using namespace freespace;
 
@@ -61,7 +61,8 @@ void measure(const std::string& cfg) {
   const auto vertices = patchVertices(geometries, curves, overlaps, algebra);
   const double vertexSeconds = secondsSince(start);
   start = std::chrono::steady_clock::now();
-  std::size_t slabs = 0, subFaces = 0, curveGlues = 0, spiralGlues = 0;
+  std::size_t slabs = 0, subFaces = 0, curveGlues = 0, spiralGlues = 0, horizontalGlues = 0, unmatched = 0;
+  std::size_t shellCount = 0, closedShells = 0;
   std::string subdivisionFailure;
   double subdivisionSeconds = 0, gluingSeconds = 0;
   try {
@@ -72,9 +73,17 @@ void measure(const std::string& cfg) {
     }
     subdivisionSeconds = secondsSince(start);
     start = std::chrono::steady_clock::now();
-    curveGlues = glueAcrossCurves(geometries, curves, subdivisions, algebra).size();
-    spiralGlues = glueAroundSpirals(geometries, subdivisions, algebra).size();
+    const SubFaceGluing acrossCurves = glueAcrossCurves(geometries, curves, subdivisions, algebra);
+    const SubFaceGluing aroundSpirals = glueAroundSpirals(geometries, subdivisions, algebra);
+    const SubFaceGluing acrossEdges = glueAcrossHorizontalEdges(geometries, curves, overlaps, subdivisions, algebra);
     gluingSeconds = secondsSince(start);
+    curveGlues = acrossCurves.glues.size();
+    spiralGlues = aroundSpirals.glues.size();
+    horizontalGlues = acrossEdges.glues.size();
+    unmatched = aroundSpirals.unmatched.size() + acrossEdges.unmatched.size();
+    const Shells shells(subdivisions, {&acrossCurves, &aroundSpirals, &acrossEdges});
+    shellCount = shells.count();
+    for (std::uint32_t shell = 0; shell < shells.count(); ++shell) closedShells += shells.closed(shell);
   } catch (const std::logic_error& error) {
     subdivisionFailure = std::string(" FAILED: ") + error.what();
   }
@@ -86,7 +95,9 @@ void measure(const std::string& cfg) {
             << "), vertices "
             << vertexSeconds << " (" << vertices.size() << "), subdivision " << subdivisionSeconds << " (" << slabs
             << " slabs, " << subFaces << " sub-faces" << subdivisionFailure << "), gluing " << gluingSeconds << " ("
-            << curveGlues << " across curves, " << spiralGlues << " around spirals)"
+            << curveGlues << " across curves, " << spiralGlues << " around spirals, " << horizontalGlues
+            << " across horizontal edges, " << unmatched << " sub-faces unmatched; " << shellCount << " shells, "
+            << closedShells << " closed)"
             << "; decided in double intervals " << std::setprecision(4) << 100 * statistics.doubleIntervalFraction()
             << "%\n"
             << statistics.toText();

@@ -169,11 +169,11 @@ GlueCheck checkGlues(const std::vector<PatchGeometry>& patches, AngleAlgebra& al
   const std::vector<PatchVertex> vertices = patchVertices(patches, curves, overlaps, algebra);
   const std::vector<PatchSubdivision> subdivisions = patchSubdivisions(patches, curves, vertices, overlaps, algebra);
   GlueCheck check;
-  for (const SubFaceGlue& glue : glueAcrossCurves(patches, curves, subdivisions, algebra)) {
+  for (const SubFaceGlue& glue : glueAcrossCurves(patches, curves, subdivisions, algebra).glues) {
     check.curveGlues++;
     check.wrong += !curveGlueHolds(patches, curves, subdivisions, glue, algebra);
   }
-  for (const SubFaceGlue& glue : glueAroundSpirals(patches, subdivisions, algebra)) {
+  for (const SubFaceGlue& glue : glueAroundSpirals(patches, subdivisions, algebra).glues) {
     check.spiralGlues++;
     check.wrong += !spiralGlueHolds(patches, curves, subdivisions, glue, algebra);
   }

@@ -133,8 +133,12 @@ ExactCollisionChecker::ExactCollisionChecker(const Mesh& robot, const Mesh& worl
 ExactCollisionChecker::~ExactCollisionChecker() = default;
 
 bool ExactCollisionChecker::inCollision(const Pose2& pose) const {
+  return inCollision(HalfAngle::fromRadians(pose.theta), pose.x, pose.y);
+}
+
+bool ExactCollisionChecker::inCollision(const HalfAngle& angle, double x, double y) const {
   RoundingScope rounding;
-  PlacedPair pair(impl_->robot, impl_->world, pose);
+  PlacedPair pair(impl_->robot, impl_->world, angle, x, y);
   Tests tests(pair);
   const bool collides = impl_->surfacesIntersect(pair, tests) || impl_->robotInsideWorld(pair, tests) ||
                         impl_->worldInsideRobot(pair, tests);

@@ -10,15 +10,15 @@ Box3 boxOf(const Vec3T<Interval>& p) {
 
 }  // namespace
 
-PlacedPair::PlacedPair(const Mesh& robot, const Mesh& world, const Pose2& pose)
-    : robot_(robot), world_(world), pose_(pose), angle_(HalfAngle::fromRadians(pose.theta)) {
+PlacedPair::PlacedPair(const Mesh& robot, const Mesh& world, const HalfAngle& angle, double x, double y)
+    : robot_(robot), world_(world), angle_(angle), x_(x), y_(y) {
   Interval cosine, sine;
   angle_.cosSin(cosine, sine);
-  const Interval x(pose.x), y(pose.y);
+  const Interval placedX(x_), placedY(y_);
   placedRobot_.reserve(robot.vertices().size());
   for (const Point3& p : robot.vertices()) {
     const Interval px(p.x()), py(p.y());
-    placedRobot_.push_back({cosine * px - sine * py + x, sine * px + cosine * py + y, Interval(p.z())});
+    placedRobot_.push_back({cosine * px - sine * py + placedX, sine * px + cosine * py + placedY, Interval(p.z())});
     robotBounds_.extend(boxOf(placedRobot_.back()));
   }
   exactRobot_.resize(robot.vertices().size());
@@ -51,7 +51,7 @@ const Vec3T<Rational>& PlacedPair::exact(PointId id) {
     const Rational& sine = exactCosSin_->y;
     const Point3& p = robot_.vertices()[id & ~kRobotPoint];
     const Rational px(p.x()), py(p.y());
-    cached = Vec3T<Rational>{cosine * px - sine * py + Rational(pose_.x), sine * px + cosine * py + Rational(pose_.y),
+    cached = Vec3T<Rational>{cosine * px - sine * py + Rational(x_), sine * px + cosine * py + Rational(y_),
                              Rational(p.z())};
   }
   return *cached;

@@ -25,7 +25,8 @@ constexpr PointId kRobotPoint = 1u << 31;
 /// certain. Construct and use only inside a RoundingScope.
 class PlacedPair {
  public:
-  PlacedPair(const Mesh& robot, const Mesh& world, const Pose2& pose);
+  /// The robot turned by the rational angle and moved by (x, y), exactly.
+  PlacedPair(const Mesh& robot, const Mesh& world, const HalfAngle& angle, double x, double y);
 
   Sign orient3d(PointId a, PointId b, PointId c, PointId d) {
     return decide([&](auto point) { return orient3dDeterminant(point(a), point(b), point(c), point(d)); });
@@ -67,8 +68,8 @@ class PlacedPair {
 
   const Mesh& robot_;
   const Mesh& world_;
-  Pose2 pose_;
   HalfAngle angle_;
+  double x_, y_;
   std::vector<Vec3T<Interval>> placedRobot_;
   Box3 robotBounds_;
   std::optional<Vec3T<Rational>> exactCosSin_;  // (cos, sin, 0) once needed

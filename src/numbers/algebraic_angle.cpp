@@ -449,6 +449,24 @@ AlgebraicAngle AngleAlgebra::rationalBetween(const AlgebraicAngle& from, const A
   return angleAtPosition((start.u.hi + end.u.lo + turn) / 2);
 }
 
+AlgebraicAngle AngleAlgebra::rationalNextTo(const AlgebraicAngle& angle, const AlgebraicAngle& bound, bool before,
+                                            int bits) {
+  if (compare(angle, bound) == 0) throw std::invalid_argument("rationalNextTo: the bound is the angle");
+  const bool boundWraps = before ? compare(bound, angle) > 0 : compare(angle, bound) > 0;
+  const AngleInterval between = before ? AngleInterval{bound, angle, boundWraps} : AngleInterval{angle, bound, boundWraps};
+  ExactPosition position = exactPosition(angle);
+  Rational gap(1);
+  for (int bit = 0; bit < bits; ++bit) gap /= 2;
+  for (;; gap /= 2) {
+    while (position.u.hi - position.u.lo >= gap / 2) bisectPosition(position, chartOffset(angle.chart()));
+    // The root is in [lo, hi], narrower than gap / 2: a step of gap / 2 past the
+    // near end is less than gap from it and not on it.
+    const AlgebraicAngle next =
+        angleAtPosition(before ? Rational(position.u.lo - gap / 2) : Rational(position.u.hi + gap / 2));
+    if (contains(between, next, Boundary::Excluded)) return next;
+  }
+}
+
 AngleSet AngleAlgebra::positiveSet(const std::vector<std::shared_ptr<const AngleFunction>>& functions,
                                    PredicateKind kind) {
   // A function that vanishes identically is positive nowhere.

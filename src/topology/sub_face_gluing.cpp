@@ -2,28 +2,17 @@
 
 #include <algorithm>
 #include <map>
-#include <optional>
-#include <set>
 #include <stdexcept>
 #include <tuple>
+
+#include "gluing_parts.h"
 
 namespace freespace {
 
 namespace {
 
-/// Keeps each glued pair of sub-faces once (the first angle it was seen at).
-class GlueList {
- public:
-  void add(SubFaceId a, SubFaceId b, GluedEdge edge, const AlgebraicAngle& at) {
-    if (std::make_pair(b.patch, b.face) < std::make_pair(a.patch, a.face)) std::swap(a, b);
-    if (seen_.insert({a.patch, a.face, b.patch, b.face}).second) glues_.push_back({a, b, edge, at});
-  }
-  std::vector<SubFaceGlue> take() { return std::move(glues_); }
-
- private:
-  std::set<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> seen_;
-  std::vector<SubFaceGlue> glues_;
-};
+using gluing::GlueList;
+using gluing::SlabCursor;
 
 /// The sub-face of the slab on the side of `curve` (at index `at` of its curves)
 /// that holds end 1 of the segment when `towardEnd1`, else end 0.
@@ -38,11 +27,13 @@ std::size_t indexOf(const PatchSlab& slab, std::uint32_t curve) {
 }
 
 /// A segment leaving a spiral's point: its patch, which of its ends the spiral is,
-/// and its direction from the point.
+/// its direction from the point and its sub-face there.
 struct Spoke {
   std::uint32_t patch;
   int end;
   std::array<Rational, 2> direction;
+  /// The patch's sub-face at the spiral.
+  std::uint32_t face;
 };
 
 /// Counterclockwise order of directions, starting along +x.
@@ -51,45 +42,6 @@ bool before(const std::array<Rational, 2>& a, const std::array<Rational, 2>& b) 
   if (half(a) != half(b)) return half(a) < half(b);
   return a[0] * b[1] - a[1] * b[0] > 0;
 }
-
-bool holds(const PatchSlab& slab, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
-  const int order = algebra.compare(slab.from, slab.to);
-  // A slab from an event back to itself runs once around; one whose sample is its
-  // `from` too is a whole circle without events.
-  if (order == 0) return algebra.compare(slab.from, angle) != 0 || algebra.compare(slab.from, slab.sample) == 0;
-  return algebra.contains(AngleInterval{slab.from, slab.to, order > 0}, angle, AngleAlgebra::Boundary::Excluded);
-}
-
-/// The index of the slab holding `angle`, searched from `start` on (wrapping): the
-/// gluing asks mostly for rising angles, so the search usually ends at once.
-std::optional<std::size_t> slabIndexAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle,
-                                       AngleAlgebra& algebra, std::size_t start) {
-  const std::size_t count = subdivision.slabs.size();
-  for (std::size_t step = 0; step < count; ++step) {
-    const std::size_t i = (start + step) % count;
-    if (holds(subdivision.slabs[i], angle, algebra)) return i;
-  }
-  return std::nullopt;
-}
-
-/// Remembers, per patch, where the last search ended.
-class SlabCursor {
- public:
-  SlabCursor(const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra)
-      : subdivisions_(subdivisions), algebra_(algebra), last_(subdivisions.size(), 0) {}
-
-  const PatchSlab* at(std::uint32_t patch, const AlgebraicAngle& angle) {
-    const auto found = slabIndexAt(subdivisions_[patch], angle, algebra_, last_[patch]);
-    if (!found) return nullptr;
-    last_[patch] = *found;
-    return &subdivisions_[patch].slabs[*found];
-  }
-
- private:
-  const std::vector<PatchSubdivision>& subdivisions_;
-  AngleAlgebra& algebra_;
-  std::vector<std::size_t> last_;
-};
 
 /// One rational angle inside each interval between consecutive slab ends of the
 /// patches around a spiral: the spokes around it and their slabs are the same over
@@ -119,14 +71,8 @@ std::vector<AlgebraicAngle> samplesAround(const std::vector<std::pair<std::uint3
 
 }  // namespace
 
-const PatchSlab* slabAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
-  const auto found = slabIndexAt(subdivision, angle, algebra, 0);
-  return found ? &subdivision.slabs[*found] : nullptr;
-}
-
-std::vector<SubFaceGlue> glueAcrossCurves(const std::vector<PatchGeometry>& patches,
-                                          const std::vector<PatchCurve>& curves,
-                                          const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
+SubFaceGluing glueAcrossCurves(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
+                               const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
   GlueList glues;
   SlabCursor slabs(subdivisions, algebra);
   for (std::uint32_t f = 0; f < patches.size(); ++f) {
@@ -148,8 +94,8 @@ std::vector<SubFaceGlue> glueAcrossCurves(const std::vector<PatchGeometry>& patc
   return glues.take();
 }
 
-std::vector<SubFaceGlue> glueAroundSpirals(const std::vector<PatchGeometry>& patches,
-                                           const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
+SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
+                                const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
   std::map<std::tuple<bool, std::uint32_t, std::uint32_t, std::uint32_t>, std::vector<std::pair<std::uint32_t, int>>>
       bySpiral;
   for (std::uint32_t patch = 0; patch < patches.size(); ++patch) {
@@ -161,34 +107,25 @@ std::vector<SubFaceGlue> glueAroundSpirals(const std::vector<PatchGeometry>& pat
   GlueList glues;
   SlabCursor cursor(subdivisions, algebra);
   for (const auto& [spiral, around] : bySpiral) {
-    if (around.size() < 2) continue;
     for (const AlgebraicAngle& sample : samplesAround(around, subdivisions, algebra)) {
       const auto [cosine, sine] = exactCosSin(sample);
       std::vector<Spoke> spokes;
-      std::vector<const PatchSlab*> slabs;
       for (const auto& [patch, k] : around) {
         if (!algebra.contains(patches[patch].patch.range, sample)) continue;
         const PatchSlab* at = cursor.at(patch, sample);
         if (!at) throw std::logic_error("glueAroundSpirals: an active patch has no slab at a sample");
         const auto from = spiralPoint(spiralOf<Rational>(patches[patch].ends[k]), cosine, sine);
         const auto to = spiralPoint(spiralOf<Rational>(patches[patch].ends[1 - k]), cosine, sine);
-        spokes.push_back({patch, k, {to[0] - from[0], to[1] - from[1]}});
-        slabs.push_back(at);
+        spokes.push_back({patch, k, {to[0] - from[0], to[1] - from[1]}, k == 0 ? at->faces.front() : at->faces.back()});
       }
-      if (spokes.size() < 2) continue;
-      std::vector<std::size_t> order(spokes.size());
-      for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-      std::sort(order.begin(), order.end(),
-                [&](std::size_t a, std::size_t b) { return before(spokes[a].direction, spokes[b].direction); });
-      // The sector counterclockwise from spoke a to the next spoke b: a's positive
-      // side (right of end 0 -> end 1, PatchSegment) faces it when the spiral is a's
-      // end 1, b's when it is b's end 0.
-      for (std::size_t i = 0; i < order.size(); ++i) {
-        const std::size_t a = order[i], b = order[(i + 1) % order.size()];
-        if (spokes[a].end != 1 || spokes[b].end != 0) continue;
-        glues.add({spokes[a].patch, slabs[a]->faces.back()}, {spokes[b].patch, slabs[b]->faces.front()},
-                  GluedEdge::Spiral, sample);
-      }
+      std::sort(spokes.begin(), spokes.end(),
+                [&](const Spoke& a, const Spoke& b) { return before(a.direction, b.direction); });
+      // The sector counterclockwise after a spoke: its positive side (right of end
+      // 0 -> end 1, PatchSegment) faces it when the spiral is the spoke's end 1.
+      gluing::glueAround(
+          spokes, [](const Spoke& spoke) { return spoke.end == 1; },
+          [](const Spoke& spoke, bool) { return SubFaceId{spoke.patch, spoke.face}; }, GluedEdge::Spiral, sample,
+          glues);
     }
   }
   return glues.take();

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "freespace/geometry/mesh.h"
+#include "freespace/numbers/half_angle.h"
 #include "freespace/problem/planar_problem.h"
 
 namespace freespace {
@@ -29,6 +30,8 @@ class ExactCollisionChecker {
   ExactCollisionChecker& operator=(const ExactCollisionChecker&) = delete;
 
   bool inCollision(const Pose2& pose) const;
+  /// The same at the rational angle `angle` (the robot turned exactly by it).
+  bool inCollision(const HalfAngle& angle, double x, double y) const;
 
   /// How many predicate signs needed the exact fallback, and how many were
   /// evaluated in all, since construction (for benchmarks and tests).

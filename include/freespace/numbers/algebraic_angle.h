@@ -157,6 +157,12 @@ class AngleAlgebra {
   /// angles must differ.
   AlgebraicAngle rationalBetween(const AlgebraicAngle& from, const AlgebraicAngle& to);
 
+  /// A rational angle next to `angle`, before it (`before`) or after it, less than
+  /// 2^-bits away in the circle's parameter u (t, and t + 2 in chart 1), and strictly
+  /// between it and `bound`, which must differ from it. Halves the exact isolating
+  /// interval as often as needed.
+  AlgebraicAngle rationalNextTo(const AlgebraicAngle& angle, const AlgebraicAngle& bound, bool before, int bits);
+
   /// The closure of the set of angles where every function is positive (empty when
   /// one of them vanishes identically).
   AngleSet positiveSet(const std::vector<std::shared_ptr<const AngleFunction>>& functions, PredicateKind kind);

@@ -1,0 +1,31 @@
+#pragma once
+
+#include <vector>
+
+#include "freespace/geometry/patch_curve.h"
+#include "freespace/geometry/patch_geometry.h"
+#include "freespace/geometry/patch_subdivision.h"
+#include "freespace/geometry/patch_vertex.h"
+#include "freespace/topology/shells.h"
+#include "freespace/topology/sub_face_gluing.h"
+
+namespace freespace {
+
+/// The arrangement of the patches (DESIGN.md section 6, steps 3 to 5): their curves,
+/// overlaps and vertices, each patch subdivided into sub-faces, the sub-faces glued
+/// across curves, spirals and horizontal edges, and the shells they form.
+struct Arrangement {
+  std::vector<PatchGeometry> patches;
+  std::vector<PatchCurve> curves;
+  std::vector<PatchOverlap> overlaps;
+  std::vector<PatchVertex> vertices;
+  std::vector<PatchSubdivision> subdivisions;
+  SubFaceGluing acrossCurves;
+  SubFaceGluing aroundSpirals;
+  SubFaceGluing acrossHorizontalEdges;
+  Shells shells;
+};
+
+Arrangement buildArrangement(std::vector<PatchGeometry> patches, AngleAlgebra& algebra);
+
+}  // namespace freespace

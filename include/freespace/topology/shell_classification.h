@@ -1,0 +1,35 @@
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "freespace/collision/exact_collision_checker.h"
+#include "freespace/topology/slice_ray.h"
+
+namespace freespace {
+
+/// A configuration just off a sub-face on its positive side, at a rational angle:
+/// the straight path from it along x to the sub-face meets no other segment.
+struct SubFaceProbe {
+  HalfAngle angle;
+  double x = 0;
+  double y = 0;
+};
+
+/// A probe of the sub-face at the sample angle of one of its slabs whose parameter
+/// is a double, at the middle of its piece of segment, moved along x toward its
+/// positive side by a distance that halves until a ray back meets the sub-face
+/// first, from its positive side (SliceRays, exact). None when no slab of the
+/// sub-face allows it (all their segments horizontal, say).
+std::optional<SubFaceProbe> probeSubFace(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
+                                         AngleAlgebra& algebra);
+
+enum class ShellSide { Free, Blocked, Open };
+
+/// Each shell: Open when it is not closed, else whether its positive side is free,
+/// by one exact collision test at a probe of one of its sub-faces. Throws
+/// std::runtime_error when no sub-face of a closed shell can be probed.
+std::vector<ShellSide> classifyShells(const Arrangement& arrangement, const SliceRays& rays,
+                                      const ExactCollisionChecker& collision, AngleAlgebra& algebra);
+
+}  // namespace freespace

@@ -1,0 +1,54 @@
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "freespace/topology/arrangement.h"
+
+namespace freespace {
+
+/// What a ray in the slice of configuration space at a fixed angle meets first.
+struct RayHit {
+  enum class Kind {
+    /// It meets a sub-face at a point inside its slice's piece of segment.
+    SubFace,
+    /// It meets nothing.
+    Nothing,
+    /// It starts on a segment.
+    OnSegment,
+    /// Its first point on segments is a point where pieces meet (a segment end or a
+    /// curve's crossing), or it runs along a segment: a ray in another direction (or
+    /// from another point) decides.
+    Degenerate,
+  };
+  Kind kind = Kind::Nothing;
+  SubFaceId face;
+  std::array<Rational, 2> point;
+  /// Whether the ray arrives from the sub-face's positive (free) side.
+  bool fromPositiveSide = false;
+};
+
+/// Horizontal rays (along +x or -x) in the slices of an arrangement at rational
+/// angles, decided exactly: the candidate patches come from an R-tree of their
+/// (x, y, theta) boxes, then every test is on the exact slice (rational cosine and
+/// sine, rational points).
+class SliceRays {
+ public:
+  SliceRays(const Arrangement& arrangement, AngleAlgebra& algebra);
+  ~SliceRays();
+  SliceRays(const SliceRays&) = delete;
+  SliceRays& operator=(const SliceRays&) = delete;
+
+  /// The first sub-face met by the ray from `from` in direction (`direction`, 0),
+  /// direction +1 or -1, at a rational angle (AlgebraicAngle::isRational) that is
+  /// not an event of a patch the ray meets.
+  RayHit cast(const AlgebraicAngle& rationalAngle, const std::array<Rational, 2>& from, int direction) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace freespace

@@ -1,0 +1,85 @@
+#pragma once
+
+// Pieces shared by the gluing of sub-faces across curves, spirals and horizontal
+// edges (sub_face_gluing.cpp, horizontal_gluing.cpp).
+
+#include <optional>
+#include <set>
+#include <tuple>
+
+#include "freespace/topology/sub_face_gluing.h"
+
+namespace freespace::gluing {
+
+/// Collects glues, each glued pair of sub-faces once (at the first angle it was seen
+/// at), and unmatched sub-faces, each once.
+class GlueList {
+ public:
+  void add(SubFaceId a, SubFaceId b, GluedEdge edge, const AlgebraicAngle& at) {
+    if (std::make_pair(b.patch, b.face) < std::make_pair(a.patch, a.face)) std::swap(a, b);
+    if (seen_.insert({a.patch, a.face, b.patch, b.face}).second) gluing_.glues.push_back({a, b, edge, at});
+  }
+  void addUnmatched(SubFaceId face) {
+    if (unmatched_.insert({face.patch, face.face}).second) gluing_.unmatched.push_back(face);
+  }
+  SubFaceGluing take() { return std::move(gluing_); }
+
+ private:
+  std::set<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> seen_;
+  std::set<std::pair<std::uint32_t, std::uint32_t>> unmatched_;
+  SubFaceGluing gluing_;
+};
+
+/// Glues consecutive rays (or spokes) around a point of a cross-section, given in
+/// counterclockwise order, for each of which `facesLeft` tells whether its positive
+/// side faces the sector counterclockwise after it: the sector between ray a and the
+/// next ray b is faced by a when a faces left and by b when b does not; two facing
+/// sides are glued, one alone is unmatched.
+template <class Ray, class FacesLeft, class FaceOf>
+void glueAround(const std::vector<Ray>& counterclockwise, const FacesLeft& facesLeft, const FaceOf& faceOf,
+                GluedEdge edge, const AlgebraicAngle& at, GlueList& glues) {
+  const std::size_t count = counterclockwise.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const Ray &a = counterclockwise[i], &b = counterclockwise[(i + 1) % count];
+    const bool aFaces = facesLeft(a), bFaces = !facesLeft(b);
+    if (aFaces && bFaces) {
+      glues.add(faceOf(a, true), faceOf(b, false), edge, at);
+    } else if (aFaces) {
+      glues.addUnmatched(faceOf(a, true));
+    } else if (bFaces) {
+      glues.addUnmatched(faceOf(b, false));
+    }
+  }
+}
+
+bool holds(const PatchSlab& slab, const AlgebraicAngle& angle, AngleAlgebra& algebra);
+
+/// The index of the slab holding `angle`, searched from `start` on (wrapping).
+std::optional<std::size_t> slabIndexAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle,
+                                       AngleAlgebra& algebra, std::size_t start);
+
+/// The slab of `subdivision` that ends at `angle` (`ending`), or starts there.
+const PatchSlab* slabMeeting(const PatchSubdivision& subdivision, const AlgebraicAngle& angle, bool ending,
+                             AngleAlgebra& algebra);
+
+/// Remembers, per patch, where the last search for a slab ended: the gluing asks
+/// mostly for rising angles, so the search usually ends at once.
+class SlabCursor {
+ public:
+  SlabCursor(const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra)
+      : subdivisions_(subdivisions), algebra_(algebra), last_(subdivisions.size(), 0) {}
+
+  const PatchSlab* at(std::uint32_t patch, const AlgebraicAngle& angle) {
+    const auto found = slabIndexAt(subdivisions_[patch], angle, algebra_, last_[patch]);
+    if (!found) return nullptr;
+    last_[patch] = *found;
+    return &subdivisions_[patch].slabs[*found];
+  }
+
+ private:
+  const std::vector<PatchSubdivision>& subdivisions_;
+  AngleAlgebra& algebra_;
+  std::vector<std::size_t> last_;
+};
+
+}  // namespace freespace::gluing

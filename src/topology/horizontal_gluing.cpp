@@ -1,0 +1,356 @@
+#include <algorithm>
+#include <map>
+#include <stdexcept>
+
+#include "freespace/geometry/patch_vertex.h"
+#include "freespace/topology/sub_face_gluing.h"
+#include "gluing_parts.h"
+
+namespace freespace {
+
+namespace {
+
+using Point = std::array<Rational, 2>;
+
+/// How near the angles the cross-sections are read at lie to a horizontal edge (one
+/// on each side, inside the slabs meeting the edge there): within 2^-kBits in the
+/// tangent parameter. The named points of the edge (see EdgePoint) must come out
+/// apart and in one order on both sides; if not, the bits are doubled (twice at most).
+constexpr int kBits = 64;
+
+/// A patch meeting a horizontal edge with its slab that ends there (`below`) or
+/// starts there.
+struct EdgeSide {
+  std::uint32_t patch;
+  bool below;
+};
+
+/// The sides of the patches meeting along one line at one angle.
+struct HorizontalEdge {
+  AlgebraicAngle angle;
+  std::vector<EdgeSide> sides;
+};
+
+/// Groups range ends and overlaps by the EF function they are roots of (range ends
+/// of one function's root share a line there: the edge lies in the facet's plane;
+/// an overlap's coincidence function is keyed as an EF function) and by root.
+std::vector<HorizontalEdge> horizontalEdges(const std::vector<PatchGeometry>& patches,
+                                            const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra) {
+  std::map<AngleFunction::RootKey, std::vector<HorizontalEdge>> byFunction;
+  const auto add = [&](const AlgebraicAngle& angle, EdgeSide side) {
+    const auto& function = angle.function();
+    if (!function || !function->key()) throw std::logic_error("glueAcrossHorizontalEdges: an edge's angle has no key");
+    std::vector<HorizontalEdge>& edges = byFunction[*function->key()];
+    for (HorizontalEdge& edge : edges) {
+      if (algebra.compare(edge.angle, angle) == 0) return edge.sides.push_back(side);
+    }
+    edges.push_back({angle, {side}});
+  };
+  for (std::uint32_t patch = 0; patch < patches.size(); ++patch) {
+    for (const AngleInterval& arc : patches[patch].patch.range.arcs) {
+      add(arc.from, {patch, false});
+      add(arc.to, {patch, true});
+    }
+  }
+  for (const PatchOverlap& overlap : overlaps) {
+    for (std::uint32_t patch : overlap.patches) {
+      add(overlap.angle, {patch, true});
+      add(overlap.angle, {patch, false});
+    }
+  }
+  std::vector<HorizontalEdge> edges;
+  for (auto& [key, ofFunction] : byFunction) {
+    for (HorizontalEdge& edge : ofFunction) edges.push_back(std::move(edge));
+  }
+  return edges;
+}
+
+/// A patch's segment and line at a rational angle.
+struct ExactSegment {
+  Point end0, end1;
+  Rational nx, ny, w;
+
+  Rational valueAt(const Point& p) const { return nx * p[0] + ny * p[1] + w; }
+};
+
+ExactSegment segmentAt(const PatchGeometry& patch, const Rational& cosine, const Rational& sine) {
+  const LineAtAngle<Rational> line = lineAtAngle(lineOf<Rational>(patch.line), cosine, sine);
+  return {spiralPoint(spiralOf<Rational>(patch.ends[0]), cosine, sine),
+          spiralPoint(spiralOf<Rational>(patch.ends[1]), cosine, sine), line.nx, line.ny, line.w};
+}
+
+/// Names a point of the edge that the sides' segments and curves reach from both
+/// sides of the edge: a spiral (a segment end), the crossing with the line of a patch
+/// not on the edge, or the point where two patches on the edge have equal slopes
+/// (their curve lands there).
+using EdgePoint = std::array<std::uint32_t, 5>;
+constexpr std::uint32_t kSpiral = 0, kCrossingLine = 1, kEqualSlopes = 2;
+
+/// A side of the edge read at its near angle: its segment, the crossings of its
+/// slab's curves by lambda, and its named points with their positions along the edge.
+struct SideAtAngle {
+  EdgeSide side;
+  const PatchSlab* slab;
+  ExactSegment segment;
+  std::vector<Rational> crossings;
+  Rational position0, position1;
+  /// +1 when the positive side faces +s of the cross-section.
+  int orientation = 0;
+};
+
+/// A patch in the cross-section at one position: a ray from the edge.
+struct Ray {
+  bool below;
+  Rational offset;
+  int orientation;
+  SubFaceId face;
+};
+
+/// The named points of the edge in their order along it, each with the range of
+/// positions it was read at (the two sides of the edge read it at two angles, and
+/// different segments at different points of a crossing line).
+struct NamedPosition {
+  EdgePoint point;
+  Rational low, high;
+};
+
+class EdgeGluer {
+ public:
+  EdgeGluer(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
+            const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra, gluing::GlueList& glues)
+      : patches_(patches), curves_(curves), subdivisions_(subdivisions), algebra_(algebra), glues_(glues) {}
+
+  void glue(const HorizontalEdge& edge) {
+    std::vector<const PatchSlab*> slabs;
+    onEdge_.clear();
+    for (const EdgeSide& side : edge.sides) {
+      slabs.push_back(gluing::slabMeeting(subdivisions_[side.patch], edge.angle, side.below, algebra_));
+      if (!slabs.back()) throw std::logic_error("glueAcrossHorizontalEdges: a patch has no slab at its edge");
+      onEdge_.push_back(side.patch);
+    }
+    const std::array<std::optional<AlgebraicAngle>, 2> bounds = boundsOf(edge, slabs);
+    for (int bits = kBits; bits <= 4 * kBits; bits *= 2) {
+      const std::vector<SideAtAngle> sides = sidesNextTo(edge, slabs, bounds, bits);
+      if (const std::optional<std::vector<NamedPosition>> points = namedPositions(sides, edge.angle)) {
+        for (std::size_t i = 0; i + 1 < points->size(); ++i) {
+          glueAt(((*points)[i].high + (*points)[i + 1].low) / 2, sides);
+        }
+        return;
+      }
+    }
+    throw std::logic_error("glueAcrossHorizontalEdges: points of an edge not apart");
+  }
+
+ private:
+  /// For each side of the edge (index 1 below), an angle inside every slab meeting
+  /// the edge there, if any does.
+  std::array<std::optional<AlgebraicAngle>, 2> boundsOf(const HorizontalEdge& edge,
+                                                        const std::vector<const PatchSlab*>& slabs) {
+    std::array<std::optional<AlgebraicAngle>, 2> bounds;
+    for (std::size_t i = 0; i < slabs.size(); ++i) {
+      const bool below = edge.sides[i].below;
+      std::optional<AlgebraicAngle>& bound = bounds[below ? 1 : 0];
+      const AlgebraicAngle& otherEnd = below ? slabs[i]->from : slabs[i]->to;
+      if (!bound) {
+        bound = slabs[i]->sample;
+      } else if (algebra_.contains(between(*bound, edge.angle, below), otherEnd, AngleAlgebra::Boundary::Excluded)) {
+        bound = otherEnd;
+      }
+    }
+    return bounds;
+  }
+
+  /// The sides read at rational angles within 2^-bits of the edge, below and above.
+  std::vector<SideAtAngle> sidesNextTo(const HorizontalEdge& edge, const std::vector<const PatchSlab*>& slabs,
+                                       const std::array<std::optional<AlgebraicAngle>, 2>& bounds, int bits) {
+    std::array<std::optional<std::pair<Rational, Rational>>, 2> rotations;
+    for (int below = 1; below >= 0; --below) {
+      if (!bounds[below]) continue;
+      near_ = algebra_.rationalNextTo(edge.angle, *bounds[below], below == 1, bits);
+      rotations[below] = exactCosSin(near_);
+    }
+    std::vector<SideAtAngle> sides;
+    for (std::size_t i = 0; i < edge.sides.size(); ++i) {
+      const auto& [cosine, sine] = *rotations[edge.sides[i].below ? 1 : 0];
+      sides.push_back(sideAt(edge.sides[i], slabs[i], cosine, sine));
+    }
+    orient(sides);
+    return sides;
+  }
+
+  /// The open arc between an angle and the edge's, counterclockwise toward the edge
+  /// when `below`.
+  AngleInterval between(const AlgebraicAngle& angle, const AlgebraicAngle& edge, bool below) {
+    const AlgebraicAngle &from = below ? angle : edge, &to = below ? edge : angle;
+    return {from, to, algebra_.compare(from, to) > 0};
+  }
+
+  SideAtAngle sideAt(const EdgeSide& side, const PatchSlab* slab, const Rational& cosine, const Rational& sine) {
+    SideAtAngle at{side, slab, segmentAt(patches_[side.patch], cosine, sine), {}, 0, 0};
+    for (std::uint32_t curve : slab->curves) {
+      const ExactSegment other = segmentAt(patches_[curves_[curve].other(side.patch)], cosine, sine);
+      const Rational v0 = other.valueAt(at.segment.end0), v1 = other.valueAt(at.segment.end1);
+      if (v0 == v1) throw std::logic_error("glueAcrossHorizontalEdges: a curve's line is parallel to a segment");
+      at.crossings.push_back(v0 / (v0 - v1));
+    }
+    if (!std::is_sorted(at.crossings.begin(), at.crossings.end())) {
+      throw std::logic_error("glueAcrossHorizontalEdges: curves out of their slab's order");
+    }
+    return at;
+  }
+
+  /// Positions along the edge are read along the first side's line, offsets across
+  /// it along its normal.
+  void orient(std::vector<SideAtAngle>& sides) {
+    normal_ = {sides.front().segment.nx, sides.front().segment.ny};
+    for (SideAtAngle& side : sides) {
+      side.position0 = position(side.segment.end0);
+      side.position1 = position(side.segment.end1);
+      if (side.position0 == side.position1) throw std::logic_error("glueAcrossHorizontalEdges: a segment across the edge");
+      const Rational dot = side.segment.nx * normal_[0] + side.segment.ny * normal_[1];
+      if (dot == 0) throw std::logic_error("glueAcrossHorizontalEdges: a line across the edge");
+      side.orientation = dot > 0 ? 1 : -1;
+    }
+  }
+
+  Rational position(const Point& p) const { return p[1] * normal_[0] - p[0] * normal_[1]; }
+
+  EdgePoint spiralPoint(const SideAtAngle& side, int k) const {
+    const SegmentEnd& end = patches_[side.side.patch].segment.ends[k];
+    return {kSpiral, end.robotVertex, end.vertex, end.edge[0], end.edge[1]};
+  }
+
+  EdgePoint curvePoint(const SideAtAngle& side, std::uint32_t curve) const {
+    const std::uint32_t other = curves_[curve].other(side.side.patch);
+    if (std::find(onEdge_.begin(), onEdge_.end(), other) == onEdge_.end()) return {kCrossingLine, other, 0, 0, 0};
+    return {kEqualSlopes, std::min(other, side.side.patch), std::max(other, side.side.patch), 0, 0};
+  }
+
+  /// A named point as read by one side: where, and the patch that reads it, with
+  /// the segment end (a spiral) or the curve's other patch (a crossing line).
+  struct Reading {
+    Rational at;
+    EdgePoint point;
+    std::uint32_t patch;
+    int end;
+    std::uint32_t other;
+  };
+
+  /// Whether two named points are one point of the edge, decided exactly at its
+  /// angle: a spiral on a crossing line (an SF root at the edge's angle), or two
+  /// crossing lines through one point of the edge (an FFF root).
+  bool samePoint(const Reading& a, const Reading& b, const AlgebraicAngle& edge) {
+    if (a.point[0] > b.point[0]) return samePoint(b, a, edge);
+    if (a.point[0] == kSpiral && b.point[0] == kCrossingLine) {
+      const PatchGeometry& spiralOwner = patches_[a.patch];
+      const auto function =
+          spiralOnLine(patches_[b.other].line, spiralOwner.ends[a.end], spiralOwner.segment.ends[a.end]);
+      return algebra_.signAt(*function, edge) == Sign::Zero;
+    }
+    if (a.point[0] == kCrossingLine && b.point[0] == kCrossingLine) {
+      const auto function = threePatchFunction(patches_[a.patch].line, patches_[a.other].line, patches_[b.other].line);
+      return algebra_.signAt(*function, edge) == Sign::Zero;
+    }
+    return false;
+  }
+
+  /// The named points the sides reach, in order along the edge: readings of one
+  /// point, and of points that are one point of the edge (samePoint), are merged.
+  /// None when readings of points apart at the edge interleave (the angles read at
+  /// are not near enough to the edge to tell their order).
+  std::optional<std::vector<NamedPosition>> namedPositions(const std::vector<SideAtAngle>& sides,
+                                                           const AlgebraicAngle& edge) {
+    std::vector<Reading> read;
+    for (const SideAtAngle& side : sides) {
+      const std::uint32_t patch = side.side.patch;
+      read.push_back({side.position0, spiralPoint(side, 0), patch, 0, 0});
+      read.push_back({side.position1, spiralPoint(side, 1), patch, 1, 0});
+      for (std::size_t i = 0; i < side.crossings.size(); ++i) {
+        const std::uint32_t curve = side.slab->curves[i];
+        read.push_back({side.position0 + side.crossings[i] * (side.position1 - side.position0),
+                        curvePoint(side, curve), patch, -1, curves_[curve].other(patch)});
+      }
+    }
+    // The range of positions each point is read at, by first reading.
+    std::map<EdgePoint, std::pair<Rational, Rational>> range;
+    std::map<EdgePoint, const Reading*> first;
+    for (const Reading& reading : read) {
+      const auto [found, inserted] = range.try_emplace(reading.point, reading.at, reading.at);
+      if (inserted) first[reading.point] = &reading;
+      found->second.first = std::min(found->second.first, reading.at);
+      found->second.second = std::max(found->second.second, reading.at);
+    }
+    std::vector<NamedPosition> byLow;
+    for (const auto& [point, extent] : range) byLow.push_back({point, extent.first, extent.second});
+    std::sort(byLow.begin(), byLow.end(), [](const NamedPosition& a, const NamedPosition& b) { return a.low < b.low; });
+    // Overlapping ranges are one point of the edge or the order is not known yet;
+    // consecutive points apart at the near angles may be one point of the edge too.
+    std::vector<NamedPosition> points;
+    for (const NamedPosition& next : byLow) {
+      const bool overlapping = !points.empty() && next.low <= points.back().high;
+      if (!points.empty() && samePoint(*first[points.back().point], *first[next.point], edge)) {
+        points.back().high = std::max(points.back().high, next.high);
+        continue;
+      }
+      if (overlapping) return std::nullopt;
+      points.push_back(next);
+    }
+    return points;
+  }
+
+  /// The rays of the sides over one position of the edge, ordered counterclockwise
+  /// in the cross-section (s across, theta up): rays up by decreasing slope, then rays
+  /// down by decreasing slope. The offset of a line read above the edge is its slope
+  /// times a positive gap, below times a negative one: rays up by decreasing offset,
+  /// rays down by increasing offset.
+  void glueAt(const Rational& at, const std::vector<SideAtAngle>& sides) {
+    std::vector<Ray> rays;
+    for (const SideAtAngle& side : sides) {
+      const Rational lambda = (at - side.position0) / (side.position1 - side.position0);
+      if (lambda <= 0 || lambda >= 1) continue;
+      const ExactSegment& s = side.segment;
+      const Point p{s.end0[0] + lambda * (s.end1[0] - s.end0[0]), s.end0[1] + lambda * (s.end1[1] - s.end0[1])};
+      const auto gap = std::upper_bound(side.crossings.begin(), side.crossings.end(), lambda) - side.crossings.begin();
+      rays.push_back({side.side.below, p[0] * normal_[0] + p[1] * normal_[1], side.orientation,
+                      {side.side.patch, side.slab->faces[static_cast<std::size_t>(gap)]}});
+    }
+    std::sort(rays.begin(), rays.end(), [](const Ray& a, const Ray& b) {
+      if (a.below != b.below) return b.below;
+      return a.below ? a.offset < b.offset : a.offset > b.offset;
+    });
+    for (std::size_t i = 1; i < rays.size(); ++i) {
+      if (rays[i - 1].below == rays[i].below && rays[i - 1].offset == rays[i].offset) {
+        throw std::logic_error("glueAcrossHorizontalEdges: two lines cross over a sample of an edge");
+      }
+    }
+    // A ray down faces the sector after it (on its left) when its positive side is
+    // +s; a ray up when it is -s.
+    gluing::glueAround(
+        rays, [](const Ray& ray) { return ray.below == (ray.orientation > 0); },
+        [](const Ray& ray, bool) { return ray.face; }, GluedEdge::Horizontal, near_, glues_);
+  }
+
+  const std::vector<PatchGeometry>& patches_;
+  const std::vector<PatchCurve>& curves_;
+  const std::vector<PatchSubdivision>& subdivisions_;
+  AngleAlgebra& algebra_;
+  gluing::GlueList& glues_;
+  std::vector<std::uint32_t> onEdge_;
+  /// The angle the last glues were read at (above the edge if any side is there).
+  AlgebraicAngle near_ = AlgebraicAngle::rational(0, 0.0);
+  Point normal_;
+};
+
+}  // namespace
+
+SubFaceGluing glueAcrossHorizontalEdges(const std::vector<PatchGeometry>& patches,
+                                        const std::vector<PatchCurve>& curves,
+                                        const std::vector<PatchOverlap>& overlaps,
+                                        const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
+  gluing::GlueList glues;
+  EdgeGluer gluer(patches, curves, subdivisions, algebra, glues);
+  for (const HorizontalEdge& edge : horizontalEdges(patches, overlaps, algebra)) gluer.glue(edge);
+  return glues.take();
+}
+
+}  // namespace freespace

@@ -1,0 +1,41 @@
+#include "gluing_parts.h"
+
+namespace freespace::gluing {
+
+bool holds(const PatchSlab& slab, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
+  const int order = algebra.compare(slab.from, slab.to);
+  // A slab from an event back to itself runs once around; one whose sample is its
+  // `from` too is a whole circle without events.
+  if (order == 0) return algebra.compare(slab.from, angle) != 0 || algebra.compare(slab.from, slab.sample) == 0;
+  return algebra.contains(AngleInterval{slab.from, slab.to, order > 0}, angle, AngleAlgebra::Boundary::Excluded);
+}
+
+std::optional<std::size_t> slabIndexAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle,
+                                       AngleAlgebra& algebra, std::size_t start) {
+  const std::size_t count = subdivision.slabs.size();
+  for (std::size_t step = 0; step < count; ++step) {
+    const std::size_t i = (start + step) % count;
+    if (holds(subdivision.slabs[i], angle, algebra)) return i;
+  }
+  return std::nullopt;
+}
+
+const PatchSlab* slabMeeting(const PatchSubdivision& subdivision, const AlgebraicAngle& angle, bool ending,
+                             AngleAlgebra& algebra) {
+  for (const PatchSlab& slab : subdivision.slabs) {
+    if (algebra.compare(slab.from, slab.sample) == 0) continue;  // a whole circle without events
+    if (algebra.compare(ending ? slab.to : slab.from, angle) == 0) return &slab;
+  }
+  return nullptr;
+}
+
+}  // namespace freespace::gluing
+
+namespace freespace {
+
+const PatchSlab* slabAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
+  const auto found = gluing::slabIndexAt(subdivision, angle, algebra, 0);
+  return found ? &subdivision.slabs[*found] : nullptr;
+}
+
+}  // namespace freespace

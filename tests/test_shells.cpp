@@ -1,0 +1,131 @@
+// Shells against the exact collision test. From a random free configuration (exact
+// collision test on the perturbed meshes), the ray toward -x at its angle stays in
+// free space until it meets the boundary of the configuration's free cell, so the
+// first sub-face it meets must be met from its positive side and belong to a closed
+// shell (every side of it glued). A missing or wrong glue leaves such a shell open.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+
+#include "bundled_scene.h"
+#include "freespace/collision/exact_collision_checker.h"
+#include "freespace/topology/shell_classification.h"
+
+using namespace freespace;
+using namespace freespace::testing;
+
+namespace {
+
+struct ShellCheck {
+  int free = 0;
+  int escaped = 0;        // rays from free configurations that meet nothing
+  int hits = 0;           // ... that meet a sub-face
+  int fromNegative = 0;   // ... from its negative side (wrong)
+  int openShells = 0;     // ... of an open shell (wrong)
+  int degenerate = 0;
+  std::size_t shells = 0, closedShells = 0;
+  std::array<int, 3> glues{}, probedGlues{}, wrongGlues{};  // by GluedEdge
+};
+
+/// Whether the positive side of a sub-face is free, by the exact collision test at a
+/// probe (if it can be probed); each sub-face probed once.
+class FreeSides {
+ public:
+  FreeSides(const Arrangement& arrangement, const SliceRays& rays, const ExactCollisionChecker& collision,
+            AngleAlgebra& algebra)
+      : arrangement_(arrangement), rays_(rays), collision_(collision), algebra_(algebra) {}
+
+  std::optional<bool> of(SubFaceId face) {
+    const auto [found, inserted] = known_.try_emplace({face.patch, face.face});
+    if (inserted) {
+      const std::optional<SubFaceProbe> probe = probeSubFace(arrangement_, rays_, face, algebra_);
+      if (probe) found->second = !collision_.inCollision(probe->angle, probe->x, probe->y);
+    }
+    return found->second;
+  }
+
+ private:
+  const Arrangement& arrangement_;
+  const SliceRays& rays_;
+  const ExactCollisionChecker& collision_;
+  AngleAlgebra& algebra_;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::optional<bool>> known_;
+};
+
+/// Glued sub-faces face one region: both free or both blocked.
+void checkGlues(const Arrangement& arrangement, const SliceRays& rays, const ExactCollisionChecker& collision,
+                AngleAlgebra& algebra, ShellCheck& check) {
+  FreeSides freeSide(arrangement, rays, collision, algebra);
+  for (const SubFaceGluing* gluing :
+       {&arrangement.acrossCurves, &arrangement.aroundSpirals, &arrangement.acrossHorizontalEdges}) {
+    for (const SubFaceGlue& glue : gluing->glues) {
+      const auto kind = static_cast<std::size_t>(glue.edge);
+      check.glues[kind]++;
+      const std::optional<bool> a = freeSide.of(glue.first), b = freeSide.of(glue.second);
+      if (!a || !b) continue;
+      check.probedGlues[kind]++;
+      check.wrongGlues[kind] += *a != *b;
+    }
+  }
+}
+
+ShellCheck checkShells(BundledScene& scene, int samples, unsigned seed) {
+  const Arrangement arrangement = buildArrangement(scene.geometries, scene.algebra);
+  const SliceRays rays(arrangement, scene.algebra);
+  const ExactCollisionChecker collision(scene.meshes.robot, scene.meshes.world);
+  ShellCheck check;
+  check.shells = arrangement.shells.count();
+  for (std::uint32_t shell = 0; shell < arrangement.shells.count(); ++shell) {
+    check.closedShells += arrangement.shells.closed(shell);
+  }
+  checkGlues(arrangement, rays, collision, scene.algebra, check);
+  const Box3 world = scene.meshes.world.bounds();
+  const double reach = scene.meshes.robot.bounds().sizes().head<2>().norm();
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> x(world.min().x() - reach, world.max().x() + reach);
+  std::uniform_real_distribution<double> y(world.min().y() - reach, world.max().y() + reach);
+  std::uniform_real_distribution<double> theta(-M_PI, M_PI);
+  for (int i = 0; i < samples; ++i) {
+    const Pose2 pose{x(random), y(random), theta(random)};
+    if (collision.inCollision(pose)) continue;
+    check.free++;
+    const RayHit hit = rays.cast(AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta)),
+                                 {Rational(pose.x), Rational(pose.y)}, -1);
+    switch (hit.kind) {
+      case RayHit::Kind::Nothing: check.escaped++; break;
+      case RayHit::Kind::SubFace:
+        check.hits++;
+        check.fromNegative += !hit.fromPositiveSide;
+        check.openShells += !arrangement.shells.closed(arrangement.shells.shellOf(hit.face));
+        break;
+      default: check.degenerate++;
+    }
+  }
+  return check;
+}
+
+class BundledSceneShells : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BundledSceneShells, RaysFromFreeConfigurationsMeetClosedShellsFromTheirFreeSide) {
+  BundledScene scene(GetParam());
+  const ShellCheck check = checkShells(scene, 400, 7);
+  std::cout << GetParam() << ": " << check.shells << " shells, " << check.closedShells << " closed; " << check.free
+            << " free configurations: " << check.hits << " rays meet a sub-face (" << check.fromNegative
+            << " from its negative side, " << check.openShells << " of an open shell), " << check.escaped
+            << " meet nothing, " << check.degenerate << " degenerate\n";
+  for (int kind = 0; kind < 3; ++kind) {
+    std::cout << "  glues of kind " << kind << ": " << check.glues[kind] << ", probed " << check.probedGlues[kind]
+              << ", joining a free and a blocked side " << check.wrongGlues[kind] << "\n";
+    EXPECT_EQ(check.wrongGlues[kind], 0);
+  }
+  EXPECT_GT(check.hits, 0);
+  EXPECT_EQ(check.fromNegative, 0);
+  EXPECT_EQ(check.openShells, 0);
+  EXPECT_EQ(check.degenerate, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, BundledSceneShells,
+                         ::testing::Values("cage.cfg", "keyhole.cfg", "keyhole_narrow.cfg", "turn_around.cfg", "table.cfg"));
+
+}  // namespace
