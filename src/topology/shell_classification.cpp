@@ -3,43 +3,25 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "slice_pieces.h"
+
 namespace freespace {
 
 namespace {
 
-using Point = std::array<Rational, 2>;
-
-/// The first and last lambda of the sub-face at index `gap` of the slab at its
-/// sample angle.
-std::pair<Rational, Rational> pieceOf(const Arrangement& arrangement, std::uint32_t patch, const PatchSlab& slab,
-                                      std::size_t gap, const Point& end0, const Point& end1, const Rational& cosine,
-                                      const Rational& sine) {
-  const auto lambdaOf = [&](std::uint32_t curve) {
-    const PatchGeometry& other = arrangement.patches[arrangement.curves[curve].other(patch)];
-    const LineAtAngle<Rational> line = lineAtAngle(lineOf<Rational>(other.line), cosine, sine);
-    const Rational v0 = line.nx * end0[0] + line.ny * end0[1] + line.w;
-    const Rational v1 = line.nx * end1[0] + line.ny * end1[1] + line.w;
-    return Rational(v0 / (v0 - v1));
-  };
-  return {gap == 0 ? Rational(0) : lambdaOf(slab.curves[gap - 1]),
-          gap == slab.curves.size() ? Rational(1) : lambdaOf(slab.curves[gap])};
-}
+using slices::Point;
 
 std::optional<SubFaceProbe> probeInSlab(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
                                         const PatchSlab& slab, std::size_t gap) {
   const AlgebraicAngle& sample = slab.sample;
   if (sample.lower() != sample.upper()) return std::nullopt;  // not a double parameter
   const auto [cosine, sine] = exactCosSin(sample);
-  const PatchGeometry& patch = arrangement.patches[face.patch];
-  const LineAtAngle<Rational> line = lineAtAngle(lineOf<Rational>(patch.line), cosine, sine);
-  if (line.nx == 0) return std::nullopt;
-  const Point end0 = spiralPoint(spiralOf<Rational>(patch.ends[0]), cosine, sine);
-  const Point end1 = spiralPoint(spiralOf<Rational>(patch.ends[1]), cosine, sine);
-  const auto [low, high] = pieceOf(arrangement, face.patch, slab, gap, end0, end1, cosine, sine);
-  const Rational middle = (low + high) / 2;
-  const double x = (end0[0] + middle * (end1[0] - end0[0])).convert_to<double>();
-  const double y = (end0[1] + middle * (end1[1] - end0[1])).convert_to<double>();
-  const int toward = line.nx > 0 ? 1 : -1;  // the positive side along x
+  const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[face.patch], cosine, sine);
+  if (segment.nx == 0) return std::nullopt;
+  const auto [low, high] = slices::pieceOf(arrangement, face.patch, slab, gap, segment, cosine, sine);
+  const Point middle = segment.at((low + high) / 2);
+  const double x = middle[0].convert_to<double>(), y = middle[1].convert_to<double>();
+  const int toward = segment.nx > 0 ? 1 : -1;  // the positive side along x
   for (double distance = std::ldexp(1 + std::fabs(x), -8); distance > std::ldexp(1 + std::fabs(x), -48);
        distance /= 2) {
     const SubFaceProbe probe{{sample.chart(), sample.lower()}, x + toward * distance, y};

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "slice_pieces.h"
+
 namespace freespace {
 
 namespace {
@@ -14,7 +16,7 @@ namespace bgi = boost::geometry::index;
 using BoxPoint = bg::model::point<double, 3, bg::cs::cartesian>;
 using Box = bg::model::box<BoxPoint>;
 using BoxEntry = std::pair<Box, std::uint32_t>;
-using Point = std::array<Rational, 2>;
+using slices::Point;
 
 /// Padding of a query's angle: far more than the error of a rational angle's radians.
 constexpr double kAnglePad = 1e-9;
@@ -97,11 +99,9 @@ RayHit SliceRays::cast(const AlgebraicAngle& rationalAngle, const Point& from, i
   std::optional<Crossing> first;
   bool tie = false;
   for (std::uint32_t patch : impl_->candidates(rationalAngle, from, direction)) {
-    const PatchGeometry& geometry = arrangement.patches[patch];
-    if (!impl_->algebra.contains(geometry.patch.range, rationalAngle)) continue;
-    const Point end0 = spiralPoint(spiralOf<Rational>(geometry.ends[0]), cosine, sine);
-    const Point end1 = spiralPoint(spiralOf<Rational>(geometry.ends[1]), cosine, sine);
-    const std::optional<Crossing> found = Impl::crossing(patch, end0, end1, from, direction);
+    if (!impl_->algebra.contains(arrangement.patches[patch].patch.range, rationalAngle)) continue;
+    const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[patch], cosine, sine);
+    const std::optional<Crossing> found = Impl::crossing(patch, segment.end0, segment.end1, from, direction);
     if (!found) continue;
     if (!first || found->distance < first->distance) {
       first = found;
@@ -118,19 +118,13 @@ RayHit SliceRays::cast(const AlgebraicAngle& rationalAngle, const Point& from, i
   }
   hit.kind = RayHit::Kind::Degenerate;
   if (tie || first->alongSegment || first->lambda == 0 || first->lambda == 1) return hit;
-  const PatchGeometry& geometry = arrangement.patches[first->patch];
   const PatchSlab* slab = slabAt(arrangement.subdivisions[first->patch], rationalAngle, impl_->algebra);
   if (!slab) return hit;  // the angle is an event of the patch
-  const LineAtAngle<Rational> own = lineAtAngle(lineOf<Rational>(geometry.line), cosine, sine);
-  const Point end0 = spiralPoint(spiralOf<Rational>(geometry.ends[0]), cosine, sine);
-  const Point end1 = spiralPoint(spiralOf<Rational>(geometry.ends[1]), cosine, sine);
+  const slices::ExactSegment own = slices::segmentAt(arrangement.patches[first->patch], cosine, sine);
   std::size_t gap = 0;
   for (std::uint32_t curve : slab->curves) {
-    const LineAtAngle<Rational> other =
-        lineAtAngle(lineOf<Rational>(arrangement.patches[arrangement.curves[curve].other(first->patch)].line), cosine, sine);
-    const Rational v0 = other.nx * end0[0] + other.ny * end0[1] + other.w;
-    const Rational v1 = other.nx * end1[0] + other.ny * end1[1] + other.w;
-    const Rational lambda = v0 / (v0 - v1);
+    const std::uint32_t other = arrangement.curves[curve].other(first->patch);
+    const Rational lambda = slices::crossingLambda(own, slices::segmentAt(arrangement.patches[other], cosine, sine));
     if (lambda == first->lambda) return hit;  // through a curve's crossing
     gap += lambda < first->lambda;
   }
@@ -138,7 +132,7 @@ RayHit SliceRays::cast(const AlgebraicAngle& rationalAngle, const Point& from, i
   hit.face = {first->patch, slab->faces[gap]};
   hit.point = {from[0] + direction * first->distance, from[1]};
   // The ray arrives from the side of the start.
-  hit.fromPositiveSide = own.nx * from[0] + own.ny * from[1] + own.w > 0;
+  hit.fromPositiveSide = own.valueAt(from) > 0;
   return hit;
 }
 

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "freespace/geometry/perturbed_meshes.h"
+#include "freespace/numbers/predicate_statistics.h"
+#include "freespace/problem/planar_problem.h"
+#include "freespace/topology/arrangement.h"
+
+namespace freespace {
+
+struct FreeSpaceOptions {
+  PerturbationSettings perturbation;
+  /// Called as each construction stage starts, with the stage's name.
+  std::function<void(const std::string& stage)> progress;
+};
+
+/// Where a configuration lies: in a free cell (0 is the unbounded one), or blocked
+/// (the robot touches or overlaps the environment).
+struct Location {
+  bool free = false;
+  std::uint32_t cell = 0;
+};
+
+struct StageTime {
+  std::string stage;
+  double seconds = 0;
+};
+
+/// The exact free space of a robot translating and turning among a fixed
+/// environment (DESIGN.md sections 3 to 6), built once from the two meshes: the
+/// perturbed meshes, the patches and their arrangement, its shells classified by
+/// exact collision tests and nested into free cells.
+class FreeSpace {
+ public:
+  FreeSpace(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options = {});
+  ~FreeSpace();
+  FreeSpace(const FreeSpace&) = delete;
+  FreeSpace& operator=(const FreeSpace&) = delete;
+
+  /// From the arrangement alone, exactly: the first sub-face a ray at the
+  /// configuration's angle meets (toward -x, or +x when that ray passes exactly
+  /// through a vertex of the slice) tells free and the cell when the ray arrives
+  /// from its positive side and its shell is free; blocked otherwise (a
+  /// configuration on a segment touches the environment). A ray that meets nothing
+  /// starts in the unbounded cell. Configurations are of the perturbed meshes.
+  Location locate(const Pose2& pose) const;
+
+  /// The number of free cells, the unbounded one included.
+  std::size_t cellCount() const;
+  std::size_t shellCount() const;
+  std::size_t freeShellCount() const;
+  const Arrangement& arrangement() const;
+  const PerturbedMeshes& meshes() const;
+  const std::vector<StageTime>& stageTimes() const;
+  const PredicateStatistics& statistics() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace freespace

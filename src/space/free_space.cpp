@@ -1,0 +1,103 @@
+#include "freespace/space/free_space.h"
+
+#include <chrono>
+#include <stdexcept>
+
+#include "freespace/collision/exact_collision_checker.h"
+#include "freespace/geometry/mesh_topology.h"
+#include "freespace/topology/free_cells.h"
+
+namespace freespace {
+
+namespace {
+
+/// Times the stages of a construction and announces each.
+class StageClock {
+ public:
+  StageClock(std::vector<StageTime>& times, const std::function<void(const std::string&)>& progress)
+      : times_(times), progress_(progress) {}
+
+  template <class Work>
+  auto run(const std::string& stage, Work&& work) {
+    if (progress_) progress_(stage);
+    const auto start = std::chrono::steady_clock::now();
+    auto result = work();
+    times_.push_back({stage, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+    return result;
+  }
+
+ private:
+  std::vector<StageTime>& times_;
+  const std::function<void(const std::string&)>& progress_;
+};
+
+}  // namespace
+
+struct FreeSpace::Impl {
+  PredicateStatistics statistics;
+  mutable AngleAlgebra algebra{statistics};
+  std::vector<StageTime> stageTimes;
+  PerturbedMeshes meshes;
+  Arrangement arrangement;
+  std::unique_ptr<SliceRays> rays;
+  std::unique_ptr<ExactCollisionChecker> collision;
+  std::vector<ShellSide> sides;
+  std::unique_ptr<FreeCells> cells;
+
+  Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options) {
+    StageClock clock(stageTimes, options.progress);
+    meshes = clock.run("perturb", [&] { return perturbMeshes(robot, world, options.perturbation); });
+    std::vector<PatchGeometry> geometries = clock.run("patches", [&] {
+      const MeshTopology robotTopology(meshes.robot, statistics), worldTopology(meshes.world, statistics);
+      std::vector<Patch> patches = vertexFacetPatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
+      const std::vector<Patch> edgeEdge = edgeEdgePatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
+      patches.insert(patches.end(), edgeEdge.begin(), edgeEdge.end());
+      return patchGeometries(patches, meshes.robot, robotTopology, meshes.world, worldTopology, statistics);
+    });
+    arrangement = clock.run("arrangement", [&] { return buildArrangement(std::move(geometries), algebra); });
+    sides = clock.run("shells", [&] {
+      rays = std::make_unique<SliceRays>(arrangement, algebra);
+      collision = std::make_unique<ExactCollisionChecker>(meshes.robot, meshes.world);
+      return classifyShells(arrangement, *rays, *collision, algebra);
+    });
+    cells = clock.run("cells", [&] { return std::make_unique<FreeCells>(arrangement, *rays, sides, algebra); });
+  }
+
+  /// Free (with its cell) or blocked, from the first sub-face a ray meets: a point
+  /// sees a sub-face's positive side across free space only if that side is free,
+  /// i.e. its shell is free (a closed shell's sides are all free or all blocked, and
+  /// an open shell bounds no free cell).
+  Location locationOf(const RayHit& hit) const {
+    if (hit.kind == RayHit::Kind::Nothing) return {true, FreeCells::kUnbounded};
+    if (hit.kind == RayHit::Kind::OnSegment || !hit.fromPositiveSide) return {false, 0};
+    const std::optional<std::uint32_t> cell = cells->cellOfShell(arrangement.shells.shellOf(hit.face));
+    if (!cell) return {false, 0};
+    return {true, *cell};
+  }
+};
+
+FreeSpace::FreeSpace(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options)
+    : impl_(std::make_unique<Impl>(robot, world, options)) {}
+
+FreeSpace::~FreeSpace() = default;
+
+Location FreeSpace::locate(const Pose2& pose) const {
+  const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
+  for (int direction : {-1, 1}) {
+    const RayHit hit = impl_->rays->cast(at, {Rational(pose.x), Rational(pose.y)}, direction);
+    if (hit.kind != RayHit::Kind::Degenerate) return impl_->locationOf(hit);
+  }
+  throw std::runtime_error("FreeSpace::locate: both rays from the configuration pass through vertices of its slice");
+}
+
+std::size_t FreeSpace::cellCount() const { return impl_->cells->count(); }
+std::size_t FreeSpace::shellCount() const { return impl_->arrangement.shells.count(); }
+std::size_t FreeSpace::freeShellCount() const {
+  return static_cast<std::size_t>(std::count(impl_->sides.begin(), impl_->sides.end(), ShellSide::Free));
+}
+const Arrangement& FreeSpace::arrangement() const { return impl_->arrangement; }
+const PerturbedMeshes& FreeSpace::meshes() const { return impl_->meshes; }
+const std::vector<StageTime>& FreeSpace::stageTimes() const { return impl_->stageTimes; }
+const PredicateStatistics& FreeSpace::statistics() const { return impl_->statistics; }
+
+}  // namespace freespace

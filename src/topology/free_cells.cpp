@@ -1,0 +1,177 @@
+#include "freespace/topology/free_cells.h"
+
+#include <boost/pending/disjoint_sets.hpp>
+#include <cmath>
+#include <deque>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "slice_pieces.h"
+
+namespace freespace {
+
+namespace {
+
+using slices::Point;
+
+/// The leftmost point of a shell's slice at one angle.
+struct Leftmost {
+  AlgebraicAngle angle;
+  Point point;
+};
+
+/// The smallest distance tried from a shell's leftmost point, relative to its size.
+const Rational kSmallest = [] {
+  Rational smallest(1);
+  for (int i = 0; i < 160; ++i) smallest /= 2;
+  return smallest;
+}();
+
+bool leftOf(const Point& a, const Point& b) { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); }
+
+/// Nests the free closed shells (see FreeCells).
+class Nesting {
+ public:
+  Nesting(const Arrangement& arrangement, const SliceRays& rays, const std::vector<ShellSide>& sides,
+          AngleAlgebra& algebra)
+      : arrangement_(arrangement), rays_(rays), sides_(sides), algebra_(algebra),
+        members_(arrangement.shells.count()), angles_(arrangement.shells.count()),
+        rank_(arrangement.shells.count() + 1), parent_(arrangement.shells.count() + 1),
+        sets_(rank_.data(), parent_.data()) {
+    for (std::size_t i = 0; i < parent_.size(); ++i) sets_.make_set(i);
+    for (std::uint32_t patch = 0; patch < arrangement.subdivisions.size(); ++patch) {
+      for (std::uint32_t face = 0; face < arrangement.subdivisions[patch].faceCount; ++face) {
+        members_[arrangement.shells.shellOf({patch, face})].push_back({patch, face});
+      }
+    }
+  }
+
+  /// Shoots every free shell's ray until no angle set grows; returns the component
+  /// of each shell (the unbounded cell's node is the last).
+  std::vector<std::size_t> run() {
+    std::deque<std::uint32_t> work;
+    for (std::uint32_t shell = 0; shell < sides_.size(); ++shell) {
+      if (sides_[shell] != ShellSide::Free) continue;
+      angles_[shell].push_back(firstSample(shell));
+      work.push_back(shell);
+    }
+    while (!work.empty()) {
+      const std::uint32_t shell = work.front();
+      work.pop_front();
+      if (const std::optional<std::uint32_t> grown = shoot(shell)) work.push_back(*grown);
+    }
+    std::vector<std::size_t> components;
+    for (std::size_t node = 0; node < parent_.size(); ++node) components.push_back(sets_.find_set(node));
+    return components;
+  }
+
+ private:
+  /// A rational angle with a double parameter where the shell has a slice: the
+  /// sample of one of its sub-faces' slabs.
+  AlgebraicAngle firstSample(std::uint32_t shell) const {
+    for (const SubFaceId& face : members_[shell]) {
+      for (const PatchSlab& slab : arrangement_.subdivisions[face.patch].slabs) {
+        const bool holds = std::find(slab.faces.begin(), slab.faces.end(), face.face) != slab.faces.end();
+        if (holds && slab.sample.lower() == slab.sample.upper()) return slab.sample;
+      }
+    }
+    throw std::logic_error("FreeCells: a free shell has no sample angle");
+  }
+
+  /// The leftmost point of the shell's slice at a rational angle, if it has one.
+  std::optional<Point> leftmostAt(std::uint32_t shell, const AlgebraicAngle& angle) const {
+    const auto [cosine, sine] = exactCosSin(angle);
+    std::optional<Point> best;
+    for (const SubFaceId& face : members_[shell]) {
+      if (!algebra_.contains(arrangement_.patches[face.patch].patch.range, angle)) continue;
+      const PatchSlab* slab = slabAt(arrangement_.subdivisions[face.patch], angle, algebra_);
+      if (!slab) throw std::logic_error("FreeCells: a shell's angle is an event of one of its patches");
+      const slices::ExactSegment segment = slices::segmentAt(arrangement_.patches[face.patch], cosine, sine);
+      for (std::size_t gap = 0; gap < slab->faces.size(); ++gap) {
+        if (slab->faces[gap] != face.face) continue;
+        const auto [low, high] = slices::pieceOf(arrangement_, face.patch, *slab, gap, segment, cosine, sine);
+        for (const Rational& lambda : {low, high}) {
+          const Point point = segment.at(lambda);
+          if (!best || leftOf(point, *best)) best = point;
+        }
+      }
+    }
+    return best;
+  }
+
+  Leftmost leftmost(std::uint32_t shell) const {
+    std::optional<Leftmost> best;
+    for (const AlgebraicAngle& angle : angles_[shell]) {
+      const std::optional<Point> point = leftmostAt(shell, angle);
+      if (point && (!best || leftOf(*point, best->point))) best = Leftmost{angle, *point};
+    }
+    if (!best) throw std::logic_error("FreeCells: a shell has no slice at its angles");
+    return *best;
+  }
+
+  /// The ray of one shell from a point q up and left of its leftmost point p, at a
+  /// distance that shrinks until a ray from q toward +x tells which side of the
+  /// shell q lies on: q is outside the shell (left of its whole slice), and near p
+  /// the outside is the free cell when the shell is a hole in it (the ray meets the
+  /// shell first, from its free side) and blocked when the shell is its cell's outer
+  /// shell (the ray meets a blocked side first). A hole's ray toward -x from q joins
+  /// it to the shell it meets, whose angle set grows by the ray's angle if it did not
+  /// hold it (that shell is returned, to shoot again).
+  std::optional<std::uint32_t> shoot(std::uint32_t shell) {
+    const Leftmost from = leftmost(shell);
+    const Rational scale = 1 + abs(from.point[0]) + abs(from.point[1]);
+    for (Rational distance = scale / 1024; distance > scale * kSmallest; distance /= 16) {
+      const Point start{from.point[0] - distance, from.point[1] + distance};
+      const RayHit back = rays_.cast(from.angle, start, +1);
+      if (back.kind != RayHit::Kind::SubFace) continue;
+      const std::uint32_t seen = arrangement_.shells.shellOf(back.face);
+      if (!back.fromPositiveSide || sides_[seen] != ShellSide::Free) return std::nullopt;  // an outer shell
+      if (seen != shell) continue;
+      const RayHit hit = rays_.cast(from.angle, start, -1);
+      if (hit.kind == RayHit::Kind::Nothing) {
+        sets_.union_set(std::size_t{shell}, sides_.size());
+        return std::nullopt;
+      }
+      if (hit.kind != RayHit::Kind::SubFace) continue;
+      const std::uint32_t other = arrangement_.shells.shellOf(hit.face);
+      if (!hit.fromPositiveSide || sides_[other] != ShellSide::Free) {
+        throw std::logic_error("FreeCells: a ray in free space meets a shell that bounds no free cell");
+      }
+      sets_.union_set(std::size_t{shell}, std::size_t{other});
+      const bool known = std::any_of(angles_[other].begin(), angles_[other].end(),
+                                     [&](const AlgebraicAngle& a) { return algebra_.compare(a, from.angle) == 0; });
+      if (known) return std::nullopt;
+      angles_[other].push_back(from.angle);
+      return other;
+    }
+    throw std::runtime_error("FreeCells: no ray could be shot from a shell's leftmost point");
+  }
+
+  const Arrangement& arrangement_;
+  const SliceRays& rays_;
+  const std::vector<ShellSide>& sides_;
+  AngleAlgebra& algebra_;
+  std::vector<std::vector<SubFaceId>> members_;
+  std::vector<std::vector<AlgebraicAngle>> angles_;
+  std::vector<std::size_t> rank_, parent_;
+  boost::disjoint_sets<std::size_t*, std::size_t*> sets_;
+};
+
+}  // namespace
+
+FreeCells::FreeCells(const Arrangement& arrangement, const SliceRays& rays, const std::vector<ShellSide>& sides,
+                     AngleAlgebra& algebra)
+    : cellOfShell_(sides.size()) {
+  const std::vector<std::size_t> components = Nesting(arrangement, rays, sides, algebra).run();
+  std::unordered_map<std::size_t, std::uint32_t> cellOfComponent{{components.back(), kUnbounded}};
+  for (std::uint32_t shell = 0; shell < sides.size(); ++shell) {
+    if (sides[shell] != ShellSide::Free) continue;
+    const auto found = cellOfComponent.emplace(components[shell], static_cast<std::uint32_t>(cellOfComponent.size()));
+    cellOfShell_[shell] = found.first->second;
+  }
+  count_ = cellOfComponent.size();
+}
+
+std::optional<std::uint32_t> FreeCells::cellOfShell(std::uint32_t shell) const { return cellOfShell_[shell]; }
+
+}  // namespace freespace
