@@ -39,8 +39,8 @@ class FreeSides {
   std::optional<bool> of(SubFaceId face) {
     const auto [found, inserted] = known_.try_emplace({face.patch, face.face});
     if (inserted) {
-      const std::optional<SubFaceProbe> probe = probeSubFace(arrangement_, rays_, face, algebra_);
-      if (probe) found->second = !collision_.inCollision(probe->angle, probe->x, probe->y);
+      const std::optional<SubFaceProbe> probe = probeSubFace(arrangement_, rays_, face);
+      if (probe) found->second = !collision_.inCollisionAt(probe->pose);
     }
     return found->second;
   }

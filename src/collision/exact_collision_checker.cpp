@@ -62,6 +62,14 @@ struct ExactCollisionChecker::Impl {
     }
   }
 
+  bool collides(PlacedPair& pair) {
+    Tests tests(pair);
+    const bool collision = surfacesIntersect(pair, tests) || robotInsideWorld(pair, tests) || worldInsideRobot(pair, tests);
+    evaluated.fetch_add(pair.evaluatedCount(), std::memory_order_relaxed);
+    exact.fetch_add(pair.exactCount(), std::memory_order_relaxed);
+    return collision;
+  }
+
   bool surfacesIntersect(PlacedPair& pair, Tests& tests) const;
   bool robotInsideWorld(PlacedPair& pair, Tests& tests) const;
   bool worldInsideRobot(PlacedPair& pair, Tests& tests) const;
@@ -139,12 +147,13 @@ bool ExactCollisionChecker::inCollision(const Pose2& pose) const {
 bool ExactCollisionChecker::inCollision(const HalfAngle& angle, double x, double y) const {
   RoundingScope rounding;
   PlacedPair pair(impl_->robot, impl_->world, angle, x, y);
-  Tests tests(pair);
-  const bool collides = impl_->surfacesIntersect(pair, tests) || impl_->robotInsideWorld(pair, tests) ||
-                        impl_->worldInsideRobot(pair, tests);
-  impl_->evaluated.fetch_add(pair.evaluatedCount(), std::memory_order_relaxed);
-  impl_->exact.fetch_add(pair.exactCount(), std::memory_order_relaxed);
-  return collides;
+  return impl_->collides(pair);
+}
+
+bool ExactCollisionChecker::inCollisionAt(const ExactPose& pose) const {
+  RoundingScope rounding;
+  PlacedPair pair(impl_->robot, impl_->world, pose);
+  return impl_->collides(pair);
 }
 
 ExactCollisionChecker::PredicateCounts ExactCollisionChecker::predicateCounts() const {

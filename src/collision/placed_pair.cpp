@@ -14,14 +14,32 @@ PlacedPair::PlacedPair(const Mesh& robot, const Mesh& world, const HalfAngle& an
     : robot_(robot), world_(world), angle_(angle), x_(x), y_(y) {
   Interval cosine, sine;
   angle_.cosSin(cosine, sine);
-  const Interval placedX(x_), placedY(y_);
-  placedRobot_.reserve(robot.vertices().size());
-  for (const Point3& p : robot.vertices()) {
+  place(cosine, sine, Interval(x), Interval(y));
+}
+
+namespace {
+
+/// The two doubles around a rational (rounding to nearest is off by half an ulp).
+Interval enclosing(const Rational& value) {
+  const double nearest = value.convert_to<double>();
+  return {std::nextafter(nearest, -HUGE_VAL), std::nextafter(nearest, HUGE_VAL)};
+}
+
+}  // namespace
+
+PlacedPair::PlacedPair(const Mesh& robot, const Mesh& world, const ExactPose& pose)
+    : robot_(robot), world_(world), exactPose_(pose) {
+  place(enclosing(pose.cosine), enclosing(pose.sine), enclosing(pose.x), enclosing(pose.y));
+}
+
+void PlacedPair::place(const Interval& cosine, const Interval& sine, const Interval& x, const Interval& y) {
+  placedRobot_.reserve(robot_.vertices().size());
+  for (const Point3& p : robot_.vertices()) {
     const Interval px(p.x()), py(p.y());
-    placedRobot_.push_back({cosine * px - sine * py + placedX, sine * px + cosine * py + placedY, Interval(p.z())});
+    placedRobot_.push_back({cosine * px - sine * py + x, sine * px + cosine * py + y, Interval(p.z())});
     robotBounds_.extend(boxOf(placedRobot_.back()));
   }
-  exactRobot_.resize(robot.vertices().size());
+  exactRobot_.resize(robot_.vertices().size());
 }
 
 Vec3T<Interval> PlacedPair::approximate(PointId id) const {
@@ -42,16 +60,15 @@ const Vec3T<Rational>& PlacedPair::exact(PointId id) {
   }
   std::optional<Vec3T<Rational>>& cached = exactRobot_[id & ~kRobotPoint];
   if (!cached) {
-    if (!exactCosSin_) {
+    if (!exactPose_) {
       Rational cosine, sine;
       angle_.cosSin(cosine, sine);
-      exactCosSin_ = Vec3T<Rational>{cosine, sine, Rational(0)};
+      exactPose_ = ExactPose{cosine, sine, Rational(x_), Rational(y_)};
     }
-    const Rational& cosine = exactCosSin_->x;
-    const Rational& sine = exactCosSin_->y;
+    const ExactPose& pose = *exactPose_;
     const Point3& p = robot_.vertices()[id & ~kRobotPoint];
     const Rational px(p.x()), py(p.y());
-    cached = Vec3T<Rational>{cosine * px - sine * py + Rational(x_), sine * px + cosine * py + Rational(y_),
+    cached = Vec3T<Rational>{pose.cosine * px - pose.sine * py + pose.x, pose.sine * px + pose.cosine * py + pose.y,
                              Rational(p.z())};
   }
   return *cached;

@@ -9,6 +9,7 @@
 #include "freespace/numbers/half_angle.h"
 #include "freespace/numbers/interval.h"
 #include "freespace/numbers/rational.h"
+#include "freespace/collision/exact_collision_checker.h"
 #include "freespace/problem/planar_problem.h"
 
 namespace freespace::detail {
@@ -27,6 +28,8 @@ class PlacedPair {
  public:
   /// The robot turned by the rational angle and moved by (x, y), exactly.
   PlacedPair(const Mesh& robot, const Mesh& world, const HalfAngle& angle, double x, double y);
+  /// The robot placed exactly as `pose` says (cosine and sine on the unit circle).
+  PlacedPair(const Mesh& robot, const Mesh& world, const ExactPose& pose);
 
   Sign orient3d(PointId a, PointId b, PointId c, PointId d) {
     return decide([&](auto point) { return orient3dDeterminant(point(a), point(b), point(c), point(d)); });
@@ -68,11 +71,13 @@ class PlacedPair {
 
   const Mesh& robot_;
   const Mesh& world_;
+  void place(const Interval& cosine, const Interval& sine, const Interval& x, const Interval& y);
+
   HalfAngle angle_;
-  double x_, y_;
+  double x_ = 0, y_ = 0;
   std::vector<Vec3T<Interval>> placedRobot_;
   Box3 robotBounds_;
-  std::optional<Vec3T<Rational>> exactCosSin_;  // (cos, sin, 0) once needed
+  std::optional<ExactPose> exactPose_;  // given, or made from the angle once needed
   std::vector<std::optional<Vec3T<Rational>>> exactRobot_;
   std::vector<std::optional<Vec3T<Rational>>> exactWorld_;
   std::uint64_t evaluated_ = 0;

@@ -121,7 +121,8 @@ class Nesting {
     const Leftmost from = leftmost(shell);
     const Rational scale = 1 + abs(from.point[0]) + abs(from.point[1]);
     for (Rational distance = scale / 1024; distance > scale * kSmallest; distance /= 16) {
-      const Point start{from.point[0] - distance, from.point[1] + distance};
+     for (int up : {1, -1}) {
+      const Point start{from.point[0] - distance, from.point[1] + up * distance};
       const RayHit back = rays_.cast(from.angle, start, +1);
       if (back.kind != RayHit::Kind::SubFace) continue;
       const std::uint32_t seen = arrangement_.shells.shellOf(back.face);
@@ -143,6 +144,7 @@ class Nesting {
       if (known) return std::nullopt;
       angles_[other].push_back(from.angle);
       return other;
+     }
     }
     throw std::runtime_error("FreeCells: no ray could be shot from a shell's leftmost point");
   }

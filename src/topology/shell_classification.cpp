@@ -11,30 +11,34 @@ namespace {
 
 using slices::Point;
 
+/// The smallest distance tried from a sub-face, relative to its size.
+const Rational kSmallest = [] {
+  Rational smallest(1);
+  for (int i = 0; i < 200; ++i) smallest /= 2;
+  return smallest;
+}();
+
 std::optional<SubFaceProbe> probeInSlab(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
                                         const PatchSlab& slab, std::size_t gap) {
   const AlgebraicAngle& sample = slab.sample;
-  if (sample.lower() != sample.upper()) return std::nullopt;  // not a double parameter
   const auto [cosine, sine] = exactCosSin(sample);
   const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[face.patch], cosine, sine);
-  if (segment.nx == 0) return std::nullopt;
   const auto [low, high] = slices::pieceOf(arrangement, face.patch, slab, gap, segment, cosine, sine);
   const Point middle = segment.at((low + high) / 2);
-  const double x = middle[0].convert_to<double>(), y = middle[1].convert_to<double>();
-  const int toward = segment.nx > 0 ? 1 : -1;  // the positive side along x
-  for (double distance = std::ldexp(1 + std::fabs(x), -8); distance > std::ldexp(1 + std::fabs(x), -48);
-       distance /= 2) {
-    const SubFaceProbe probe{{sample.chart(), sample.lower()}, x + toward * distance, y};
-    const RayHit hit = rays.cast(sample, {Rational(probe.x), Rational(probe.y)}, -toward);
-    if (hit.kind == RayHit::Kind::SubFace && hit.face == face && hit.fromPositiveSide) return probe;
+  const Rational scale = (1 + abs(middle[0]) + abs(middle[1])) / (abs(segment.nx) + abs(segment.ny));
+  for (Rational distance = scale / 1024; distance > scale * kSmallest; distance /= 16) {
+    const Point off{middle[0] + distance * segment.nx, middle[1] + distance * segment.ny};
+    const RayHit hit = rays.castTo(sample, off, middle);
+    if (hit.kind == RayHit::Kind::SubFace && hit.face == face && hit.fromPositiveSide) {
+      return SubFaceProbe{{cosine, sine, off[0], off[1]}};
+    }
   }
   return std::nullopt;
 }
 
 }  // namespace
 
-std::optional<SubFaceProbe> probeSubFace(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
-                                         AngleAlgebra&) {
+std::optional<SubFaceProbe> probeSubFace(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face) {
   for (const PatchSlab& slab : arrangement.subdivisions[face.patch].slabs) {
     for (std::size_t gap = 0; gap < slab.faces.size(); ++gap) {
       if (slab.faces[gap] != face.face) continue;
@@ -54,9 +58,9 @@ std::vector<ShellSide> classifyShells(const Arrangement& arrangement, const Slic
       const SubFaceId face{patch, index};
       const std::uint32_t shell = shells.shellOf(face);
       if (decided[shell] || !shells.closed(shell)) continue;
-      const std::optional<SubFaceProbe> probe = probeSubFace(arrangement, rays, face, algebra);
+      const std::optional<SubFaceProbe> probe = probeSubFace(arrangement, rays, face);
       if (!probe) continue;
-      sides[shell] = collision.inCollision(probe->angle, probe->x, probe->y) ? ShellSide::Blocked : ShellSide::Free;
+      sides[shell] = collision.inCollisionAt(probe->pose) ? ShellSide::Blocked : ShellSide::Free;
       decided[shell] = true;
     }
   }

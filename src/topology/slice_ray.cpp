@@ -47,18 +47,26 @@ struct SliceRays::Impl {
     tree = bgi::rtree<BoxEntry, bgi::rstar<16>>(entries.begin(), entries.end());
   }
 
-  /// The patches whose boxes the ray's box meets (the boxes are padded far beyond
-  /// the rounding of the query's doubles, see patchBoxes).
-  std::vector<std::uint32_t> candidates(const AlgebraicAngle& angle, const Point& from, int direction) const {
+  /// The patches whose boxes meet the box of the ray from `from` along `direction`
+  /// (as far as `to` when bounded); the boxes are padded far beyond the rounding of
+  /// the query's doubles (see patchBoxes).
+  std::vector<std::uint32_t> candidates(const AlgebraicAngle& angle, const Point& from, const Point& direction,
+                                        bool bounded) const {
     const double theta = std::remainder(angle.radians(), 2 * M_PI);
-    const double x = from[0].convert_to<double>(), y = from[1].convert_to<double>();
-    const double pad = 1e-9 * (1 + std::fabs(x) + std::fabs(y)), huge = std::numeric_limits<double>::max();
+    const double huge = std::numeric_limits<double>::max();
+    double low[2], high[2];
+    for (int axis = 0; axis < 2; ++axis) {
+      const double start = from[axis].convert_to<double>(), step = direction[axis].convert_to<double>();
+      const double pad = 1e-9 * (1 + std::fabs(start) + std::fabs(step));
+      const double end = bounded ? start + step : (direction[axis] > 0 ? huge : (direction[axis] < 0 ? -huge : start));
+      low[axis] = std::min(start, end) - pad;
+      high[axis] = std::max(start, end) + pad;
+    }
     std::vector<BoxEntry> found;
     // Boxes stop at theta = +-pi: near it, look on both sides.
     for (const double at : {theta, theta - 2 * M_PI, theta + 2 * M_PI}) {
       if (at < -M_PI - kAnglePad || at > M_PI + kAnglePad) continue;
-      const Box query(BoxPoint(direction > 0 ? x - pad : -huge, y - pad, at - kAnglePad),
-                      BoxPoint(direction > 0 ? huge : x + pad, y + pad, at + kAnglePad));
+      const Box query(BoxPoint(low[0], low[1], at - kAnglePad), BoxPoint(high[0], high[1], at + kAnglePad));
       tree.query(bgi::intersects(query), std::back_inserter(found));
     }
     std::vector<std::uint32_t> patches;
@@ -68,23 +76,34 @@ struct SliceRays::Impl {
     return patches;
   }
 
-  /// Where the ray y = from.y, x = from.x + direction * distance (distance >= 0)
-  /// meets the patch's segment, if it does.
+  /// Where the ray from + s direction (s >= 0, and s <= 1 when bounded) meets the
+  /// segment from end0 to end1, if it does: s by Cramer's rule on
+  /// from + s direction = end0 + lambda (end1 - end0).
   static std::optional<Crossing> crossing(std::uint32_t patch, const Point& end0, const Point& end1, const Point& from,
-                                          int direction) {
-    const Rational dy0 = end0[1] - from[1], dy1 = end1[1] - from[1];
-    if ((dy0 > 0 && dy1 > 0) || (dy0 < 0 && dy1 < 0)) return std::nullopt;
-    if (dy0 == 0 && dy1 == 0) {
-      const Rational d0 = direction * (end0[0] - from[0]), d1 = direction * (end1[0] - from[0]);
-      if (d0 < 0 && d1 < 0) return std::nullopt;
-      return Crossing{patch, std::max(Rational(0), std::min(d0, d1)), 0, true};
+                                          const Point& direction, bool bounded) {
+    const auto cross = [](const Rational& ax, const Rational& ay, const Rational& bx, const Rational& by) {
+      return Rational(ax * by - ay * bx);
+    };
+    const Rational wx = end1[0] - end0[0], wy = end1[1] - end0[1];
+    const Rational ox = end0[0] - from[0], oy = end0[1] - from[1];
+    const Rational denominator = cross(direction[0], direction[1], wx, wy);
+    if (denominator == 0) {
+      if (cross(ox, oy, direction[0], direction[1]) != 0) return std::nullopt;  // parallel, apart
+      // Along the ray: where the segment's ends are on it.
+      const Rational length = direction[0] * direction[0] + direction[1] * direction[1];
+      const Rational s0 = (ox * direction[0] + oy * direction[1]) / length;
+      const Rational s1 = s0 + (wx * direction[0] + wy * direction[1]) / length;
+      const Rational nearest = std::max(Rational(0), std::min(s0, s1));
+      if (std::max(s0, s1) < 0 || (bounded && nearest > 1)) return std::nullopt;
+      return Crossing{patch, nearest, 0, true};
     }
-    const Rational lambda = dy0 / (dy0 - dy1);
-    const Rational x = end0[0] + lambda * (end1[0] - end0[0]);
-    const Rational distance = direction * (x - from[0]);
-    if (distance < 0) return std::nullopt;
-    return Crossing{patch, distance, lambda, false};
+    const Rational s = cross(ox, oy, wx, wy) / denominator;
+    const Rational lambda = cross(ox, oy, direction[0], direction[1]) / denominator;
+    if (s < 0 || (bounded && s > 1) || lambda < 0 || lambda > 1) return std::nullopt;
+    return Crossing{patch, s, lambda, false};
   }
+
+  RayHit cast(const AlgebraicAngle& angle, const Point& from, const Point& direction, bool bounded) const;
 };
 
 SliceRays::SliceRays(const Arrangement& arrangement, AngleAlgebra& algebra)
@@ -93,15 +112,23 @@ SliceRays::SliceRays(const Arrangement& arrangement, AngleAlgebra& algebra)
 SliceRays::~SliceRays() = default;
 
 RayHit SliceRays::cast(const AlgebraicAngle& rationalAngle, const Point& from, int direction) const {
+  return impl_->cast(rationalAngle, from, {Rational(direction), Rational(0)}, false);
+}
+
+RayHit SliceRays::castTo(const AlgebraicAngle& rationalAngle, const Point& from, const Point& to) const {
+  return impl_->cast(rationalAngle, from, {to[0] - from[0], to[1] - from[1]}, true);
+}
+
+RayHit SliceRays::Impl::cast(const AlgebraicAngle& rationalAngle, const Point& from, const Point& direction,
+                             bool bounded) const {
   if (!rationalAngle.isRational()) throw std::invalid_argument("SliceRays::cast: the angle must be rational");
-  const Arrangement& arrangement = impl_->arrangement;
   const auto [cosine, sine] = exactCosSin(rationalAngle);
   std::optional<Crossing> first;
   bool tie = false;
-  for (std::uint32_t patch : impl_->candidates(rationalAngle, from, direction)) {
-    if (!impl_->algebra.contains(arrangement.patches[patch].patch.range, rationalAngle)) continue;
+  for (std::uint32_t patch : candidates(rationalAngle, from, direction, bounded)) {
+    if (!algebra.contains(arrangement.patches[patch].patch.range, rationalAngle)) continue;
     const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[patch], cosine, sine);
-    const std::optional<Crossing> found = Impl::crossing(patch, segment.end0, segment.end1, from, direction);
+    const std::optional<Crossing> found = crossing(patch, segment.end0, segment.end1, from, direction, bounded);
     if (!found) continue;
     if (!first || found->distance < first->distance) {
       first = found;
@@ -118,7 +145,7 @@ RayHit SliceRays::cast(const AlgebraicAngle& rationalAngle, const Point& from, i
   }
   hit.kind = RayHit::Kind::Degenerate;
   if (tie || first->alongSegment || first->lambda == 0 || first->lambda == 1) return hit;
-  const PatchSlab* slab = slabAt(arrangement.subdivisions[first->patch], rationalAngle, impl_->algebra);
+  const PatchSlab* slab = slabAt(arrangement.subdivisions[first->patch], rationalAngle, algebra);
   if (!slab) return hit;  // the angle is an event of the patch
   const slices::ExactSegment own = slices::segmentAt(arrangement.patches[first->patch], cosine, sine);
   std::size_t gap = 0;
@@ -130,7 +157,7 @@ RayHit SliceRays::cast(const AlgebraicAngle& rationalAngle, const Point& from, i
   }
   hit.kind = RayHit::Kind::SubFace;
   hit.face = {first->patch, slab->faces[gap]};
-  hit.point = {from[0] + direction * first->distance, from[1]};
+  hit.point = {from[0] + first->distance * direction[0], from[1] + first->distance * direction[1]};
   // The ray arrives from the side of the start.
   hit.fromPositiveSide = own.valueAt(from) > 0;
   return hit;

@@ -6,6 +6,7 @@
 
 #include "freespace/geometry/mesh.h"
 #include "freespace/numbers/half_angle.h"
+#include "freespace/numbers/rational.h"
 #include "freespace/problem/planar_problem.h"
 
 namespace freespace {
@@ -22,6 +23,12 @@ namespace freespace {
 /// (Boost.Geometry R-tree) over B's triangles limits the pairs tested.
 ///
 /// Thread safe: queries are const and use no shared scratch memory.
+/// A configuration given exactly: the rotation by a rational point (cosine, sine)
+/// of the unit circle, then the translation by (x, y).
+struct ExactPose {
+  Rational cosine, sine, x, y;
+};
+
 class ExactCollisionChecker {
  public:
   ExactCollisionChecker(const Mesh& robot, const Mesh& world);
@@ -32,6 +39,7 @@ class ExactCollisionChecker {
   bool inCollision(const Pose2& pose) const;
   /// The same at the rational angle `angle` (the robot turned exactly by it).
   bool inCollision(const HalfAngle& angle, double x, double y) const;
+  bool inCollisionAt(const ExactPose& pose) const;
 
   /// How many predicate signs needed the exact fallback, and how many were
   /// evaluated in all, since construction (for benchmarks and tests).

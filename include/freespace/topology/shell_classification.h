@@ -8,21 +8,17 @@
 
 namespace freespace {
 
-/// A configuration just off a sub-face on its positive side, at a rational angle:
-/// the straight path from it along x to the sub-face meets no other segment.
+/// A configuration just off a sub-face on its positive side, exactly: the straight
+/// path from it to the sub-face meets no other segment.
 struct SubFaceProbe {
-  HalfAngle angle;
-  double x = 0;
-  double y = 0;
+  ExactPose pose;
 };
 
-/// A probe of the sub-face at the sample angle of one of its slabs whose parameter
-/// is a double, at the middle of its piece of segment, moved along x toward its
-/// positive side by a distance that halves until a ray back meets the sub-face
-/// first, from its positive side (SliceRays, exact). None when no slab of the
-/// sub-face allows it (all their segments horizontal, say).
-std::optional<SubFaceProbe> probeSubFace(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
-                                         AngleAlgebra& algebra);
+/// A probe of the sub-face at the sample angle of one of its slabs, at the middle of
+/// its piece of segment, moved along the line's normal toward its positive side by a
+/// distance that shrinks until the path back meets the sub-face first (SliceRays,
+/// exact). None when no slab of the sub-face allows it.
+std::optional<SubFaceProbe> probeSubFace(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face);
 
 enum class ShellSide { Free, Blocked, Open };
 

@@ -30,10 +30,9 @@ struct RayHit {
   bool fromPositiveSide = false;
 };
 
-/// Horizontal rays (along +x or -x) in the slices of an arrangement at rational
-/// angles, decided exactly: the candidate patches come from an R-tree of their
-/// (x, y, theta) boxes, then every test is on the exact slice (rational cosine and
-/// sine, rational points).
+/// Rays in the slices of an arrangement at rational angles, decided exactly: the
+/// candidate patches come from an R-tree of their (x, y, theta) boxes, then every
+/// test is on the exact slice (rational cosine and sine, rational points).
 class SliceRays {
  public:
   SliceRays(const Arrangement& arrangement, AngleAlgebra& algebra);
@@ -42,9 +41,12 @@ class SliceRays {
   SliceRays& operator=(const SliceRays&) = delete;
 
   /// The first sub-face met by the ray from `from` in direction (`direction`, 0),
-  /// direction +1 or -1, at a rational angle (AlgebraicAngle::isRational) that is
-  /// not an event of a patch the ray meets.
+  /// direction +1 or -1, at a rational angle (AlgebraicAngle::isRational).
   RayHit cast(const AlgebraicAngle& rationalAngle, const std::array<Rational, 2>& from, int direction) const;
+
+  /// The first sub-face met by the segment from `from` to `to` (its end included).
+  RayHit castTo(const AlgebraicAngle& rationalAngle, const std::array<Rational, 2>& from,
+                const std::array<Rational, 2>& to) const;
 
  private:
   struct Impl;

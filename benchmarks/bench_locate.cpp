@@ -1,0 +1,92 @@
+// Locate against the exact collision test on the bundled scenes: builds each scene's
+// free space, then locates random configurations (x, y over the environment's box
+// grown by the robot's reach, theta uniform) and compares free / blocked with the
+// exact collision test on the same perturbed meshes. Prints, per scene, the
+// construction's stage times and counts, the disagreements, the free cells met, and
+// the time per locate and per collision test.
+//
+// Usage: bench_locate [--samples N] [PROBLEM.cfg ...]   (default: 100000 samples,
+// every benchmarks/problems/*.cfg)
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <random>
+#include <set>
+#include <string>
+
+#include "freespace/collision/exact_collision_checker.h"
+#include "freespace/space/free_space.h"
+
+using namespace freespace;
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void measure(const std::string& cfg, int samples) {
+  const LoadedProblem loaded = loadProblem(cfg);
+  auto start = std::chrono::steady_clock::now();
+  const FreeSpace space(loaded.robot, loaded.world);
+  const double buildSeconds = secondsSince(start);
+  const ExactCollisionChecker collision(space.meshes().robot, space.meshes().world);
+  const Box3 world = space.meshes().world.bounds();
+  const double reach = space.meshes().robot.bounds().sizes().head<2>().norm();
+  std::mt19937_64 random(20261201);
+  std::uniform_real_distribution<double> x(world.min().x() - reach, world.max().x() + reach);
+  std::uniform_real_distribution<double> y(world.min().y() - reach, world.max().y() + reach);
+  std::uniform_real_distribution<double> theta(-M_PI, M_PI);
+  std::vector<Pose2> poses(static_cast<std::size_t>(samples));
+  for (Pose2& pose : poses) pose = {x(random), y(random), theta(random)};
+  std::vector<Location> locations;
+  locations.reserve(poses.size());
+  start = std::chrono::steady_clock::now();
+  for (const Pose2& pose : poses) locations.push_back(space.locate(pose));
+  const double locateSeconds = secondsSince(start);
+  int disagreements = 0, free = 0;
+  std::set<std::uint32_t> cellsMet;
+  start = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < poses.size(); ++i) {
+    const bool collides = collision.inCollision(poses[i]);
+    disagreements += locations[i].free == collides;
+    if (locations[i].free) {
+      ++free;
+      cellsMet.insert(locations[i].cell);
+    }
+  }
+  const double collisionSeconds = secondsSince(start);
+  std::cout << std::filesystem::path(cfg).stem().string() << ": robot " << space.meshes().robot.triangles().size()
+            << " triangles, world " << space.meshes().world.triangles().size() << " triangles; build "
+            << buildSeconds << " s (";
+  for (const StageTime& stage : space.stageTimes()) std::cout << stage.stage << " " << stage.seconds << " s, ";
+  std::cout << space.arrangement().patches.size() << " patches, " << space.shellCount() << " shells, "
+            << space.freeShellCount() << " free, " << space.cellCount() << " free cells); " << samples
+            << " configurations, " << free << " free, in " << cellsMet.size() << " cells; disagreements with the exact "
+            << "collision test: " << disagreements << "; locate " << 1e6 * locateSeconds / samples
+            << " us, collision test " << 1e6 * collisionSeconds / samples << " us per configuration" << std::endl;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  int samples = 100000;
+  std::vector<std::string> problems;
+  for (int i = 1; i < argc; ++i) {
+    const std::string argument = argv[i];
+    if (argument == "--samples" && i + 1 < argc) {
+      samples = std::stoi(argv[++i]);
+    } else {
+      problems.push_back(argument);
+    }
+  }
+  if (problems.empty()) {
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems")) {
+      if (entry.path().extension() == ".cfg") problems.push_back(entry.path().string());
+    }
+    std::sort(problems.begin(), problems.end());
+  }
+  for (const std::string& problem : problems) measure(problem, samples);
+  return 0;
+}
