@@ -10,5 +10,7 @@ namespace freespace::cli {
 void addCheckCommand(CLI::App& app);
 void addInfoCommand(CLI::App& app);
 void addGenerateCommand(CLI::App& app);
+void addBuildCommand(CLI::App& app);
+void addLocateCommand(CLI::App& app);
 
 }  // namespace freespace::cli

@@ -9,6 +9,8 @@ int main(int argc, char** argv) {
   freespace::cli::addCheckCommand(app);
   freespace::cli::addInfoCommand(app);
   freespace::cli::addGenerateCommand(app);
+  freespace::cli::addBuildCommand(app);
+  freespace::cli::addLocateCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

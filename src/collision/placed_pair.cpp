@@ -17,19 +17,9 @@ PlacedPair::PlacedPair(const Mesh& robot, const Mesh& world, const HalfAngle& an
   place(cosine, sine, Interval(x), Interval(y));
 }
 
-namespace {
-
-/// The two doubles around a rational (rounding to nearest is off by half an ulp).
-Interval enclosing(const Rational& value) {
-  const double nearest = value.convert_to<double>();
-  return {std::nextafter(nearest, -HUGE_VAL), std::nextafter(nearest, HUGE_VAL)};
-}
-
-}  // namespace
-
 PlacedPair::PlacedPair(const Mesh& robot, const Mesh& world, const ExactPose& pose)
     : robot_(robot), world_(world), exactPose_(pose) {
-  place(enclosing(pose.cosine), enclosing(pose.sine), enclosing(pose.x), enclosing(pose.y));
+  place(enclosingInterval(pose.cosine), enclosingInterval(pose.sine), enclosingInterval(pose.x), enclosingInterval(pose.y));
 }
 
 void PlacedPair::place(const Interval& cosine, const Interval& sine, const Interval& x, const Interval& y) {

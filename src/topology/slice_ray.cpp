@@ -106,6 +106,42 @@ struct SliceRays::Impl {
   RayHit cast(const AlgebraicAngle& angle, const Point& from, const Point& direction, bool bounded) const;
 };
 
+/// The ray and the angle in double intervals: a filter before exact crossings.
+struct IntervalRay {
+  Interval cosine, sine;
+  std::array<Interval, 2> from, direction;
+
+  IntervalRay(const AlgebraicAngle& angle, const Point& start, const Point& step) {
+    if (angle.lower() == angle.upper()) {
+      HalfAngle{angle.chart(), angle.lower()}.cosSin(cosine, sine);
+    } else {
+      const auto [c, s] = exactCosSin(angle);
+      cosine = enclosingInterval(c);
+      sine = enclosingInterval(s);
+    }
+    for (int axis = 0; axis < 2; ++axis) {
+      from[axis] = enclosingInterval(start[axis]);
+      direction[axis] = enclosingInterval(step[axis]);
+    }
+  }
+
+  /// A lower bound on where along the ray it meets the patch's segment, or none when
+  /// it certainly misses it (inside a RoundingScope).
+  std::optional<double> nearestMeeting(const PatchGeometry& patch, bool bounded) const {
+    const std::array<Interval, 2> end0 = spiralPoint(spiralOf<Interval>(patch.ends[0]), cosine, sine);
+    const std::array<Interval, 2> end1 = spiralPoint(spiralOf<Interval>(patch.ends[1]), cosine, sine);
+    const Interval wx = end1[0] - end0[0], wy = end1[1] - end0[1];
+    const Interval ox = end0[0] - from[0], oy = end0[1] - from[1];
+    const Interval denominator = direction[0] * wy - direction[1] * wx;
+    const std::optional<Sign> sign = certainSign(denominator);
+    if (!sign || *sign == Sign::Zero) return 0.0;
+    const Interval s = (ox * wy - oy * wx) / denominator;
+    const Interval lambda = (ox * direction[1] - oy * direction[0]) / denominator;
+    if (s.upper() < 0 || (bounded && s.lower() > 1) || lambda.upper() < 0 || lambda.lower() > 1) return std::nullopt;
+    return std::max(0.0, s.lower());
+  }
+};
+
 SliceRays::SliceRays(const Arrangement& arrangement, AngleAlgebra& algebra)
     : impl_(std::make_unique<Impl>(arrangement, algebra)) {}
 
@@ -123,9 +159,23 @@ RayHit SliceRays::Impl::cast(const AlgebraicAngle& rationalAngle, const Point& f
                              bool bounded) const {
   if (!rationalAngle.isRational()) throw std::invalid_argument("SliceRays::cast: the angle must be rational");
   const auto [cosine, sine] = exactCosSin(rationalAngle);
+  // Candidates by a lower bound on their distance, then exactly, nearest first,
+  // until the next cannot be nearer than the nearest found.
+  std::vector<std::pair<double, std::uint32_t>> byDistance;
+  {
+    RoundingScope rounding;
+    const IntervalRay approximate(rationalAngle, from, direction);
+    for (std::uint32_t patch : candidates(rationalAngle, from, direction, bounded)) {
+      if (const std::optional<double> low = approximate.nearestMeeting(arrangement.patches[patch], bounded)) {
+        byDistance.emplace_back(*low, patch);
+      }
+    }
+  }
+  std::sort(byDistance.begin(), byDistance.end());
   std::optional<Crossing> first;
   bool tie = false;
-  for (std::uint32_t patch : candidates(rationalAngle, from, direction, bounded)) {
+  for (const auto& [low, patch] : byDistance) {
+    if (first && Rational(low) > first->distance) break;
     if (!algebra.contains(arrangement.patches[patch].patch.range, rationalAngle)) continue;
     const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[patch], cosine, sine);
     const std::optional<Crossing> found = crossing(patch, segment.end0, segment.end1, from, direction, bounded);

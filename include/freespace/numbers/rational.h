@@ -2,6 +2,7 @@
 
 #include <boost/multiprecision/gmp.hpp>
 
+#include "freespace/numbers/interval.h"
 #include "freespace/numbers/sign.h"
 
 namespace freespace {
@@ -10,5 +11,12 @@ namespace freespace {
 using Rational = boost::multiprecision::mpq_rational;
 
 inline Sign exactSign(const Rational& value) { return signOf(value.sign()); }
+
+/// The double interval one ulp around a rational's double: it holds the rational
+/// (the conversion is off by less than an ulp).
+inline Interval enclosingInterval(const Rational& value) {
+  const double near = value.convert_to<double>();
+  return {std::nextafter(near, -HUGE_VAL), std::nextafter(near, HUGE_VAL)};
+}
 
 }  // namespace freespace

@@ -1,0 +1,101 @@
+#include <sys/resource.h>
+
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "commands.h"
+#include "free_space_input.h"
+
+namespace freespace::cli {
+
+namespace {
+
+nlohmann::json predicatesJson(const PredicateStatistics& statistics) {
+  nlohmann::json all = nlohmann::json::object();
+  for (int kind = 0; kind < static_cast<int>(PredicateKind::Count); ++kind) {
+    const PredicateStatistics::KindCounts& counts = statistics.counts(static_cast<PredicateKind>(kind));
+    nlohmann::json levels = nlohmann::json::object();
+    for (int level = 0; level < kPrecisionLevelCount; ++level) levels[precisionLevelName(level)] = counts.decided[level];
+    all[predicateKindName(static_cast<PredicateKind>(kind))] = {
+        {"levels", levels}, {"identities", counts.identities}, {"escalated_seconds", counts.escalatedSeconds}};
+  }
+  return all;
+}
+
+double peakMemoryMegabytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in kilobytes on Linux
+}
+
+nlohmann::json statisticsJson(const FreeSpace& space) {
+  const Arrangement& arrangement = space.arrangement();
+  std::size_t subFaces = 0, edges = 0;
+  for (const PatchSubdivision& subdivision : arrangement.subdivisions) subFaces += subdivision.faceCount;
+  for (const SubFaceGluing* gluing :
+       {&arrangement.acrossCurves, &arrangement.aroundSpirals, &arrangement.acrossHorizontalEdges}) {
+    edges += gluing->glues.size();
+  }
+  nlohmann::json stages = nlohmann::json::object();
+  double seconds = 0;
+  for (const StageTime& stage : space.stageTimes()) {
+    stages[stage.stage] = stage.seconds;
+    seconds += stage.seconds;
+  }
+  const PerturbationRecord& perturbation = space.meshes().record;
+  return {{"patches", arrangement.patches.size()},
+          {"curves", arrangement.curves.size()},
+          {"vertices", arrangement.vertices.size()},
+          {"sub_faces", subFaces},
+          {"edges", edges},
+          {"shells", space.shellCount()},
+          {"free_shells", space.freeShellCount()},
+          {"cells", space.cellCount()},
+          {"free_cells", space.cellCount()},
+          {"seconds", seconds},
+          {"stage_seconds", stages},
+          {"peak_memory_mb", peakMemoryMegabytes()},
+          {"perturbation",
+           {{"enabled", perturbation.enabled},
+            {"seed", perturbation.seed},
+            {"relative_size", perturbation.relativeSize},
+            {"absolute_size", perturbation.absoluteSize}}},
+          {"predicates", predicatesJson(space.statistics())},
+          {"double_interval_fraction", space.statistics().doubleIntervalFraction()}};
+}
+
+}  // namespace
+
+void addBuildCommand(CLI::App& app) {
+  struct Options {
+    FreeSpaceInput input;
+    bool json = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* command = app.add_subcommand("build", "Build the exact free space and print its statistics");
+  options->input.addOptions(*command);
+  command->add_flag("--json", options->json, "print JSON");
+  command->callback([options]() {
+    LoadedProblem loaded;
+    const std::unique_ptr<FreeSpace> space = options->input.build(loaded);
+    const nlohmann::json statistics = statisticsJson(*space);
+    if (options->json) {
+      std::cout << statistics.dump(2) << "\n";
+      return;
+    }
+    std::cout << "patches " << statistics["patches"] << ", curves " << statistics["curves"] << ", vertices "
+              << statistics["vertices"] << ", sub-faces " << statistics["sub_faces"] << ", edges "
+              << statistics["edges"] << "\n"
+              << "shells " << statistics["shells"] << " (" << statistics["free_shells"] << " bound free cells), free cells "
+              << statistics["free_cells"] << " (cell 0 is the unbounded one)\n"
+              << "seconds " << statistics["seconds"] << ":";
+    for (const StageTime& stage : space->stageTimes()) std::cout << " " << stage.stage << " " << stage.seconds;
+    std::cout << "\npeak memory " << statistics["peak_memory_mb"] << " MB; predicates decided in double intervals "
+              << 100 * space->statistics().doubleIntervalFraction() << "%\n"
+              << space->statistics().toText();
+  });
+}
+
+}  // namespace freespace::cli

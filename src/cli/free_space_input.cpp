@@ -1,0 +1,29 @@
+#include "free_space_input.h"
+
+#include <unistd.h>
+
+#include <iostream>
+
+namespace freespace::cli {
+
+void FreeSpaceInput::addOptions(CLI::App& command) {
+  scene_.addOptions(command);
+  command.add_option("--seed", seed_, "seed of the input perturbation (default 1)");
+  command.add_option("--perturbation", perturbation_,
+                     "size of the input perturbation relative to the scene (default 1e-8; 0 switches it off)")
+      ->check(CLI::NonNegativeNumber);
+}
+
+std::unique_ptr<FreeSpace> FreeSpaceInput::build(LoadedProblem& loaded) const {
+  loaded = scene_.load();
+  FreeSpaceOptions options;
+  options.perturbation.seed = seed_;
+  options.perturbation.relativeSize = perturbation_;
+  options.perturbation.enabled = perturbation_ > 0;
+  if (isatty(STDERR_FILENO)) {
+    options.progress = [](const std::string& stage) { std::cerr << "building: " << stage << "...\n"; };
+  }
+  return std::make_unique<FreeSpace>(loaded.robot, loaded.world, options);
+}
+
+}  // namespace freespace::cli

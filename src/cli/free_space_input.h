@@ -1,0 +1,26 @@
+#pragma once
+
+#include <memory>
+
+#include <CLI/CLI.hpp>
+
+#include "freespace/space/free_space.h"
+#include "scene_input.h"
+
+namespace freespace::cli {
+
+/// The scene input plus the construction's options (--seed, --no-perturbation),
+/// shared by the commands that build a free space. Stages are announced on stderr
+/// when it is a terminal.
+class FreeSpaceInput {
+ public:
+  void addOptions(CLI::App& command);
+  std::unique_ptr<FreeSpace> build(LoadedProblem& loaded) const;
+
+ private:
+  SceneInput scene_;
+  std::uint64_t seed_ = PerturbationSettings{}.seed;
+  double perturbation_ = PerturbationSettings{}.relativeSize;
+};
+
+}  // namespace freespace::cli

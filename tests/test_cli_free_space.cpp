@@ -1,0 +1,68 @@
+// The build and locate commands on bundled scenes. Locate's answers are compared
+// with independent knowledge: the scene's start and goal are free and lie in one
+// cell exactly when the scene was designed solvable, and a batch of configurations
+// gets the exact collision test's answers (the check command).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "command_runner.h"
+
+using namespace freespace::testing;
+
+namespace {
+
+const std::string kProblems = std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/";
+
+std::vector<nlohmann::json> jsonLines(const std::string& text) {
+  std::vector<nlohmann::json> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(nlohmann::json::parse(line));
+  return lines;
+}
+
+}  // namespace
+
+TEST(CliFreeSpace, BuildPrintsTheStatisticsAsJson) {
+  const CommandResult result = runFreespace("build --json --cfg '" + kProblems + "keyhole.cfg'");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const nlohmann::json statistics = nlohmann::json::parse(result.out);
+  for (const char* key : {"patches", "edges", "vertices", "shells", "cells", "free_cells", "seconds", "stage_seconds",
+                          "predicates", "peak_memory_mb", "perturbation"}) {
+    EXPECT_TRUE(statistics.contains(key)) << key;
+  }
+  EXPECT_GT(statistics["patches"].get<int>(), 0);
+  EXPECT_GE(statistics["shells"].get<int>(), statistics["free_shells"].get<int>());
+  EXPECT_GE(statistics["free_cells"].get<int>(), 1);
+  EXPECT_GT(statistics["predicates"]["ef"]["levels"]["double"].get<long>(), 0);
+  EXPECT_EQ(statistics["perturbation"]["seed"], 1);
+}
+
+TEST(CliFreeSpace, LocateSeparatesTheNarrowKeyholesStartAndGoal) {
+  for (const auto& [cfg, solvable] : {std::pair<std::string, bool>{"keyhole.cfg", true}, {"keyhole_narrow.cfg", false}}) {
+    TempDir dir;
+    // Start, goal, and configurations across the scene, for the exact test to judge.
+    std::ofstream(dir.file("batch.txt")) << "# start and goal\n0 -2.25 0\n0 2.25 0\n"
+                                         << "0 0 0\n0 0 1.5707963267948966\n0.5 0.1 0.3\n-1 0 2\n3 3 0\n";
+    const std::string batch = " --batch '" + dir.file("batch.txt") + "'";
+    const CommandResult located = runFreespace("locate --json --cfg '" + kProblems + cfg + "'" + batch);
+    ASSERT_EQ(located.status, 0) << located.err;
+    const CommandResult checked = runFreespace("check --json --cfg '" + kProblems + cfg + "'" + batch);
+    ASSERT_EQ(checked.status, 0) << checked.err;
+    const std::vector<nlohmann::json> answers = jsonLines(located.out), exact = jsonLines(checked.out);
+    ASSERT_EQ(answers.size(), 7u);
+    ASSERT_EQ(exact.size(), 7u);
+    for (std::size_t i = 0; i < answers.size(); ++i) EXPECT_EQ(answers[i]["free"], exact[i]["exact_free"]) << i;
+    ASSERT_TRUE(answers[0]["free"].get<bool>() && answers[1]["free"].get<bool>());
+    EXPECT_EQ(answers[0]["cell"] == answers[1]["cell"], solvable) << cfg;
+  }
+}
+
+TEST(CliFreeSpace, LocateWithoutConfigurationsIsAnError) {
+  const CommandResult result = runFreespace("locate --cfg '" + kProblems + "keyhole.cfg'");
+  EXPECT_NE(result.status, 0);
+  EXPECT_NE(result.err.find("--at X Y THETA or --batch FILE"), std::string::npos) << result.err;
+}
