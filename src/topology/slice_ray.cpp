@@ -30,6 +30,71 @@ struct Crossing {
   bool alongSegment;
 };
 
+/// A candidate met by the ray, in double intervals.
+struct IntervalMeeting {
+  std::uint32_t patch;
+  Interval distance;
+  Interval lambda;
+  bool certain;
+};
+
+/// The ray and the angle in double intervals: a filter before exact crossings.
+struct IntervalRay {
+  Interval cosine, sine;
+  std::array<Interval, 2> from, direction;
+
+  IntervalRay(const AlgebraicAngle& angle, const Point& start, const Point& step) {
+    if (angle.lower() == angle.upper()) {
+      HalfAngle{angle.chart(), angle.lower()}.cosSin(cosine, sine);
+    } else {
+      const auto [c, s] = exactCosSin(angle);
+      cosine = enclosingInterval(c);
+      sine = enclosingInterval(s);
+    }
+    for (int axis = 0; axis < 2; ++axis) {
+      from[axis] = enclosingInterval(start[axis]);
+      direction[axis] = enclosingInterval(step[axis]);
+    }
+  }
+
+  /// Where along the ray (distance) and along the segment (lambda) the ray meets the
+  /// patch's segment, in intervals; none when it certainly misses it (inside a
+  /// RoundingScope). `certain` when it certainly meets it at an inner point.
+  std::optional<IntervalMeeting> meeting(std::uint32_t patch, const PatchGeometry& geometry, bool bounded) const {
+    const std::array<Interval, 2> end0 = spiralPoint(spiralOf<Interval>(geometry.ends[0]), cosine, sine);
+    const std::array<Interval, 2> end1 = spiralPoint(spiralOf<Interval>(geometry.ends[1]), cosine, sine);
+    const Interval wx = end1[0] - end0[0], wy = end1[1] - end0[1];
+    const Interval ox = end0[0] - from[0], oy = end0[1] - from[1];
+    const Interval denominator = direction[0] * wy - direction[1] * wx;
+    const std::optional<Sign> sign = certainSign(denominator);
+    if (!sign || *sign == Sign::Zero) return IntervalMeeting{patch, Interval(0, HUGE_VAL), Interval(0, 1), false};
+    const Interval s = (ox * wy - oy * wx) / denominator;
+    const Interval lambda = (ox * direction[1] - oy * direction[0]) / denominator;
+    if (s.upper() < 0 || (bounded && s.lower() > 1) || lambda.upper() < 0 || lambda.lower() > 1) return std::nullopt;
+    const bool certain = s.lower() > 0 && (!bounded || s.upper() <= 1) && lambda.lower() > 0 && lambda.upper() < 1;
+    return IntervalMeeting{patch, s, lambda, certain};
+  }
+
+  /// The value of a patch's line at the start.
+  Interval lineAtStart(const PatchGeometry& patch) const {
+    const LineAtAngle<Interval> line = lineAtAngle(lineOf<Interval>(patch.line), cosine, sine);
+    return line.nx * from[0] + line.ny * from[1] + line.w;
+  }
+
+  /// Where another patch's line crosses a patch's segment, as lambda.
+  std::optional<Interval> crossingLambda(const PatchGeometry& segment, const PatchGeometry& other) const {
+    const LineAtAngle<Interval> line = lineAtAngle(lineOf<Interval>(other.line), cosine, sine);
+    const auto valueAt = [&](int k) {
+      const std::array<Interval, 2> end = spiralPoint(spiralOf<Interval>(segment.ends[k]), cosine, sine);
+      return line.nx * end[0] + line.ny * end[1] + line.w;
+    };
+    const Interval v0 = valueAt(0), difference = v0 - valueAt(1);
+    const std::optional<Sign> sign = certainSign(difference);
+    if (!sign || *sign == Sign::Zero) return std::nullopt;
+    return v0 / difference;
+  }
+};
+
 }  // namespace
 
 struct SliceRays::Impl {
@@ -104,43 +169,12 @@ struct SliceRays::Impl {
   }
 
   RayHit cast(const AlgebraicAngle& angle, const Point& from, const Point& direction, bool bounded) const;
+  std::optional<RayHit> castInIntervals(const AlgebraicAngle& angle, const IntervalRay& ray,
+                                        const std::vector<IntervalMeeting>& meetings) const;
+  RayHit castExactly(const AlgebraicAngle& angle, const Point& from, const Point& direction, bool bounded,
+                     std::vector<IntervalMeeting> meetings) const;
 };
 
-/// The ray and the angle in double intervals: a filter before exact crossings.
-struct IntervalRay {
-  Interval cosine, sine;
-  std::array<Interval, 2> from, direction;
-
-  IntervalRay(const AlgebraicAngle& angle, const Point& start, const Point& step) {
-    if (angle.lower() == angle.upper()) {
-      HalfAngle{angle.chart(), angle.lower()}.cosSin(cosine, sine);
-    } else {
-      const auto [c, s] = exactCosSin(angle);
-      cosine = enclosingInterval(c);
-      sine = enclosingInterval(s);
-    }
-    for (int axis = 0; axis < 2; ++axis) {
-      from[axis] = enclosingInterval(start[axis]);
-      direction[axis] = enclosingInterval(step[axis]);
-    }
-  }
-
-  /// A lower bound on where along the ray it meets the patch's segment, or none when
-  /// it certainly misses it (inside a RoundingScope).
-  std::optional<double> nearestMeeting(const PatchGeometry& patch, bool bounded) const {
-    const std::array<Interval, 2> end0 = spiralPoint(spiralOf<Interval>(patch.ends[0]), cosine, sine);
-    const std::array<Interval, 2> end1 = spiralPoint(spiralOf<Interval>(patch.ends[1]), cosine, sine);
-    const Interval wx = end1[0] - end0[0], wy = end1[1] - end0[1];
-    const Interval ox = end0[0] - from[0], oy = end0[1] - from[1];
-    const Interval denominator = direction[0] * wy - direction[1] * wx;
-    const std::optional<Sign> sign = certainSign(denominator);
-    if (!sign || *sign == Sign::Zero) return 0.0;
-    const Interval s = (ox * wy - oy * wx) / denominator;
-    const Interval lambda = (ox * direction[1] - oy * direction[0]) / denominator;
-    if (s.upper() < 0 || (bounded && s.lower() > 1) || lambda.upper() < 0 || lambda.lower() > 1) return std::nullopt;
-    return std::max(0.0, s.lower());
-  }
-};
 
 SliceRays::SliceRays(const Arrangement& arrangement, AngleAlgebra& algebra)
     : impl_(std::make_unique<Impl>(arrangement, algebra)) {}
@@ -158,27 +192,70 @@ RayHit SliceRays::castTo(const AlgebraicAngle& rationalAngle, const Point& from,
 RayHit SliceRays::Impl::cast(const AlgebraicAngle& rationalAngle, const Point& from, const Point& direction,
                              bool bounded) const {
   if (!rationalAngle.isRational()) throw std::invalid_argument("SliceRays::cast: the angle must be rational");
-  const auto [cosine, sine] = exactCosSin(rationalAngle);
-  // Candidates by a lower bound on their distance, then exactly, nearest first,
-  // until the next cannot be nearer than the nearest found.
-  std::vector<std::pair<double, std::uint32_t>> byDistance;
+  std::vector<IntervalMeeting> meetings;
+  std::optional<RayHit> hit;
   {
     RoundingScope rounding;
-    const IntervalRay approximate(rationalAngle, from, direction);
+    const IntervalRay ray(rationalAngle, from, direction);
     for (std::uint32_t patch : candidates(rationalAngle, from, direction, bounded)) {
-      if (const std::optional<double> low = approximate.nearestMeeting(arrangement.patches[patch], bounded)) {
-        byDistance.emplace_back(*low, patch);
+      const std::optional<IntervalMeeting> meeting = ray.meeting(patch, arrangement.patches[patch], bounded);
+      if (meeting && algebra.contains(arrangement.patches[patch].patch.range, rationalAngle)) {
+        meetings.push_back(*meeting);
       }
     }
+    if (meetings.empty()) return RayHit{};
+    hit = castInIntervals(rationalAngle, ray, meetings);
   }
-  std::sort(byDistance.begin(), byDistance.end());
+  return hit ? *hit : castExactly(rationalAngle, from, direction, bounded, std::move(meetings));
+}
+
+/// The hit when double intervals decide it: the nearest meeting is certain and
+/// certainly nearer than every other, and its sub-face and side are certain.
+std::optional<RayHit> SliceRays::Impl::castInIntervals(const AlgebraicAngle& angle, const IntervalRay& ray,
+                                                       const std::vector<IntervalMeeting>& meetings) const {
+  const auto nearest = std::min_element(meetings.begin(), meetings.end(), [](const auto& a, const auto& b) {
+    return a.distance.upper() < b.distance.upper();
+  });
+  if (!nearest->certain) return std::nullopt;
+  for (const IntervalMeeting& other : meetings) {
+    if (&other != &*nearest && !(other.distance.lower() > nearest->distance.upper())) return std::nullopt;
+  }
+  const PatchSlab* slab = slabAt(arrangement.subdivisions[nearest->patch], angle, algebra);
+  if (!slab) return std::nullopt;
+  const PatchGeometry& patch = arrangement.patches[nearest->patch];
+  std::size_t gap = 0;
+  for (std::uint32_t curve : slab->curves) {
+    const std::optional<Interval> lambda =
+        ray.crossingLambda(patch, arrangement.patches[arrangement.curves[curve].other(nearest->patch)]);
+    if (!lambda) return std::nullopt;
+    if (lambda->upper() < nearest->lambda.lower()) {
+      ++gap;
+    } else if (!(lambda->lower() > nearest->lambda.upper())) {
+      return std::nullopt;
+    }
+  }
+  const std::optional<Sign> side = certainSign(ray.lineAtStart(patch));
+  if (!side || *side == Sign::Zero) return std::nullopt;
+  RayHit hit;
+  hit.kind = RayHit::Kind::SubFace;
+  hit.face = {nearest->patch, slab->faces[gap]};
+  hit.fromPositiveSide = *side == Sign::Positive;
+  return hit;
+}
+
+/// The hit decided exactly: candidates by a lower bound on their distance, nearest
+/// first, until the next cannot be nearer than the nearest found.
+RayHit SliceRays::Impl::castExactly(const AlgebraicAngle& angle, const Point& from, const Point& direction,
+                                    bool bounded, std::vector<IntervalMeeting> meetings) const {
+  std::sort(meetings.begin(), meetings.end(),
+            [](const auto& a, const auto& b) { return a.distance.lower() < b.distance.lower(); });
+  const auto [cosine, sine] = exactCosSin(angle);
   std::optional<Crossing> first;
   bool tie = false;
-  for (const auto& [low, patch] : byDistance) {
-    if (first && Rational(low) > first->distance) break;
-    if (!algebra.contains(arrangement.patches[patch].patch.range, rationalAngle)) continue;
-    const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[patch], cosine, sine);
-    const std::optional<Crossing> found = crossing(patch, segment.end0, segment.end1, from, direction, bounded);
+  for (const IntervalMeeting& meeting : meetings) {
+    if (first && Rational(std::max(0.0, meeting.distance.lower())) > first->distance) break;
+    const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[meeting.patch], cosine, sine);
+    const std::optional<Crossing> found = crossing(meeting.patch, segment.end0, segment.end1, from, direction, bounded);
     if (!found) continue;
     if (!first || found->distance < first->distance) {
       first = found;
@@ -195,7 +272,7 @@ RayHit SliceRays::Impl::cast(const AlgebraicAngle& rationalAngle, const Point& f
   }
   hit.kind = RayHit::Kind::Degenerate;
   if (tie || first->alongSegment || first->lambda == 0 || first->lambda == 1) return hit;
-  const PatchSlab* slab = slabAt(arrangement.subdivisions[first->patch], rationalAngle, algebra);
+  const PatchSlab* slab = slabAt(arrangement.subdivisions[first->patch], angle, algebra);
   if (!slab) return hit;  // the angle is an event of the patch
   const slices::ExactSegment own = slices::segmentAt(arrangement.patches[first->patch], cosine, sine);
   std::size_t gap = 0;
@@ -207,7 +284,6 @@ RayHit SliceRays::Impl::cast(const AlgebraicAngle& rationalAngle, const Point& f
   }
   hit.kind = RayHit::Kind::SubFace;
   hit.face = {first->patch, slab->faces[gap]};
-  hit.point = {from[0] + first->distance * direction[0], from[1] + first->distance * direction[1]};
   // The ray arrives from the side of the start.
   hit.fromPositiveSide = own.valueAt(from) > 0;
   return hit;
