@@ -4,6 +4,7 @@
 // gets the exact collision test's answers (the check command).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 #include <sstream>
 
@@ -65,4 +66,18 @@ TEST(CliFreeSpace, LocateWithoutConfigurationsIsAnError) {
   const CommandResult result = runFreespace("locate --cfg '" + kProblems + "keyhole.cfg'");
   EXPECT_NE(result.status, 0);
   EXPECT_NE(result.err.find("--at X Y THETA or --batch FILE"), std::string::npos) << result.err;
+}
+
+TEST(CliFreeSpace, InterruptStopsABuildWithStatus130) {
+  TempDir dir;
+  const auto start = std::chrono::steady_clock::now();
+  // The maze takes about 20 s to build; SIGINT after 2 s.
+  const std::string command = std::string("timeout --preserve-status -s INT 2 '") + FREESPACE_CLI + "' build --cfg '" +
+                              kProblems + "maze.cfg' >'" + dir.file("out") + "' 2>'" + dir.file("err") + "'";
+  const int raw = std::system(command.c_str());
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  ASSERT_TRUE(WIFEXITED(raw));
+  EXPECT_EQ(WEXITSTATUS(raw), 130);
+  EXPECT_EQ(readWholeFile(dir.file("err")), "cancelled\n");
+  EXPECT_LT(seconds, 3.5);
 }

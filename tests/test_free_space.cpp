@@ -6,10 +6,14 @@
 // the cage). Against the collision
 // test: locate, which reads the arrangement only, says blocked exactly where the
 // exact collision test on the perturbed meshes (an independent oracle on the
-// meshes' triangles) says the robot touches or overlaps the environment.
+// meshes' triangles) says the robot touches or overlaps the environment. And a
+// construction announces its stages and stops within a second of being cancelled.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <random>
+#include <thread>
 
 #include "freespace/collision/exact_collision_checker.h"
 #include "freespace/problem/planar_problem.h"
@@ -74,3 +78,32 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BundledFreeSpace,
                          [](const ::testing::TestParamInfo<SceneCase>& info) { return info.param.name; });
 
 }  // namespace
+
+TEST(FreeSpaceConstruction, AnnouncesItsStagesAndStopsSoonAfterCancellation) {
+  const LoadedProblem problem = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/maze.cfg");
+  std::atomic<bool> stop{false};
+  std::vector<std::string> stages;
+  FreeSpaceOptions options;
+  options.cancellation = Cancellation(stop);
+  options.progress = [&](const std::string& stage) { stages.push_back(stage); };
+  std::chrono::steady_clock::time_point asked;
+  std::thread asker([&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    asked = std::chrono::steady_clock::now();
+    stop = true;
+  });
+  bool cancelled = false;
+  try {
+    const FreeSpace space(problem.robot, problem.world, options);  // about 20 s when not stopped
+  } catch (const Cancelled&) {
+    cancelled = true;
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - asked).count();
+  asker.join();
+  EXPECT_TRUE(cancelled);
+  EXPECT_LT(seconds, 1.0);
+  ASSERT_GE(stages.size(), 3u);
+  EXPECT_EQ(stages[0], "perturb");
+  EXPECT_EQ(stages[1], "patches");
+  EXPECT_EQ(stages[2], "arrangement");
+}

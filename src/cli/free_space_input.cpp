@@ -2,9 +2,19 @@
 
 #include <unistd.h>
 
+#include <atomic>
+#include <csignal>
 #include <iostream>
 
 namespace freespace::cli {
+
+namespace {
+
+std::atomic<bool> interrupted{false};
+
+void requestStop(int) { interrupted = true; }
+
+}  // namespace
 
 void FreeSpaceInput::addOptions(CLI::App& command) {
   scene_.addOptions(command);
@@ -20,6 +30,10 @@ std::unique_ptr<FreeSpace> FreeSpaceInput::build(LoadedProblem& loaded) const {
   options.perturbation.seed = seed_;
   options.perturbation.relativeSize = perturbation_;
   options.perturbation.enabled = perturbation_ > 0;
+  // Ctrl-C (or SIGTERM) stops the construction; main() reports it.
+  std::signal(SIGINT, requestStop);
+  std::signal(SIGTERM, requestStop);
+  options.cancellation = Cancellation(interrupted);
   if (isatty(STDERR_FILENO)) {
     options.progress = [](const std::string& stage) { std::cerr << "building: " << stage << "...\n"; };
   }

@@ -9,9 +9,9 @@
 
 namespace freespace::cli {
 
-/// The scene input plus the construction's options (--seed, --no-perturbation),
-/// shared by the commands that build a free space. Stages are announced on stderr
-/// when it is a terminal.
+/// The scene input plus the construction's options (--seed, --perturbation), shared
+/// by the commands that build a free space. Stages are announced on stderr when it
+/// is a terminal; SIGINT and SIGTERM stop the construction (Cancelled).
 class FreeSpaceInput {
  public:
   void addOptions(CLI::App& command);

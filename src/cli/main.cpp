@@ -1,6 +1,7 @@
 #include <iostream>
 
 #include "commands.h"
+#include "freespace/geometry/cancellation.h"
 #include "freespace/input_error.h"
 
 int main(int argc, char** argv) {
@@ -15,6 +16,9 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
     return app.exit(error);
+  } catch (const freespace::Cancelled&) {
+    std::cerr << "cancelled\n";
+    return 130;
   } catch (const freespace::InputError& error) {
     std::cerr << "error: " << error.what() << "\n";
     return 2;

@@ -220,7 +220,8 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> candidatePatchPairs(const s
   return pairs;
 }
 
-std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra) {
+std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra,
+                                    const Cancellation& cancellation) {
   std::vector<IntervalPatch> approximate;
   approximate.reserve(patches.size());
   {
@@ -229,6 +230,7 @@ std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches, A
   }
   std::vector<PatchCurve> curves;
   for (const auto& [first, second] : candidatePatchPairs(patches)) {
+    cancellation.check();
     if (!mayCross(approximate[first], approximate[second])) continue;
     PatchCurve curve = patchCurve(first, patches[first], second, patches[second], algebra);
     if (!curve.angles.empty()) curves.push_back(std::move(curve));

@@ -464,7 +464,8 @@ Sign sideOfEnd(const PatchGeometry& patch, int k, const PatchGeometry& other, co
 std::vector<PatchSubdivision> patchSubdivisions(const std::vector<PatchGeometry>& patches,
                                                 const std::vector<PatchCurve>& curves,
                                                 const std::vector<PatchVertex>& vertices,
-                                                const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra) {
+                                                const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra,
+                                                const Cancellation& cancellation) {
   std::vector<PatchSweep> sweeps;
   sweeps.reserve(patches.size());
   for (std::uint32_t patch = 0; patch < patches.size(); ++patch) sweeps.emplace_back(patch, patches, curves, algebra);
@@ -480,7 +481,10 @@ std::vector<PatchSubdivision> patchSubdivisions(const std::vector<PatchGeometry>
   }
   std::vector<PatchSubdivision> subdivisions;
   subdivisions.reserve(patches.size());
-  for (PatchSweep& sweep : sweeps) subdivisions.push_back(sweep.run());
+  for (PatchSweep& sweep : sweeps) {
+    cancellation.check();
+    subdivisions.push_back(sweep.run());
+  }
   return subdivisions;
 }
 

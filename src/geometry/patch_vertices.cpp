@@ -249,7 +249,8 @@ std::shared_ptr<const AngleFunction> threePatchFunction(const ContactPoints& a, 
 
 std::vector<PatchVertex> patchVertices(const std::vector<PatchGeometry>& patches,
                                        const std::vector<PatchCurve>& curves,
-                                       const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra) {
+                                       const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra,
+                                       const Cancellation& cancellation) {
   const CurveIndex index(patches.size(), curves);
   std::vector<PatchLine<Interval>> lines;
   std::vector<std::vector<detail::RadianRange>> curveRanges;
@@ -266,6 +267,7 @@ std::vector<PatchVertex> patchVertices(const std::vector<PatchGeometry>& patches
 
   std::vector<PatchVertex> vertices;
   for (std::uint32_t f = 0; f < patches.size(); ++f) {
+    cancellation.check();
     const std::vector<std::uint32_t>& around = index.neighbours[f];
     for (std::size_t i = 0; i < around.size(); ++i) {
       const std::uint32_t g = around[i];

@@ -14,11 +14,13 @@ namespace {
 /// Times the stages of a construction and announces each.
 class StageClock {
  public:
-  StageClock(std::vector<StageTime>& times, const std::function<void(const std::string&)>& progress)
-      : times_(times), progress_(progress) {}
+  StageClock(std::vector<StageTime>& times, const std::function<void(const std::string&)>& progress,
+             const Cancellation& cancellation)
+      : times_(times), progress_(progress), cancellation_(cancellation) {}
 
   template <class Work>
   auto run(const std::string& stage, Work&& work) {
+    cancellation_.check();
     if (progress_) progress_(stage);
     const auto start = std::chrono::steady_clock::now();
     auto result = work();
@@ -29,6 +31,7 @@ class StageClock {
  private:
   std::vector<StageTime>& times_;
   const std::function<void(const std::string&)>& progress_;
+  const Cancellation& cancellation_;
 };
 
 }  // namespace
@@ -45,7 +48,7 @@ struct FreeSpace::Impl {
   std::unique_ptr<FreeCells> cells;
 
   Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options) {
-    StageClock clock(stageTimes, options.progress);
+    StageClock clock(stageTimes, options.progress, options.cancellation);
     meshes = clock.run("perturb", [&] { return perturbMeshes(robot, world, options.perturbation); });
     std::vector<PatchGeometry> geometries = clock.run("patches", [&] {
       const MeshTopology robotTopology(meshes.robot, statistics), worldTopology(meshes.world, statistics);
@@ -54,13 +57,18 @@ struct FreeSpace::Impl {
       patches.insert(patches.end(), edgeEdge.begin(), edgeEdge.end());
       return patchGeometries(patches, meshes.robot, robotTopology, meshes.world, worldTopology, statistics);
     });
-    arrangement = clock.run("arrangement", [&] { return buildArrangement(std::move(geometries), algebra); });
+    const Cancellation& cancellation = options.cancellation;
+    arrangement = clock.run("arrangement", [&] {
+      return buildArrangement(std::move(geometries), algebra, cancellation, options.progress);
+    });
     sides = clock.run("shells", [&] {
       rays = std::make_unique<SliceRays>(arrangement, algebra);
       collision = std::make_unique<ExactCollisionChecker>(meshes.robot, meshes.world);
-      return classifyShells(arrangement, *rays, *collision, algebra);
+      return classifyShells(arrangement, *rays, *collision, cancellation);
     });
-    cells = clock.run("cells", [&] { return std::make_unique<FreeCells>(arrangement, *rays, sides, algebra); });
+    cells = clock.run("cells", [&] {
+      return std::make_unique<FreeCells>(arrangement, *rays, sides, algebra, cancellation);
+    });
   }
 
   /// Free (with its cell) or blocked, from the first sub-face a ray meets: a point

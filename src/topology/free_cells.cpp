@@ -48,7 +48,7 @@ class Nesting {
 
   /// Shoots every free shell's ray until no angle set grows; returns the component
   /// of each shell (the unbounded cell's node is the last).
-  std::vector<std::size_t> run() {
+  std::vector<std::size_t> run(const Cancellation& cancellation) {
     std::deque<std::uint32_t> work;
     for (std::uint32_t shell = 0; shell < sides_.size(); ++shell) {
       if (sides_[shell] != ShellSide::Free) continue;
@@ -56,6 +56,7 @@ class Nesting {
       work.push_back(shell);
     }
     while (!work.empty()) {
+      cancellation.check();
       const std::uint32_t shell = work.front();
       work.pop_front();
       if (const std::optional<std::uint32_t> grown = shoot(shell)) work.push_back(*grown);
@@ -162,9 +163,9 @@ class Nesting {
 }  // namespace
 
 FreeCells::FreeCells(const Arrangement& arrangement, const SliceRays& rays, const std::vector<ShellSide>& sides,
-                     AngleAlgebra& algebra)
+                     AngleAlgebra& algebra, const Cancellation& cancellation)
     : cellOfShell_(sides.size()) {
-  const std::vector<std::size_t> components = Nesting(arrangement, rays, sides, algebra).run();
+  const std::vector<std::size_t> components = Nesting(arrangement, rays, sides, algebra).run(cancellation);
   std::unordered_map<std::size_t, std::uint32_t> cellOfComponent{{components.back(), kUnbounded}};
   for (std::uint32_t shell = 0; shell < sides.size(); ++shell) {
     if (sides[shell] != ShellSide::Free) continue;

@@ -346,10 +346,14 @@ class EdgeGluer {
 SubFaceGluing glueAcrossHorizontalEdges(const std::vector<PatchGeometry>& patches,
                                         const std::vector<PatchCurve>& curves,
                                         const std::vector<PatchOverlap>& overlaps,
-                                        const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
+                                        const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra,
+                                        const Cancellation& cancellation) {
   gluing::GlueList glues;
   EdgeGluer gluer(patches, curves, subdivisions, algebra, glues);
-  for (const HorizontalEdge& edge : horizontalEdges(patches, overlaps, algebra)) gluer.glue(edge);
+  for (const HorizontalEdge& edge : horizontalEdges(patches, overlaps, algebra)) {
+    cancellation.check();
+    gluer.glue(edge);
+  }
   return glues.take();
 }
 

@@ -49,7 +49,7 @@ std::optional<SubFaceProbe> probeSubFace(const Arrangement& arrangement, const S
 }
 
 std::vector<ShellSide> classifyShells(const Arrangement& arrangement, const SliceRays& rays,
-                                      const ExactCollisionChecker& collision, AngleAlgebra& algebra) {
+                                      const ExactCollisionChecker& collision, const Cancellation& cancellation) {
   const Shells& shells = arrangement.shells;
   std::vector<ShellSide> sides(shells.count(), ShellSide::Open);
   std::vector<bool> decided(shells.count(), false);
@@ -58,6 +58,7 @@ std::vector<ShellSide> classifyShells(const Arrangement& arrangement, const Slic
       const SubFaceId face{patch, index};
       const std::uint32_t shell = shells.shellOf(face);
       if (decided[shell] || !shells.closed(shell)) continue;
+      cancellation.check();
       const std::optional<SubFaceProbe> probe = probeSubFace(arrangement, rays, face);
       if (!probe) continue;
       sides[shell] = collision.inCollisionAt(probe->pose) ? ShellSide::Blocked : ShellSide::Free;

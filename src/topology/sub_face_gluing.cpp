@@ -72,10 +72,12 @@ std::vector<AlgebraicAngle> samplesAround(const std::vector<std::pair<std::uint3
 }  // namespace
 
 SubFaceGluing glueAcrossCurves(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
-                               const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
+                               const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra,
+                               const Cancellation& cancellation) {
   GlueList glues;
   SlabCursor slabs(subdivisions, algebra);
   for (std::uint32_t f = 0; f < patches.size(); ++f) {
+    cancellation.check();
     for (const PatchSlab& slab : subdivisions[f].slabs) {
       for (std::size_t i = 0; i < slab.curves.size(); ++i) {
         const std::uint32_t g = curves[slab.curves[i]].other(f);
@@ -95,7 +97,8 @@ SubFaceGluing glueAcrossCurves(const std::vector<PatchGeometry>& patches, const 
 }
 
 SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
-                                const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
+                                const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra,
+                                const Cancellation& cancellation) {
   std::map<std::tuple<bool, std::uint32_t, std::uint32_t, std::uint32_t>, std::vector<std::pair<std::uint32_t, int>>>
       bySpiral;
   for (std::uint32_t patch = 0; patch < patches.size(); ++patch) {
@@ -107,6 +110,7 @@ SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
   GlueList glues;
   SlabCursor cursor(subdivisions, algebra);
   for (const auto& [spiral, around] : bySpiral) {
+    cancellation.check();
     for (const AlgebraicAngle& sample : samplesAround(around, subdivisions, algebra)) {
       const auto [cosine, sine] = exactCosSin(sample);
       std::vector<Spoke> spokes;

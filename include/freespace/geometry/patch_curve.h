@@ -5,6 +5,7 @@
 #include <utility>
 #include <vector>
 
+#include "freespace/geometry/cancellation.h"
 #include "freespace/geometry/patch_geometry.h"
 
 namespace freespace {
@@ -66,6 +67,7 @@ PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t
 std::vector<std::pair<std::uint32_t, std::uint32_t>> candidatePatchPairs(const std::vector<PatchGeometry>& patches);
 
 /// Every curve: the candidate pairs whose crossing angles are not empty.
-std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra);
+std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra,
+                                    const Cancellation& cancellation = {});
 
 }  // namespace freespace

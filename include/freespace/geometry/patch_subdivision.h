@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "freespace/geometry/cancellation.h"
 #include "freespace/geometry/patch_curve.h"
 #include "freespace/geometry/patch_geometry.h"
 #include "freespace/geometry/patch_vertex.h"
@@ -59,6 +60,7 @@ Sign sideOfEnd(const PatchGeometry& patch, int k, const PatchGeometry& other, co
 std::vector<PatchSubdivision> patchSubdivisions(const std::vector<PatchGeometry>& patches,
                                                 const std::vector<PatchCurve>& curves,
                                                 const std::vector<PatchVertex>& vertices,
-                                                const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra);
+                                                const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra,
+                                                const Cancellation& cancellation = {});
 
 }  // namespace freespace

@@ -73,6 +73,7 @@ std::shared_ptr<const AngleFunction> threePatchFunction(const ContactPoints& a, 
 /// angle.
 std::vector<PatchVertex> patchVertices(const std::vector<PatchGeometry>& patches,
                                        const std::vector<PatchCurve>& curves,
-                                       const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra);
+                                       const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra,
+                                       const Cancellation& cancellation = {});
 
 }  // namespace freespace

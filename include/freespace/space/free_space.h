@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "freespace/geometry/cancellation.h"
 #include "freespace/geometry/perturbed_meshes.h"
 #include "freespace/numbers/predicate_statistics.h"
 #include "freespace/problem/planar_problem.h"
@@ -17,6 +18,9 @@ struct FreeSpaceOptions {
   PerturbationSettings perturbation;
   /// Called as each construction stage starts, with the stage's name.
   std::function<void(const std::string& stage)> progress;
+  /// Polled throughout the construction: once it asks, the constructor throws
+  /// Cancelled (within a fraction of a second).
+  Cancellation cancellation;
 };
 
 /// Where a configuration lies: in a free cell (0 is the unbounded one), or blocked

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <functional>
+#include <string>
 #include <vector>
 
 #include "freespace/geometry/patch_curve.h"
@@ -26,6 +28,9 @@ struct Arrangement {
   Shells shells;
 };
 
-Arrangement buildArrangement(std::vector<PatchGeometry> patches, AngleAlgebra& algebra);
+/// Builds it stage by stage, announcing each to `progress` (when set).
+Arrangement buildArrangement(std::vector<PatchGeometry> patches, AngleAlgebra& algebra,
+                             const Cancellation& cancellation = {},
+                             const std::function<void(const std::string& stage)>& progress = {});
 
 }  // namespace freespace

@@ -26,7 +26,7 @@ namespace freespace {
 class FreeCells {
  public:
   FreeCells(const Arrangement& arrangement, const SliceRays& rays, const std::vector<ShellSide>& sides,
-            AngleAlgebra& algebra);
+            AngleAlgebra& algebra, const Cancellation& cancellation = {});
 
   /// The number of free cells, the unbounded one included.
   std::size_t count() const { return count_; }

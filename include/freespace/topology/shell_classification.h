@@ -26,6 +26,6 @@ enum class ShellSide { Free, Blocked, Open };
 /// by one exact collision test at a probe of one of its sub-faces. Throws
 /// std::runtime_error when no sub-face of a closed shell can be probed.
 std::vector<ShellSide> classifyShells(const Arrangement& arrangement, const SliceRays& rays,
-                                      const ExactCollisionChecker& collision, AngleAlgebra& algebra);
+                                      const ExactCollisionChecker& collision, const Cancellation& cancellation = {});
 
 }  // namespace freespace

@@ -42,7 +42,8 @@ struct SubFaceGluing {
 /// the half of f on g's positive side and the half of g on f's positive side bound
 /// the one quadrant on both positive sides.
 SubFaceGluing glueAcrossCurves(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
-                               const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra);
+                               const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra,
+                               const Cancellation& cancellation = {});
 
 /// Around every spiral shared as a segment end by several patches: in each slab of
 /// each of them, at its sample angle, the segments leaving the spiral's point are
@@ -50,7 +51,8 @@ SubFaceGluing glueAcrossCurves(const std::vector<PatchGeometry>& patches, const 
 /// sector between them are glued there; a positive side facing a sector alone is
 /// unmatched (so is the end of a segment at a spiral no other patch ends at).
 SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
-                                const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra);
+                                const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra,
+                                const Cancellation& cancellation = {});
 
 /// Across every horizontal edge: the patches whose lines are one line at an angle
 /// theta_h (ranges ending or starting at a root of one EF function, and the two
@@ -70,7 +72,8 @@ SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
 SubFaceGluing glueAcrossHorizontalEdges(const std::vector<PatchGeometry>& patches,
                                         const std::vector<PatchCurve>& curves,
                                         const std::vector<PatchOverlap>& overlaps,
-                                        const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra);
+                                        const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra,
+                                        const Cancellation& cancellation = {});
 
 /// The slab of `subdivision` whose open angles hold `angle`, if any.
 const PatchSlab* slabAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle, AngleAlgebra& algebra);
