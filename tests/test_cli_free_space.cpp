@@ -81,3 +81,22 @@ TEST(CliFreeSpace, InterruptStopsABuildWithStatus130) {
   EXPECT_EQ(readWholeFile(dir.file("err")), "cancelled\n");
   EXPECT_LT(seconds, 3.5);
 }
+
+TEST(CliFreeSpace, SliceDrawsTheCellsAndNeverOverwrites) {
+  TempDir dir;
+  const std::string svg = dir.file("cage.svg");
+  const std::string command = "slice --cfg '" + kProblems + "cage.cfg' --theta 0.3 --resolution 40 --robot-at 0 0 --svg '" + svg + "'";
+  const CommandResult first = runFreespace(command);
+  ASSERT_EQ(first.status, 0) << first.err;
+  const std::string picture = readWholeFile(svg);
+  EXPECT_EQ(picture.rfind("<svg", 0), 0u);
+  EXPECT_NE(picture.find("(2 free cells)"), std::string::npos);
+  // The caged robot's cell and the outside both have boundary pieces drawn.
+  EXPECT_NE(picture.find("stroke=\"#1f77b4\""), std::string::npos);
+  EXPECT_NE(picture.find("stroke=\"#ff7f0e\""), std::string::npos);
+  EXPECT_NE(picture.find("<polygon"), std::string::npos);
+  const CommandResult second = runFreespace(command);
+  EXPECT_EQ(second.status, 2);
+  EXPECT_EQ(second.err, "error: " + svg + ": already exists (not overwritten)\n");
+  EXPECT_EQ(readWholeFile(svg), picture);
+}

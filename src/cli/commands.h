@@ -12,5 +12,6 @@ void addInfoCommand(CLI::App& app);
 void addGenerateCommand(CLI::App& app);
 void addBuildCommand(CLI::App& app);
 void addLocateCommand(CLI::App& app);
+void addSliceCommand(CLI::App& app);
 
 }  // namespace freespace::cli

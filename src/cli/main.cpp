@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
   freespace::cli::addGenerateCommand(app);
   freespace::cli::addBuildCommand(app);
   freespace::cli::addLocateCommand(app);
+  freespace::cli::addSliceCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

@@ -16,6 +16,7 @@
 
 #include "file_extension.h"
 #include "freespace/input_error.h"
+#include "freespace/io/text_file.h"
 
 namespace freespace {
 namespace {
@@ -80,14 +81,6 @@ std::string exactDecimal(double value) {
   return std::string(buffer, result.ptr);
 }
 
-void writeText(const std::string& path, const std::function<void(std::ostream&)>& write) {
-  std::ofstream out(path, std::ios::binary);
-  if (!out) throw InputError(path, "cannot write: " + std::generic_category().message(errno));
-  write(out);
-  out.close();
-  if (!out) throw InputError(path, "cannot write: output error");
-}
-
 void writePoint(std::ostream& out, const Point3& p) {
   out << exactDecimal(p.x()) << ' ' << exactDecimal(p.y()) << ' ' << exactDecimal(p.z()) << '\n';
 }
@@ -122,9 +115,9 @@ void writeMesh(const Mesh& mesh, const std::string& path, bool overwrite) {
   if (!overwrite && std::filesystem::exists(path, error)) throw InputError(path, "already exists (not overwritten)");
   const std::string extension = detail::lowercaseExtension(path);
   if (extension == ".vtk") {
-    writeText(path, [&](std::ostream& out) { writeVtk(mesh, out); });
+    writeTextFile(path, true, [&](std::ostream& out) { writeVtk(mesh, out); });
   } else if (extension == ".off") {
-    writeText(path, [&](std::ostream& out) { writeOff(mesh, out); });
+    writeTextFile(path, true, [&](std::ostream& out) { writeOff(mesh, out); });
   } else if (const std::string format = assimpFormat(extension); !format.empty()) {
     writeWithAssimp(mesh, path, format);
   } else {

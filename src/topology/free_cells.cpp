@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "slice_pieces.h"
+#include "freespace/topology/slice_pieces.h"
 
 namespace freespace {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "slice_pieces.h"
+#include "freespace/topology/slice_pieces.h"
 
 namespace freespace {
 

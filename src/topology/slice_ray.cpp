@@ -5,7 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "slice_pieces.h"
+#include "freespace/topology/slice_pieces.h"
 
 namespace freespace {
 

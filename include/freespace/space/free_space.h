@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,6 +60,10 @@ class FreeSpace {
   std::size_t shellCount() const;
   std::size_t freeShellCount() const;
   const Arrangement& arrangement() const;
+  /// The free cell a sub-face bounds (its positive side), if it bounds one.
+  std::optional<std::uint32_t> cellOfSubFace(SubFaceId face) const;
+  /// The exact predicates the structure was built with (for reading it further).
+  AngleAlgebra& algebra() const;
   const PerturbedMeshes& meshes() const;
   const std::vector<StageTime>& stageTimes() const;
   const PredicateStatistics& statistics() const;

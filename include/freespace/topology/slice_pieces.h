@@ -1,7 +1,7 @@
 #pragma once
 
 // The exact slice of a patch at a rational angle, and the piece of its segment that
-// one of its sub-faces covers there (shell classification, free cells).
+// one of its sub-faces covers there.
 
 #include <array>
 #include <utility>

@@ -1,0 +1,22 @@
+#include "freespace/io/text_file.h"
+
+#include <cerrno>
+#include <filesystem>
+#include <fstream>
+#include <system_error>
+
+#include "freespace/input_error.h"
+
+namespace freespace {
+
+void writeTextFile(const std::string& path, bool overwrite, const std::function<void(std::ostream&)>& write) {
+  std::error_code error;
+  if (!overwrite && std::filesystem::exists(path, error)) throw InputError(path, "already exists (not overwritten)");
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw InputError(path, "cannot write: " + std::generic_category().message(errno));
+  write(out);
+  out.close();
+  if (!out) throw InputError(path, "cannot write: output error");
+}
+
+}  // namespace freespace
