@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -99,4 +100,25 @@ TEST(CliFreeSpace, SliceDrawsTheCellsAndNeverOverwrites) {
   EXPECT_EQ(second.status, 2);
   EXPECT_EQ(second.err, "error: " + svg + ": already exists (not overwritten)\n");
   EXPECT_EQ(readWholeFile(svg), picture);
+}
+
+TEST(CliFreeSpace, BuildRejectsEveryMalformedMeshNamingTheFile) {
+  const std::string meshes = std::string(FREESPACE_TEST_DATA) + "/meshes/";
+  int checked = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(meshes)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("bad_", 0) != 0) continue;
+    const CommandResult result = runFreespace("build '" + meshes + "box.off' '" + entry.path().string() + "'");
+    EXPECT_EQ(result.status, 2) << name << ": " << result.err;
+    EXPECT_EQ(result.err.rfind("error: " + entry.path().string() + ": ", 0), 0u) << result.err;
+    ++checked;
+  }
+  EXPECT_GE(checked, 15);
+}
+
+TEST(CliFreeSpace, CoincidentHeightsWithoutPerturbationAreAnError) {
+  const CommandResult result = runFreespace("build --perturbation 0 --cfg '" + kProblems + "cage.cfg'");
+  EXPECT_EQ(result.status, 2);
+  EXPECT_EQ(result.err.rfind("error: " + kProblems + "cage.cfg: ", 0), 0u) << result.err;
+  EXPECT_NE(result.err.find("same height"), std::string::npos) << result.err;
 }

@@ -30,6 +30,7 @@ std::unique_ptr<FreeSpace> FreeSpaceInput::build(LoadedProblem& loaded) const {
   options.perturbation.seed = seed_;
   options.perturbation.relativeSize = perturbation_;
   options.perturbation.enabled = perturbation_ > 0;
+  options.sourceName = loaded.cfgPath.empty() ? loaded.problem.robot + " and " + loaded.problem.world : loaded.cfgPath;
   // Ctrl-C (or SIGTERM) stops the construction; main() reports it.
   std::signal(SIGINT, requestStop);
   std::signal(SIGTERM, requestStop);

@@ -5,6 +5,7 @@
 
 #include "freespace/collision/exact_collision_checker.h"
 #include "freespace/geometry/mesh_topology.h"
+#include "freespace/geometry/patch_segment.h"
 #include "freespace/topology/free_cells.h"
 
 namespace freespace {
@@ -49,7 +50,11 @@ struct FreeSpace::Impl {
 
   Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options) {
     StageClock clock(stageTimes, options.progress, options.cancellation);
-    meshes = clock.run("perturb", [&] { return perturbMeshes(robot, world, options.perturbation); });
+    meshes = clock.run("perturb", [&] {
+      PerturbedMeshes perturbed = perturbMeshes(robot, world, options.perturbation);
+      requireDistinctHeights(perturbed.robot, perturbed.world, options.sourceName);
+      return perturbed;
+    });
     std::vector<PatchGeometry> geometries = clock.run("patches", [&] {
       const MeshTopology robotTopology(meshes.robot, statistics), worldTopology(meshes.world, statistics);
       std::vector<Patch> patches = vertexFacetPatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);

@@ -17,6 +17,9 @@ namespace freespace {
 
 struct FreeSpaceOptions {
   PerturbationSettings perturbation;
+  /// Names the input in errors (the construction needs every vertex height distinct
+  /// after perturbation: an InputError naming it otherwise).
+  std::string sourceName = "scene";
   /// Called as each construction stage starts, with the stage's name.
   std::function<void(const std::string& stage)> progress;
   /// Polled throughout the construction: once it asks, the constructor throws

@@ -1,0 +1,97 @@
+// Hostile input to the construction gives a clear error or a correct answer (checked
+// against the exact collision test): overlapping environment solids, huge
+// coordinates, a robot above the environment, heights that coincide without
+// perturbation.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "freespace/collision/exact_collision_checker.h"
+#include "freespace/input_error.h"
+#include "freespace/space/free_space.h"
+#include "test_meshes.h"
+
+using namespace freespace;
+using namespace freespace::testing;
+
+namespace {
+
+/// Disagreements between locate and the exact collision test on random
+/// configurations around the environment, and how many were free.
+std::pair<int, int> disagreementsWithCollision(const FreeSpace& space, int samples) {
+  const ExactCollisionChecker collision(space.meshes().robot, space.meshes().world);
+  const Box3 world = space.meshes().world.bounds();
+  const double reach = space.meshes().robot.bounds().sizes().head<2>().norm();
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> x(world.min().x() - reach, world.max().x() + reach);
+  std::uniform_real_distribution<double> y(world.min().y() - reach, world.max().y() + reach);
+  std::uniform_real_distribution<double> theta(-M_PI, M_PI);
+  int disagreements = 0, free = 0;
+  for (int i = 0; i < samples; ++i) {
+    const Pose2 pose{x(random), y(random), theta(random)};
+    const bool locatedFree = space.locate(pose).free;
+    free += locatedFree;
+    disagreements += locatedFree == collision.inCollision(pose);
+  }
+  return {disagreements, free};
+}
+
+Mesh scaled(const Mesh& mesh, double factor) {
+  TriangleSoup soup{{}, mesh.triangles()};
+  for (const Point3& p : mesh.vertices()) soup.vertices.push_back(p * factor);
+  return Mesh::fromSoup(soup, "scaled");
+}
+
+const Mesh kRobot = tetrahedronMesh({0, 0, 0.1}, {0.6, 0, 0.2}, {0, 0.5, 0.3}, {0.1, 0.1, 0.8});
+
+}  // namespace
+
+TEST(HostileInput, OverlappingEnvironmentSolidsAreTheirUnion) {
+  const Mesh world = Mesh::fromSoup(joinSoups({boxSoup({0, 0, 0}, {2, 1, 1}), boxSoup({1, 0.5, 0.05}, {3, 2, 0.9})}),
+                                    "overlapping boxes");
+  const FreeSpace space(kRobot, world);
+  const auto [disagreements, free] = disagreementsWithCollision(space, 400);
+  EXPECT_EQ(disagreements, 0);
+  EXPECT_GT(free, 0);
+}
+
+TEST(HostileInput, HugeCoordinatesGiveTheSameCells) {
+  // A yard closed by four overlapping walls: the robot inside cannot leave.
+  const Mesh world = Mesh::fromSoup(joinSoups({boxSoup({0, 0, 0}, {1, 4, 1}), boxSoup({3, 0, 0}, {4, 4, 1}),
+                                               boxSoup({0.5, -0.1, 0}, {3.5, 1, 0.95}),
+                                               boxSoup({0.5, 3, 0}, {3.5, 4.1, 0.95})}),
+                                    "walled yard");
+  const FreeSpace small(kRobot, world);
+  const FreeSpace huge(scaled(kRobot, 1e9), scaled(world, 1e9));
+  EXPECT_EQ(small.cellCount(), 2u);
+  EXPECT_EQ(huge.cellCount(), 2u);
+  const Location inside = huge.locate({1.8e9, 1.8e9, 0.3}), outside = huge.locate({8e9, 8e9, 0.3});
+  ASSERT_TRUE(inside.free && outside.free);
+  EXPECT_NE(inside.cell, outside.cell);
+  EXPECT_EQ(disagreementsWithCollision(small, 200).first, 0);
+}
+
+TEST(HostileInput, ARobotAboveTheEnvironmentIsFreeEverywhere) {
+  const Mesh world = boxMesh({0, 0, 0}, {2, 2, 1});
+  const Mesh above = scaled(kRobot, 1.0);
+  TriangleSoup lifted{{}, above.triangles()};
+  for (const Point3& p : above.vertices()) lifted.vertices.push_back(p + Point3(0, 0, 5));
+  const FreeSpace space(Mesh::fromSoup(lifted, "lifted robot"), world);
+  EXPECT_EQ(space.cellCount(), 1u);
+  const auto [disagreements, free] = disagreementsWithCollision(space, 200);
+  EXPECT_EQ(disagreements, 0);
+  EXPECT_EQ(free, 200);
+}
+
+TEST(HostileInput, CoincidentHeightsWithoutPerturbationAreAnErrorNamingTheInput) {
+  FreeSpaceOptions options;
+  options.perturbation.enabled = false;
+  options.sourceName = "flat.cfg";
+  try {
+    const FreeSpace space(boxMesh({0, 0, 0}, {1, 1, 1}), boxMesh({2, 0, 0}, {3, 1, 1}), options);
+    FAIL() << "built a free space from coincident heights";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.file(), "flat.cfg");
+    EXPECT_NE(error.problem().find("same height"), std::string::npos) << error.what();
+  }
+}
