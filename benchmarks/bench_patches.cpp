@@ -64,7 +64,8 @@ void measure(const std::string& cfg) {
   std::size_t slabs = 0, subFaces = 0, curveGlues = 0, spiralGlues = 0, horizontalGlues = 0, unmatched = 0;
   std::size_t shellCount = 0, closedShells = 0;
   std::string subdivisionFailure;
-  double subdivisionSeconds = 0, gluingSeconds = 0;
+  double subdivisionSeconds = 0, gluingSeconds = 0, curveGluingSeconds = 0, spiralGluingSeconds = 0,
+         edgeGluingSeconds = 0;
   try {
     const std::vector<PatchSubdivision> subdivisions = patchSubdivisions(geometries, curves, vertices, overlaps, algebra);
     for (const PatchSubdivision& subdivision : subdivisions) {
@@ -74,9 +75,14 @@ void measure(const std::string& cfg) {
     subdivisionSeconds = secondsSince(start);
     start = std::chrono::steady_clock::now();
     const SubFaceGluing acrossCurves = glueAcrossCurves(geometries, curves, subdivisions, algebra);
+    curveGluingSeconds = secondsSince(start);
+    start = std::chrono::steady_clock::now();
     const SubFaceGluing aroundSpirals = glueAroundSpirals(geometries, subdivisions, algebra);
+    spiralGluingSeconds = secondsSince(start);
+    start = std::chrono::steady_clock::now();
     const SubFaceGluing acrossEdges = glueAcrossHorizontalEdges(geometries, curves, overlaps, subdivisions, algebra);
-    gluingSeconds = secondsSince(start);
+    edgeGluingSeconds = secondsSince(start);
+    gluingSeconds = curveGluingSeconds + spiralGluingSeconds + edgeGluingSeconds;
     curveGlues = acrossCurves.glues.size();
     spiralGlues = aroundSpirals.glues.size();
     horizontalGlues = acrossEdges.glues.size();
@@ -94,7 +100,8 @@ void measure(const std::string& cfg) {
             << pairSeconds << " (" << pairs.size() << "), curves " << curveSeconds << " (" << curves.size() << "), overlaps " << overlapSeconds << " (" << overlaps.size()
             << "), vertices "
             << vertexSeconds << " (" << vertices.size() << "), subdivision " << subdivisionSeconds << " (" << slabs
-            << " slabs, " << subFaces << " sub-faces" << subdivisionFailure << "), gluing " << gluingSeconds << " ("
+            << " slabs, " << subFaces << " sub-faces" << subdivisionFailure << "), gluing " << gluingSeconds << " (curves " << curveGluingSeconds << " s, spirals "
+            << spiralGluingSeconds << " s, horizontal edges " << edgeGluingSeconds << " s; "
             << curveGlues << " across curves, " << spiralGlues << " around spirals, " << horizontalGlues
             << " across horizontal edges, " << unmatched << " sub-faces unmatched; " << shellCount << " shells, "
             << closedShells << " closed)"

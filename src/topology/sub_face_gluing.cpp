@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <tuple>
 
@@ -27,20 +28,73 @@ std::size_t indexOf(const PatchSlab& slab, std::uint32_t curve) {
 }
 
 /// A segment leaving a spiral's point: its patch, which of its ends the spiral is,
-/// its direction from the point and its sub-face there.
+/// and its sub-face there.
 struct Spoke {
   std::uint32_t patch;
   int end;
-  std::array<Rational, 2> direction;
-  /// The patch's sub-face at the spiral.
   std::uint32_t face;
 };
+
+/// The direction of a spoke at an angle: from the spiral to the segment's other end.
+template <class T>
+std::array<T, 2> directionOf(const PatchGeometry& patch, int end, const T& cosine, const T& sine) {
+  const auto from = spiralPoint(spiralOf<T>(patch.ends[end]), cosine, sine);
+  const auto to = spiralPoint(spiralOf<T>(patch.ends[1 - end]), cosine, sine);
+  return {to[0] - from[0], to[1] - from[1]};
+}
 
 /// Counterclockwise order of directions, starting along +x.
 bool before(const std::array<Rational, 2>& a, const std::array<Rational, 2>& b) {
   const auto half = [](const std::array<Rational, 2>& u) { return u[1] > 0 || (u[1] == 0 && u[0] > 0) ? 0 : 1; };
   if (half(a) != half(b)) return half(a) < half(b);
   return a[0] * b[1] - a[1] * b[0] > 0;
+}
+
+/// The same in double intervals; none when not certain.
+std::optional<bool> certainlyBefore(const std::array<Interval, 2>& a, const std::array<Interval, 2>& b) {
+  const auto half = [](const std::array<Interval, 2>& u) -> std::optional<int> {
+    if (u[1].lower() > 0) return 0;
+    if (u[1].upper() < 0) return 1;
+    return std::nullopt;
+  };
+  const std::optional<int> ha = half(a), hb = half(b);
+  if (!ha || !hb) return std::nullopt;
+  if (*ha != *hb) return *ha < *hb;
+  const std::optional<Sign> cross = certainSign(a[0] * b[1] - a[1] * b[0]);
+  if (!cross || *cross == Sign::Zero) return std::nullopt;
+  return *cross == Sign::Positive;
+}
+
+/// Sorts the spokes counterclockwise at a rational angle: in double intervals when
+/// every comparison is certain, exactly otherwise.
+void sortCounterclockwise(std::vector<Spoke>& spokes, const std::vector<PatchGeometry>& patches,
+                          const AlgebraicAngle& angle) {
+  if (angle.lower() == angle.upper()) {
+    RoundingScope rounding;
+    Interval cosine, sine;
+    HalfAngle{angle.chart(), angle.lower()}.cosSin(cosine, sine);
+    std::vector<std::array<Interval, 2>> directions;
+    for (const Spoke& spoke : spokes) directions.push_back(directionOf(patches[spoke.patch], spoke.end, cosine, sine));
+    std::vector<std::size_t> order(spokes.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    bool certain = true;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      const std::optional<bool> result = certainlyBefore(directions[a], directions[b]);
+      certain = certain && result.has_value();
+      return result.value_or(a < b);
+    });
+    if (certain) {
+      std::vector<Spoke> sorted;
+      for (std::size_t i : order) sorted.push_back(spokes[i]);
+      spokes = std::move(sorted);
+      return;
+    }
+  }
+  const auto [cosine, sine] = exactCosSin(angle);
+  std::vector<std::pair<std::array<Rational, 2>, Spoke>> exact;
+  for (const Spoke& spoke : spokes) exact.push_back({directionOf(patches[spoke.patch], spoke.end, cosine, sine), spoke});
+  std::sort(exact.begin(), exact.end(), [](const auto& a, const auto& b) { return before(a.first, b.first); });
+  for (std::size_t i = 0; i < spokes.size(); ++i) spokes[i] = exact[i].second;
 }
 
 /// One rational angle inside each interval between consecutive slab ends of the
@@ -112,18 +166,14 @@ SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
   for (const auto& [spiral, around] : bySpiral) {
     cancellation.check();
     for (const AlgebraicAngle& sample : samplesAround(around, subdivisions, algebra)) {
-      const auto [cosine, sine] = exactCosSin(sample);
       std::vector<Spoke> spokes;
       for (const auto& [patch, k] : around) {
         if (!algebra.contains(patches[patch].patch.range, sample)) continue;
         const PatchSlab* at = cursor.at(patch, sample);
         if (!at) throw std::logic_error("glueAroundSpirals: an active patch has no slab at a sample");
-        const auto from = spiralPoint(spiralOf<Rational>(patches[patch].ends[k]), cosine, sine);
-        const auto to = spiralPoint(spiralOf<Rational>(patches[patch].ends[1 - k]), cosine, sine);
-        spokes.push_back({patch, k, {to[0] - from[0], to[1] - from[1]}, k == 0 ? at->faces.front() : at->faces.back()});
+        spokes.push_back({patch, k, k == 0 ? at->faces.front() : at->faces.back()});
       }
-      std::sort(spokes.begin(), spokes.end(),
-                [&](const Spoke& a, const Spoke& b) { return before(a.direction, b.direction); });
+      sortCounterclockwise(spokes, patches, sample);
       // The sector counterclockwise after a spoke: its positive side (right of end
       // 0 -> end 1, PatchSegment) faces it when the spiral is the spoke's end 1.
       gluing::glueAround(

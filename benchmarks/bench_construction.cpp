@@ -1,0 +1,127 @@
+// The construction over scenes of growing size: the tetrahedron in floor plans of
+// 1, 2, 4, ... rooms (the scene generator's tetra_floorplan_N), then any scenes
+// named on the command line (generator names or .cfg files). Prints per scene the
+// time of each stage, the counts (patches, curves, vertices, sub-faces, shells, free
+// cells), the peak memory and the share of predicates decided in double intervals;
+// with --plot FILE.svg also draws the total time against the output size (vertices
+// plus sub-faces).
+//
+// Usage: bench_construction [--rooms MAX] [--plot FILE.svg] [SCENE ...]
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "freespace/io/text_file.h"
+#include "freespace/scenes/scene_generator.h"
+#include "freespace/space/free_space.h"
+
+using namespace freespace;
+
+namespace {
+
+struct Row {
+  std::string name;
+  std::size_t robotFacets, worldFacets, outputSize;
+  double seconds;
+};
+
+double peakMegabytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;
+}
+
+Row measure(const std::string& name, const Mesh& robot, const Mesh& world) {
+  const auto start = std::chrono::steady_clock::now();
+  const FreeSpace space(robot, world);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const Arrangement& arrangement = space.arrangement();
+  std::size_t subFaces = 0;
+  for (const PatchSubdivision& subdivision : arrangement.subdivisions) subFaces += subdivision.faceCount;
+  std::cout << std::setw(20) << std::left << name << " robot " << robot.triangles().size() << ", world "
+            << world.triangles().size() << " facets: " << std::setprecision(4) << seconds << " s (";
+  for (const StageTime& stage : space.stageTimes()) std::cout << stage.stage << " " << stage.seconds << ", ";
+  std::cout << "); " << arrangement.patches.size() << " patches, " << arrangement.curves.size() << " curves, "
+            << arrangement.vertices.size() << " vertices, " << subFaces << " sub-faces, " << space.shellCount()
+            << " shells, " << space.cellCount() << " free cells; peak " << peakMegabytes() << " MB; double intervals "
+            << 100 * space.statistics().doubleIntervalFraction() << "%" << std::endl;
+  return {name, robot.triangles().size(), world.triangles().size(), arrangement.vertices.size() + subFaces, seconds};
+}
+
+/// Total time against output size, both axes logarithmic.
+void writePlot(const std::vector<Row>& rows, std::ostream& out) {
+  const double width = 640, height = 420, margin = 60;
+  double minX = 1e300, maxX = 0, minY = 1e300, maxY = 0;
+  for (const Row& row : rows) {
+    minX = std::min(minX, std::log10(static_cast<double>(std::max<std::size_t>(row.outputSize, 1))));
+    maxX = std::max(maxX, std::log10(static_cast<double>(std::max<std::size_t>(row.outputSize, 1))));
+    minY = std::min(minY, std::log10(row.seconds));
+    maxY = std::max(maxY, std::log10(row.seconds));
+  }
+  minX = std::floor(minX), maxX = std::ceil(maxX) + (std::ceil(maxX) == std::floor(minX));
+  minY = std::floor(minY), maxY = std::ceil(maxY) + (std::ceil(maxY) == std::floor(minY));
+  const auto px = [&](double x) { return margin + (x - minX) / (maxX - minX) * (width - 2 * margin); };
+  const auto py = [&](double y) { return height - margin - (y - minY) / (maxY - minY) * (height - 2 * margin); };
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" font-family=\"sans-serif\" font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  for (double x = minX; x <= maxX; ++x) {
+    out << "<line x1=\"" << px(x) << "\" y1=\"" << py(minY) << "\" x2=\"" << px(x) << "\" y2=\"" << py(maxY)
+        << "\" stroke=\"#ddd\"/><text x=\"" << px(x) << "\" y=\"" << height - margin + 18
+        << "\" text-anchor=\"middle\">1e" << x << "</text>\n";
+  }
+  for (double y = minY; y <= maxY; ++y) {
+    out << "<line x1=\"" << px(minX) << "\" y1=\"" << py(y) << "\" x2=\"" << px(maxX) << "\" y2=\"" << py(y)
+        << "\" stroke=\"#ddd\"/><text x=\"" << margin - 8 << "\" y=\"" << py(y) + 4 << "\" text-anchor=\"end\">1e" << y
+        << " s</text>\n";
+  }
+  out << "<text x=\"" << width / 2 << "\" y=\"" << height - 12
+      << "\" text-anchor=\"middle\">output size (vertices + sub-faces)</text>\n";
+  for (const Row& row : rows) {
+    const double x = px(std::log10(static_cast<double>(std::max<std::size_t>(row.outputSize, 1))));
+    const double y = py(std::log10(row.seconds));
+    out << "<circle cx=\"" << x << "\" cy=\"" << y << "\" r=\"4\" fill=\"#1f77b4\"/><text x=\"" << x + 6 << "\" y=\""
+        << y - 6 << "\" font-size=\"10\">" << row.name << "</text>\n";
+  }
+  out << "</svg>\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  unsigned maxRooms = 16;
+  std::string plot;
+  std::vector<std::string> extra;
+  for (int i = 1; i < argc; ++i) {
+    const std::string argument = argv[i];
+    if (argument == "--rooms" && i + 1 < argc) {
+      maxRooms = static_cast<unsigned>(std::stoul(argv[++i]));
+    } else if (argument == "--plot" && i + 1 < argc) {
+      plot = argv[++i];
+    } else {
+      extra.push_back(argument);
+    }
+  }
+  std::vector<Row> rows;
+  for (unsigned rooms = 1; rooms <= maxRooms; rooms *= 2) {
+    const Scene scene = makeScene("tetra_floorplan_" + std::to_string(rooms));
+    rows.push_back(measure(scene.name, scene.robot, scene.world));
+  }
+  for (const std::string& name : extra) {
+    if (name.size() > 4 && name.substr(name.size() - 4) == ".cfg") {
+      const LoadedProblem problem = loadProblem(name);
+      rows.push_back(measure(name.substr(name.find_last_of('/') + 1), problem.robot, problem.world));
+    } else {
+      const Scene scene = makeScene(name);
+      rows.push_back(measure(scene.name, scene.robot, scene.world));
+    }
+  }
+  if (!plot.empty()) writeTextFile(plot, true, [&](std::ostream& out) { writePlot(rows, out); });
+  return 0;
+}
