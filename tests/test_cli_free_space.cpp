@@ -122,3 +122,18 @@ TEST(CliFreeSpace, CoincidentHeightsWithoutPerturbationAreAnError) {
   EXPECT_EQ(result.err.rfind("error: " + kProblems + "cage.cfg: ", 0), 0u) << result.err;
   EXPECT_NE(result.err.find("same height"), std::string::npos) << result.err;
 }
+
+TEST(CliFreeSpace, ExportWritesAPlyMeshAndNeverOverwrites) {
+  TempDir dir;
+  const std::string ply = dir.file("keyhole.ply");
+  const std::string command = "export --cfg '" + kProblems + "keyhole.cfg' --ply '" + ply + "'";
+  const CommandResult first = runFreespace(command);
+  ASSERT_EQ(first.status, 0) << first.err;
+  const std::string mesh = readWholeFile(ply);
+  EXPECT_EQ(mesh.rfind("ply\nformat ascii 1.0\n", 0), 0u);
+  EXPECT_NE(mesh.find("end_header\n"), std::string::npos);
+  const CommandResult second = runFreespace(command);
+  EXPECT_EQ(second.status, 2);
+  EXPECT_EQ(second.err, "error: " + ply + ": already exists (not overwritten)\n");
+  EXPECT_EQ(readWholeFile(ply), mesh);
+}

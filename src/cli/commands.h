@@ -13,5 +13,6 @@ void addGenerateCommand(CLI::App& app);
 void addBuildCommand(CLI::App& app);
 void addLocateCommand(CLI::App& app);
 void addSliceCommand(CLI::App& app);
+void addExportCommand(CLI::App& app);
 
 }  // namespace freespace::cli

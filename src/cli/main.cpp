@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   freespace::cli::addBuildCommand(app);
   freespace::cli::addLocateCommand(app);
   freespace::cli::addSliceCommand(app);
+  freespace::cli::addExportCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
