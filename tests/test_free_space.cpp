@@ -49,6 +49,15 @@ TEST_P(BundledFreeSpace, KnownTopologyAndAgreementWithTheExactCollisionTest) {
   if (scene.cells >= 0) {
     EXPECT_EQ(space.cellCount(), static_cast<std::size_t>(scene.cells));
   }
+  // A bounded cell's box holds the configurations in it.
+  const std::vector<std::optional<PatchBox>> boxes = space.cellBoxes();
+  ASSERT_EQ(boxes.size(), space.cellCount());
+  EXPECT_FALSE(boxes[0].has_value());
+  for (const Pose2& pose : {problem.problem.start, problem.problem.goal}) {
+    const std::optional<PatchBox>& box = boxes[space.locate(pose).cell];
+    if (!box) continue;
+    EXPECT_TRUE(box->low[0] <= pose.x && pose.x <= box->high[0] && box->low[1] <= pose.y && pose.y <= box->high[1]);
+  }
   // Free or blocked: the exact collision test on the perturbed meshes.
   const ExactCollisionChecker collision(space.meshes().robot, space.meshes().world);
   const Box3 world = space.meshes().world.bounds();

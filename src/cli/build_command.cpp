@@ -24,6 +24,21 @@ nlohmann::json predicatesJson(const PredicateStatistics& statistics) {
   return all;
 }
 
+/// Each free cell with a box holding it (none for the unbounded cell 0).
+nlohmann::json cellsJson(const FreeSpace& space) {
+  nlohmann::json cells = nlohmann::json::array();
+  const std::vector<std::optional<PatchBox>> boxes = space.cellBoxes();
+  for (std::size_t cell = 0; cell < boxes.size(); ++cell) {
+    nlohmann::json entry = {{"cell", cell}, {"bounded", boxes[cell].has_value()}};
+    if (boxes[cell]) {
+      entry["box"] = {{"min", {boxes[cell]->low[0], boxes[cell]->low[1], boxes[cell]->low[2]}},
+                      {"max", {boxes[cell]->high[0], boxes[cell]->high[1], boxes[cell]->high[2]}}};
+    }
+    cells.push_back(entry);
+  }
+  return cells;
+}
+
 double peakMemoryMegabytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
@@ -62,6 +77,7 @@ nlohmann::json statisticsJson(const FreeSpace& space) {
             {"seed", perturbation.seed},
             {"relative_size", perturbation.relativeSize},
             {"absolute_size", perturbation.absoluteSize}}},
+          {"cell_list", cellsJson(space)},
           {"predicates", predicatesJson(space.statistics())},
           {"double_interval_fraction", space.statistics().doubleIntervalFraction()}};
 }

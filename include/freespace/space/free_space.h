@@ -60,6 +60,9 @@ class FreeSpace {
 
   /// The number of free cells, the unbounded one included.
   std::size_t cellCount() const;
+  /// A box in (x, y, theta) holding each bounded free cell: the union of the boxes
+  /// of the patches its boundary lies on (patchBoxes); none for the unbounded cell.
+  std::vector<std::optional<PatchBox>> cellBoxes() const;
   std::size_t shellCount() const;
   std::size_t freeShellCount() const;
   const Arrangement& arrangement() const;
