@@ -12,8 +12,11 @@ build/bin/freespace info --cfg "$problem"
 start=$(awk -F' *= *' '/^start\.(x|y|theta)/ {printf "%s ", $2}' "$problem")
 goal=$(awk -F' *= *' '/^goal\.(x|y|theta)/ {printf "%s ", $2}' "$problem")
 echo
-echo "== freespace check --cfg $problem --at <start> and --at <goal>"
-# shellcheck disable=SC2086
-build/bin/freespace check --cfg "$problem" --at $start
-# shellcheck disable=SC2086
-build/bin/freespace check --cfg "$problem" --at $goal
+echo "== freespace build --cfg $problem"
+build/bin/freespace build --cfg "$problem"
+echo
+echo "== freespace locate --cfg $problem: the start and the goal (one free cell: the keyhole is passable)"
+batch=$(mktemp)
+trap 'rm -f "$batch"' EXIT
+printf '%s\n%s\n' "$start" "$goal" > "$batch"
+build/bin/freespace locate --cfg "$problem" --batch "$batch"
