@@ -137,3 +137,20 @@ TEST(CliFreeSpace, ExportWritesAPlyMeshAndNeverOverwrites) {
   EXPECT_EQ(second.err, "error: " + ply + ": already exists (not overwritten)\n");
   EXPECT_EQ(readWholeFile(ply), mesh);
 }
+
+TEST(CliFreeSpace, LocateReadsASavedFreeSpace) {
+  TempDir dir;
+  const std::string saved = dir.file("keyhole_narrow.fspace");
+  const CommandResult built = runFreespace("build --cfg '" + kProblems + "keyhole_narrow.cfg' --save '" + saved + "'");
+  ASSERT_EQ(built.status, 0) << built.err;
+  std::ofstream(dir.file("batch.txt")) << "0 -2.25 0\n0 2.25 0\n0.5 0.1 0.3\n";
+  const std::string batch = " --batch '" + dir.file("batch.txt") + "' --json";
+  const CommandResult fromFile = runFreespace("locate '" + saved + "'" + batch);
+  ASSERT_EQ(fromFile.status, 0) << fromFile.err;
+  const CommandResult fromScene = runFreespace("locate --cfg '" + kProblems + "keyhole_narrow.cfg'" + batch);
+  ASSERT_EQ(fromScene.status, 0) << fromScene.err;
+  EXPECT_EQ(fromFile.out, fromScene.out);
+  const CommandResult again = runFreespace("build --cfg '" + kProblems + "keyhole_narrow.cfg' --save '" + saved + "'");
+  EXPECT_EQ(again.status, 2);
+  EXPECT_EQ(again.err, "error: " + saved + ": already exists (not overwritten)\n");
+}

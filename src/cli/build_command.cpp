@@ -1,5 +1,6 @@
 #include <sys/resource.h>
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -7,6 +8,7 @@
 
 #include "commands.h"
 #include "free_space_input.h"
+#include "freespace/input_error.h"
 
 namespace freespace::cli {
 
@@ -87,15 +89,25 @@ nlohmann::json statisticsJson(const FreeSpace& space) {
 void addBuildCommand(CLI::App& app) {
   struct Options {
     FreeSpaceInput input;
+    std::string save;
+    bool force = false;
     bool json = false;
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand("build", "Build the exact free space and print its statistics");
   options->input.addOptions(*command);
   command->add_flag("--json", options->json, "print JSON");
+  command->add_option("--save", options->save, "save the built free space to this file (for locate, slice, export)");
+  command->add_flag("--force", options->force, "overwrite an existing --save file");
   command->callback([options]() {
+    // Refuse before a long construction, not after it.
+    std::error_code error;
+    if (!options->save.empty() && !options->force && std::filesystem::exists(options->save, error)) {
+      throw InputError(options->save, "already exists (not overwritten)");
+    }
     LoadedProblem loaded;
     const std::unique_ptr<FreeSpace> space = options->input.build(loaded);
+    if (!options->save.empty()) space->save(options->save, options->force);
     const nlohmann::json statistics = statisticsJson(*space);
     if (options->json) {
       std::cout << statistics.dump(2) << "\n";

@@ -17,7 +17,7 @@ void requestStop(int) { interrupted = true; }
 }  // namespace
 
 void FreeSpaceInput::addOptions(CLI::App& command) {
-  scene_.addOptions(command);
+  scene_.addOptions(command, true);
   command.add_option("--seed", seed_, "seed of the input perturbation (default 1)");
   command.add_option("--perturbation", perturbation_,
                      "size of the input perturbation relative to the scene (default 1e-8; 0 switches it off)")
@@ -25,6 +25,7 @@ void FreeSpaceInput::addOptions(CLI::App& command) {
 }
 
 std::unique_ptr<FreeSpace> FreeSpaceInput::build(LoadedProblem& loaded) const {
+  if (const std::optional<std::string> saved = scene_.savedSpaceFile()) return FreeSpace::load(*saved);
   loaded = scene_.load();
   FreeSpaceOptions options;
   options.perturbation.seed = seed_;

@@ -9,8 +9,8 @@
 
 namespace freespace::cli {
 
-/// The scene input plus the construction's options (--seed, --perturbation), shared
-/// by the commands that build a free space. Stages are announced on stderr when it
+/// The scene input (or a free space saved by build --save) plus the construction's
+/// options (--seed, --perturbation), shared by the commands that need a free space. Stages are announced on stderr when it
 /// is a terminal; SIGINT and SIGTERM stop the construction (Cancelled).
 class FreeSpaceInput {
  public:

@@ -7,12 +7,19 @@
 
 namespace freespace::cli {
 
-void SceneInput::addOptions(CLI::App& command) {
+void SceneInput::addOptions(CLI::App& command, bool savedSpace) {
   CLI::Option* cfg = command.add_option("--cfg", cfg_, "OMPL.app planar problem (.cfg)");
   CLI::Option* meshes =
-      command.add_option("meshes", meshes_, "ROBOT WORLD mesh files (instead of --cfg)")->expected(2);
+      savedSpace ? command.add_option("inputs", meshes_, "SPACE_FILE (saved by build --save) or ROBOT WORLD mesh files")
+                       ->expected(1, 2)
+                 : command.add_option("meshes", meshes_, "ROBOT WORLD mesh files (instead of --cfg)")->expected(2);
   cfg->excludes(meshes);
   meshes->excludes(cfg);
+}
+
+std::optional<std::string> SceneInput::savedSpaceFile() const {
+  if (cfg_.empty() && meshes_.size() == 1) return meshes_.front();
+  return std::nullopt;
 }
 
 LoadedProblem SceneInput::load() const {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -12,7 +13,11 @@ namespace freespace::cli {
 /// The "(--cfg FILE | ROBOT WORLD)" input shared by the commands.
 class SceneInput {
  public:
-  void addOptions(CLI::App& command);
+  /// With `savedSpace`, one file (a saved free space) may stand for ROBOT WORLD.
+  void addOptions(CLI::App& command, bool savedSpace = false);
+
+  /// The saved free space named instead of ROBOT WORLD, if one is.
+  std::optional<std::string> savedSpaceFile() const;
 
   /// Loads the meshes (and the problem, with --cfg; the robot is then re-centred as
   /// in OMPL.app). Warnings go to stderr. Throws InputError.

@@ -147,6 +147,15 @@ std::optional<std::pair<int, int>> compareRootsOnLadder(const RationalPolynomial
 
 }  // namespace
 
+AngleFunction::AngleFunction(std::array<RationalPolynomial, 2> exact, std::optional<RootKey> key)
+    : exactFormula_([exact](int chart) { return exact[chart]; }), key_(key) {
+  for (int chart = 0; chart < 2; ++chart) {
+    std::vector<Interval> coefficients;
+    for (const Rational& coefficient : exact[chart].coefficients()) coefficients.push_back(enclosingInterval(coefficient));
+    approximate_[chart] = Polynomial<Interval>(std::move(coefficients));
+  }
+}
+
 const RationalPolynomial& AngleFunction::exact(int chart) const {
   if (!exact_[chart]) exact_[chart] = trimmed(exactFormula_(chart));
   return *exact_[chart];

@@ -3,10 +3,9 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "freespace/collision/exact_collision_checker.h"
+#include "free_space_impl.h"
 #include "freespace/geometry/mesh_topology.h"
 #include "freespace/geometry/patch_segment.h"
-#include "freespace/topology/free_cells.h"
 
 namespace freespace {
 
@@ -37,60 +36,37 @@ class StageClock {
 
 }  // namespace
 
-struct FreeSpace::Impl {
-  PredicateStatistics statistics;
-  mutable AngleAlgebra algebra{statistics};
-  std::vector<StageTime> stageTimes;
-  PerturbedMeshes meshes;
-  Arrangement arrangement;
-  std::unique_ptr<SliceRays> rays;
-  std::unique_ptr<ExactCollisionChecker> collision;
-  std::vector<ShellSide> sides;
-  std::unique_ptr<FreeCells> cells;
-
-  Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options) {
-    StageClock clock(stageTimes, options.progress, options.cancellation);
-    meshes = clock.run("perturb", [&] {
-      PerturbedMeshes perturbed = perturbMeshes(robot, world, options.perturbation);
-      requireDistinctHeights(perturbed.robot, perturbed.world, options.sourceName);
-      return perturbed;
-    });
-    std::vector<PatchGeometry> geometries = clock.run("patches", [&] {
-      const MeshTopology robotTopology(meshes.robot, statistics), worldTopology(meshes.world, statistics);
-      std::vector<Patch> patches = vertexFacetPatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
-      const std::vector<Patch> edgeEdge = edgeEdgePatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
-      patches.insert(patches.end(), edgeEdge.begin(), edgeEdge.end());
-      return patchGeometries(patches, meshes.robot, robotTopology, meshes.world, worldTopology, statistics);
-    });
-    const Cancellation& cancellation = options.cancellation;
-    arrangement = clock.run("arrangement", [&] {
-      return buildArrangement(std::move(geometries), algebra, cancellation, options.progress);
-    });
-    sides = clock.run("shells", [&] {
-      rays = std::make_unique<SliceRays>(arrangement, algebra);
-      collision = std::make_unique<ExactCollisionChecker>(meshes.robot, meshes.world);
-      return classifyShells(arrangement, *rays, *collision, cancellation);
-    });
-    cells = clock.run("cells", [&] {
-      return std::make_unique<FreeCells>(arrangement, *rays, sides, algebra, cancellation);
-    });
-  }
-
-  /// Free (with its cell) or blocked, from the first sub-face a ray meets: a point
-  /// sees a sub-face's positive side across free space only if that side is free,
-  /// i.e. its shell is free (a closed shell's sides are all free or all blocked, and
-  /// an open shell bounds no free cell).
-  Location locationOf(const RayHit& hit) const {
-    if (hit.kind == RayHit::Kind::Nothing) return {true, FreeCells::kUnbounded};
-    if (hit.kind == RayHit::Kind::OnSegment || !hit.fromPositiveSide) return {false, 0};
-    const std::optional<std::uint32_t> cell = cells->cellOfShell(arrangement.shells.shellOf(hit.face));
-    if (!cell) return {false, 0};
-    return {true, *cell};
-  }
-};
+FreeSpace::Impl::Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options) {
+  StageClock clock(stageTimes, options.progress, options.cancellation);
+  meshes = clock.run("perturb", [&] {
+    PerturbedMeshes perturbed = perturbMeshes(robot, world, options.perturbation);
+    requireDistinctHeights(perturbed.robot, perturbed.world, options.sourceName);
+    return perturbed;
+  });
+  std::vector<PatchGeometry> geometries = clock.run("patches", [&] {
+    const MeshTopology robotTopology(meshes.robot, statistics), worldTopology(meshes.world, statistics);
+    std::vector<Patch> patches = vertexFacetPatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
+    const std::vector<Patch> edgeEdge = edgeEdgePatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
+    patches.insert(patches.end(), edgeEdge.begin(), edgeEdge.end());
+    return patchGeometries(patches, meshes.robot, robotTopology, meshes.world, worldTopology, statistics);
+  });
+  const Cancellation& cancellation = options.cancellation;
+  arrangement = clock.run("arrangement", [&] {
+    return buildArrangement(std::move(geometries), algebra, cancellation, options.progress);
+  });
+  sides = clock.run("shells", [&] {
+    finish();
+    return classifyShells(arrangement, *rays, *collision, cancellation);
+  });
+  cells = clock.run("cells", [&] {
+    return std::make_unique<FreeCells>(arrangement, *rays, sides, algebra, cancellation);
+  });
+}
 
 FreeSpace::FreeSpace(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options)
     : impl_(std::make_unique<Impl>(robot, world, options)) {}
+
+FreeSpace::FreeSpace(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
 FreeSpace::~FreeSpace() = default;
 

@@ -39,6 +39,10 @@ class AngleFunction {
     for (int chart = 0; chart < 2; ++chart) approximate_[chart] = formula(NumberType<Interval>{}, chart);
   }
 
+  /// The function with the given exact polynomials of its two charts (as read back
+  /// from a saved free space); its double interval coefficients enclose them.
+  AngleFunction(std::array<RationalPolynomial, 2> exact, std::optional<RootKey> key);
+
   const Polynomial<Interval>& approximate(int chart) const { return approximate_[chart]; }
   const RationalPolynomial& exact(int chart) const;
   const RationalPolynomial& squareFree(int chart) const;

@@ -50,6 +50,15 @@ class FreeSpace {
   FreeSpace(const FreeSpace&) = delete;
   FreeSpace& operator=(const FreeSpace&) = delete;
 
+  /// Saves the built structure (perturbed meshes, arrangement, shells' sides, cells)
+  /// to a versioned file with a checksum (Boost.Serialization binary archive inside).
+  /// Refuses (InputError) to replace an existing file unless `overwrite`.
+  void save(const std::string& path, bool overwrite = false) const;
+  /// Reads a saved free space back, without rebuilding; its statistics are empty. A
+  /// file that is not one, of another format version, damaged or inconsistent is an
+  /// InputError naming it.
+  static std::unique_ptr<FreeSpace> load(const std::string& path);
+
   /// From the arrangement alone, exactly: the first sub-face a ray at the
   /// configuration's angle meets (toward -x, or +x when that ray passes exactly
   /// through a vertex of the slice) tells free and the cell when the ray arrives
@@ -76,6 +85,7 @@ class FreeSpace {
 
  private:
   struct Impl;
+  explicit FreeSpace(std::unique_ptr<Impl> impl);
   std::unique_ptr<Impl> impl_;
 };
 

@@ -27,6 +27,9 @@ class FreeCells {
  public:
   FreeCells(const Arrangement& arrangement, const SliceRays& rays, const std::vector<ShellSide>& sides,
             AngleAlgebra& algebra, const Cancellation& cancellation = {});
+  /// Cells as found before (read back from a saved free space).
+  FreeCells(std::vector<std::optional<std::uint32_t>> cellOfShell, std::size_t count)
+      : cellOfShell_(std::move(cellOfShell)), count_(count) {}
 
   /// The number of free cells, the unbounded one included.
   std::size_t count() const { return count_; }

@@ -1,0 +1,438 @@
+// Saving and loading a built free space. The file is a header line naming the
+// format and its version, the payload's size and CRC-32, then the payload: a Boost
+// binary archive of saved::Space. Exact numbers are stored as decimal strings
+// (rationals as p/q), algebraic angles by their functions' exact polynomials, their
+// exact isolating intervals and root indices, so that every predicate on the loaded
+// structure decides as on the built one.
+
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <boost/crc.hpp>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "free_space_impl.h"
+#include "freespace/input_error.h"
+#include "freespace/io/text_file.h"
+#include "saved_space.h"
+
+namespace freespace {
+
+namespace {
+
+const std::string kHeader = "freespace saved free space, format ";
+constexpr int kFormatVersion = 1;
+
+std::string text(const Rational& value) { return value.str(); }
+Rational rationalOf(const std::string& value) { return Rational(value); }
+
+/// Algebraic angles to and from the table of a saved space.
+class AngleTable {
+ public:
+  explicit AngleTable(saved::Space& space) : space_(space) {}
+
+  std::uint32_t add(const AlgebraicAngle& angle) {
+    saved::Angle stored;
+    stored.chart = angle.chart();
+    stored.index = angle.index();
+    const IsolatingInterval root = angle.root();
+    stored.lo = text(root.lo);
+    stored.hi = text(root.hi);
+    if (angle.function()) stored.function = static_cast<std::int32_t>(functionIndex(*angle.function()));
+    space_.angles.push_back(stored);
+    return static_cast<std::uint32_t>(space_.angles.size() - 1);
+  }
+
+  saved::AngleSet add(const AngleSet& set) {
+    saved::AngleSet stored{set.fullCircle, {}};
+    for (const AngleInterval& arc : set.arcs) {
+      stored.arcs.push_back(add(arc.from));
+      stored.arcs.push_back(add(arc.to));
+      stored.arcs.push_back(arc.wraps ? 1 : 0);
+    }
+    return stored;
+  }
+
+  AlgebraicAngle angle(std::uint32_t index) {
+    const saved::Angle& stored = space_.angles.at(index);
+    const IsolatingInterval root{rationalOf(stored.lo), rationalOf(stored.hi)};
+    if (stored.function < 0) {
+      if (root.lo != root.hi) throw std::out_of_range("a rational angle with an interval");
+      return AlgebraicAngle::rational(stored.chart, root.lo);
+    }
+    return AlgebraicAngle(function(static_cast<std::size_t>(stored.function)), stored.chart, root, stored.index);
+  }
+
+  AngleSet set(const saved::AngleSet& stored) {
+    AngleSet set;
+    set.fullCircle = stored.fullCircle;
+    if (stored.arcs.size() % 3 != 0) throw std::out_of_range("an angle set's arcs");
+    for (std::size_t i = 0; i < stored.arcs.size(); i += 3) {
+      set.arcs.push_back({angle(stored.arcs[i]), angle(stored.arcs[i + 1]), stored.arcs[i + 2] != 0});
+    }
+    return set;
+  }
+
+ private:
+  std::size_t functionIndex(const AngleFunction& function) {
+    const auto [found, inserted] = indexOf_.try_emplace(&function, space_.functions.size());
+    if (inserted) {
+      saved::Function stored;
+      if (function.key()) stored.key.assign(function.key()->begin(), function.key()->end());
+      for (const Rational& c : function.exact(0).coefficients()) stored.chart0.push_back(text(c));
+      for (const Rational& c : function.exact(1).coefficients()) stored.chart1.push_back(text(c));
+      space_.functions.push_back(std::move(stored));
+    }
+    return found->second;
+  }
+
+  std::shared_ptr<const AngleFunction> function(std::size_t index) {
+    if (loaded_.empty()) loaded_.resize(space_.functions.size());
+    std::shared_ptr<const AngleFunction>& function = loaded_.at(index);
+    if (!function) {
+      const saved::Function& stored = space_.functions[index];
+      const auto polynomial = [](const std::vector<std::string>& coefficients) {
+        std::vector<Rational> values;
+        for (const std::string& c : coefficients) values.push_back(rationalOf(c));
+        return RationalPolynomial(std::move(values));
+      };
+      std::optional<AngleFunction::RootKey> key;
+      if (!stored.key.empty()) {
+        if (stored.key.size() != 9) throw std::out_of_range("a function's key");
+        key.emplace();
+        std::copy(stored.key.begin(), stored.key.end(), key->begin());
+      }
+      function = std::make_shared<const AngleFunction>(
+          std::array<RationalPolynomial, 2>{polynomial(stored.chart0), polynomial(stored.chart1)}, key);
+    }
+    return function;
+  }
+
+  saved::Space& space_;
+  std::map<const AngleFunction*, std::size_t> indexOf_;
+  std::vector<std::shared_ptr<const AngleFunction>> loaded_;
+};
+
+saved::Mesh savedMesh(const Mesh& mesh) {
+  saved::Mesh stored;
+  for (const Point3& p : mesh.vertices()) stored.vertices.insert(stored.vertices.end(), {p.x(), p.y(), p.z()});
+  for (const TriangleIndices& t : mesh.triangles()) stored.triangles.insert(stored.triangles.end(), t.begin(), t.end());
+  return stored;
+}
+
+Mesh meshOf(const saved::Mesh& stored, const std::string& path) {
+  TriangleSoup soup;
+  if (stored.vertices.size() % 3 != 0 || stored.triangles.size() % 3 != 0) throw std::out_of_range("a mesh");
+  for (std::size_t i = 0; i < stored.vertices.size(); i += 3) {
+    soup.vertices.emplace_back(stored.vertices[i], stored.vertices[i + 1], stored.vertices[i + 2]);
+  }
+  for (std::size_t i = 0; i < stored.triangles.size(); i += 3) {
+    soup.triangles.push_back({stored.triangles[i], stored.triangles[i + 1], stored.triangles[i + 2]});
+  }
+  Mesh mesh = Mesh::fromSoup(soup, path);
+  if (mesh.vertices().size() * 3 != stored.vertices.size()) throw std::out_of_range("a mesh's vertices");
+  return mesh;
+}
+
+void pushPoint(std::vector<double>& out, const Point3& p) { out.insert(out.end(), {p.x(), p.y(), p.z()}); }
+Point3 pointAt(const std::vector<double>& in, std::size_t i) { return {in.at(3 * i), in.at(3 * i + 1), in.at(3 * i + 2)}; }
+
+saved::Patch savedPatch(const PatchGeometry& patch, AngleTable& angles) {
+  saved::Patch stored;
+  const Contact& c = patch.patch.contact;
+  stored.contact = {static_cast<std::int32_t>(c.kind), static_cast<std::int32_t>(c.robot),
+                    static_cast<std::int32_t>(c.world), c.side};
+  stored.range = angles.add(patch.patch.range);
+  for (const SegmentEnd& end : patch.segment.ends) {
+    stored.segment.insert(stored.segment.end(), {end.robotVertex ? 1u : 0u, end.vertex, end.edge[0], end.edge[1]});
+  }
+  stored.lineTags = {static_cast<std::int32_t>(patch.line.kind), patch.line.side};
+  for (std::uint32_t v : patch.line.vertices) stored.lineTags.push_back(static_cast<std::int32_t>(v));
+  for (const Point3& p : patch.line.points) pushPoint(stored.linePoints, p);
+  for (const SpiralPoints& end : patch.ends) {
+    stored.spiralRobotVertex.push_back(end.robotVertex ? 1 : 0);
+    for (const Point3& p : end.points) pushPoint(stored.spiralPoints, p);
+  }
+  return stored;
+}
+
+PatchGeometry patchOf(const saved::Patch& stored, AngleTable& angles) {
+  if (stored.contact.size() != 4 || stored.segment.size() != 8 || stored.lineTags.size() != 6 ||
+      stored.linePoints.size() != 12 || stored.spiralRobotVertex.size() != 2 || stored.spiralPoints.size() != 18) {
+    throw std::out_of_range("a patch");
+  }
+  PatchGeometry patch;
+  patch.patch.contact = {static_cast<ContactKind>(stored.contact[0]), static_cast<std::uint32_t>(stored.contact[1]),
+                         static_cast<std::uint32_t>(stored.contact[2]), stored.contact[3]};
+  patch.patch.range = angles.set(stored.range);
+  for (int k = 0; k < 2; ++k) {
+    patch.segment.ends[k] = {stored.segment[4 * k] != 0, stored.segment[4 * k + 1],
+                             {stored.segment[4 * k + 2], stored.segment[4 * k + 3]}};
+  }
+  patch.line.kind = static_cast<ContactKind>(stored.lineTags[0]);
+  patch.line.side = stored.lineTags[1];
+  for (int i = 0; i < 4; ++i) {
+    patch.line.vertices[i] = static_cast<std::uint32_t>(stored.lineTags[2 + i]);
+    patch.line.points[i] = pointAt(stored.linePoints, i);
+  }
+  for (int k = 0; k < 2; ++k) {
+    patch.ends[k].robotVertex = stored.spiralRobotVertex[k] != 0;
+    for (int i = 0; i < 3; ++i) patch.ends[k].points[i] = pointAt(stored.spiralPoints, 3 * k + i);
+  }
+  return patch;
+}
+
+saved::Gluing savedGluing(const SubFaceGluing& gluing, AngleTable& angles) {
+  saved::Gluing stored;
+  for (const SubFaceGlue& glue : gluing.glues) {
+    stored.glues.insert(stored.glues.end(), {glue.first.patch, glue.first.face, glue.second.patch, glue.second.face,
+                                             static_cast<std::uint32_t>(glue.edge), angles.add(glue.at)});
+  }
+  for (const SubFaceId& face : gluing.unmatched) stored.unmatched.insert(stored.unmatched.end(), {face.patch, face.face});
+  return stored;
+}
+
+SubFaceGluing gluingOf(const saved::Gluing& stored, AngleTable& angles) {
+  if (stored.glues.size() % 6 != 0 || stored.unmatched.size() % 2 != 0) throw std::out_of_range("a gluing");
+  SubFaceGluing gluing;
+  for (std::size_t i = 0; i < stored.glues.size(); i += 6) {
+    if (stored.glues[i + 4] > static_cast<std::uint32_t>(GluedEdge::Horizontal)) throw std::out_of_range("a glue");
+    gluing.glues.push_back({{stored.glues[i], stored.glues[i + 1]},
+                            {stored.glues[i + 2], stored.glues[i + 3]},
+                            static_cast<GluedEdge>(stored.glues[i + 4]),
+                            angles.angle(stored.glues[i + 5])});
+  }
+  for (std::size_t i = 0; i < stored.unmatched.size(); i += 2) {
+    gluing.unmatched.push_back({stored.unmatched[i], stored.unmatched[i + 1]});
+  }
+  return gluing;
+}
+
+saved::Space savedSpace(const PerturbedMeshes& meshes, const Arrangement& arrangement,
+                        const std::vector<ShellSide>& sides, const FreeCells& cells,
+                        const std::vector<StageTime>& stageTimes) {
+  saved::Space space;
+  AngleTable angles(space);
+  space.robot = savedMesh(meshes.robot);
+  space.world = savedMesh(meshes.world);
+  space.perturbed = meshes.record.enabled;
+  space.seed = meshes.record.seed;
+  space.relativeSize = meshes.record.relativeSize;
+  space.absoluteSize = meshes.record.absoluteSize;
+  for (const PatchGeometry& patch : arrangement.patches) space.patches.push_back(savedPatch(patch, angles));
+  for (const PatchCurve& curve : arrangement.curves) {
+    saved::Curve stored{curve.first, curve.second, angles.add(curve.angles), {}};
+    for (const auto& ends : curve.ends) {
+      for (const CurveEnd& end : ends) {
+        stored.ends.insert(stored.ends.end(), {end.endOnOtherLine[0][0], end.endOnOtherLine[0][1],
+                                               end.endOnOtherLine[1][0], end.endOnOtherLine[1][1], end.rangeEnd[0],
+                                               end.rangeEnd[1]});
+      }
+    }
+    space.curves.push_back(std::move(stored));
+  }
+  for (const PatchOverlap& overlap : arrangement.overlaps) {
+    space.overlaps.push_back({{overlap.patches[0], overlap.patches[1]},
+                              angles.add(overlap.angle),
+                              {overlap.reachesEnd[0][0], overlap.reachesEnd[0][1], overlap.reachesEnd[1][0],
+                               overlap.reachesEnd[1][1]}});
+  }
+  for (const PatchVertex& vertex : arrangement.vertices) {
+    space.vertices.push_back({{vertex.patches.begin(), vertex.patches.end()}, angles.add(vertex.angle), vertex.crossing});
+  }
+  for (const PatchSubdivision& subdivision : arrangement.subdivisions) {
+    saved::Subdivision stored{{}, subdivision.faceCount};
+    for (const PatchSlab& slab : subdivision.slabs) {
+      stored.slabs.push_back(
+          {angles.add(slab.from), angles.add(slab.to), angles.add(slab.sample), slab.curves, slab.faces});
+    }
+    space.subdivisions.push_back(std::move(stored));
+  }
+  for (const SubFaceGluing* gluing :
+       {&arrangement.acrossCurves, &arrangement.aroundSpirals, &arrangement.acrossHorizontalEdges}) {
+    space.gluings.push_back(savedGluing(*gluing, angles));
+  }
+  for (std::uint32_t shell = 0; shell < sides.size(); ++shell) {
+    space.shellSides.push_back(static_cast<std::uint8_t>(sides[shell]));
+    const std::optional<std::uint32_t> cell = cells.cellOfShell(shell);
+    space.cellOfShell.push_back(cell ? static_cast<std::int32_t>(*cell) : -1);
+  }
+  space.cellCount = static_cast<std::uint32_t>(cells.count());
+  for (const StageTime& stage : stageTimes) {
+    space.stageNames.push_back(stage.stage);
+    space.stageSeconds.push_back(stage.seconds);
+  }
+  return space;
+}
+
+std::uint32_t checksum(const std::string& payload) {
+  boost::crc_32_type crc;
+  crc.process_bytes(payload.data(), payload.size());
+  return crc.checksum();
+}
+
+/// The payload of a saved free space file, checked against its header.
+std::string readPayload(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot open file");
+  std::string header;
+  std::getline(in, header);
+  if (header.rfind(kHeader, 0) != 0) throw InputError(path, "not a saved free space (no '" + kHeader + "' header)");
+  const std::string version = header.substr(kHeader.size());
+  if (version != std::to_string(kFormatVersion)) {
+    throw InputError(path, "saved free space of format " + version + "; this build reads format " +
+                               std::to_string(kFormatVersion));
+  }
+  std::uint64_t size = 0;
+  std::uint32_t crc = 0;
+  in.read(reinterpret_cast<char*>(&size), sizeof size);
+  in.read(reinterpret_cast<char*>(&crc), sizeof crc);
+  if (!in || size > (std::uint64_t{1} << 40)) throw InputError(path, "damaged: truncated header");
+  std::string payload(size, '\0');
+  in.read(payload.data(), static_cast<std::streamsize>(size));
+  if (!in || in.peek() != std::char_traits<char>::eof()) throw InputError(path, "damaged: wrong length");
+  if (checksum(payload) != crc) throw InputError(path, "damaged: checksum mismatch");
+  return payload;
+}
+
+/// Indices that must be in range for the structure to be used safely.
+void checkConsistency(const Arrangement& arrangement, const std::vector<ShellSide>& sides,
+                      const std::vector<std::optional<std::uint32_t>>& cellOfShell, std::size_t cellCount) {
+  const std::size_t patches = arrangement.patches.size();
+  if (arrangement.subdivisions.size() != patches) throw std::out_of_range("subdivisions");
+  for (const PatchCurve& curve : arrangement.curves) {
+    if (curve.first >= patches || curve.second >= patches) throw std::out_of_range("a curve's patches");
+  }
+  for (const PatchSubdivision& subdivision : arrangement.subdivisions) {
+    for (const PatchSlab& slab : subdivision.slabs) {
+      if (slab.faces.size() != slab.curves.size() + 1) throw std::out_of_range("a slab's faces");
+      for (std::uint32_t curve : slab.curves) {
+        if (curve >= arrangement.curves.size()) throw std::out_of_range("a slab's curves");
+      }
+      for (std::uint32_t face : slab.faces) {
+        if (face >= subdivision.faceCount) throw std::out_of_range("a slab's faces");
+      }
+    }
+  }
+  const auto checkFace = [&](SubFaceId face) {
+    if (face.patch >= patches || face.face >= arrangement.subdivisions[face.patch].faceCount) {
+      throw std::out_of_range("a glued sub-face");
+    }
+  };
+  for (const SubFaceGluing* gluing :
+       {&arrangement.acrossCurves, &arrangement.aroundSpirals, &arrangement.acrossHorizontalEdges}) {
+    for (const SubFaceGlue& glue : gluing->glues) checkFace(glue.first), checkFace(glue.second);
+    for (const SubFaceId& face : gluing->unmatched) checkFace(face);
+  }
+  if (sides.size() != cellOfShell.size()) throw std::out_of_range("shells");
+  for (const auto& cell : cellOfShell) {
+    if (cell && *cell >= cellCount) throw std::out_of_range("a shell's cell");
+  }
+}
+
+}  // namespace
+
+void FreeSpace::save(const std::string& path, bool overwrite) const {
+  const saved::Space space =
+      savedSpace(impl_->meshes, impl_->arrangement, impl_->sides, *impl_->cells, impl_->stageTimes);
+  std::ostringstream payloadStream;
+  {
+    boost::archive::binary_oarchive archive(payloadStream);
+    archive << space;
+  }
+  const std::string payload = payloadStream.str();
+  const std::uint64_t size = payload.size();
+  const std::uint32_t crc = checksum(payload);
+  writeTextFile(path, overwrite, [&](std::ostream& out) {
+    out << kHeader << kFormatVersion << '\n';
+    out.write(reinterpret_cast<const char*>(&size), sizeof size);
+    out.write(reinterpret_cast<const char*>(&crc), sizeof crc);
+    out.write(payload.data(), static_cast<std::streamsize>(payload.size()));
+  });
+}
+
+std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
+  const std::string payload = readPayload(path);
+  saved::Space space;
+  try {
+    std::istringstream payloadStream(payload);
+    boost::archive::binary_iarchive archive(payloadStream);
+    archive >> space;
+  } catch (const std::exception& error) {
+    throw InputError(path, std::string("damaged: ") + error.what());
+  }
+  auto impl = std::make_unique<Impl>();
+  try {
+    AngleTable angles(space);
+    impl->meshes.robot = meshOf(space.robot, path);
+    impl->meshes.world = meshOf(space.world, path);
+    impl->meshes.record = {space.perturbed, space.seed, space.relativeSize, space.absoluteSize};
+    Arrangement& arrangement = impl->arrangement;
+    for (const saved::Patch& patch : space.patches) arrangement.patches.push_back(patchOf(patch, angles));
+    for (const saved::Curve& stored : space.curves) {
+      PatchCurve curve{stored.first, stored.second, angles.set(stored.angles), {}};
+      if (stored.ends.size() != 12 * curve.angles.arcs.size()) throw std::out_of_range("a curve's ends");
+      for (std::size_t arc = 0; arc < curve.angles.arcs.size(); ++arc) {
+        std::array<CurveEnd, 2> ends{};
+        for (int e = 0; e < 2; ++e) {
+          const std::uint8_t* flags = &stored.ends[12 * arc + 6 * e];
+          ends[e].endOnOtherLine = {{{flags[0] != 0, flags[1] != 0}, {flags[2] != 0, flags[3] != 0}}};
+          ends[e].rangeEnd = {flags[4] != 0, flags[5] != 0};
+        }
+        curve.ends.push_back(ends);
+      }
+      arrangement.curves.push_back(std::move(curve));
+    }
+    for (const saved::Overlap& stored : space.overlaps) {
+      if (stored.patches.size() != 2 || stored.reachesEnd.size() != 4) throw std::out_of_range("an overlap");
+      arrangement.overlaps.push_back({{stored.patches[0], stored.patches[1]},
+                                      angles.angle(stored.angle),
+                                      {{{stored.reachesEnd[0] != 0, stored.reachesEnd[1] != 0},
+                                        {stored.reachesEnd[2] != 0, stored.reachesEnd[3] != 0}}}});
+    }
+    for (const saved::Vertex& stored : space.vertices) {
+      if (stored.patches.size() != 3) throw std::out_of_range("a vertex");
+      arrangement.vertices.push_back({{stored.patches[0], stored.patches[1], stored.patches[2]},
+                                      angles.angle(stored.angle),
+                                      stored.crossing});
+    }
+    for (const saved::Subdivision& stored : space.subdivisions) {
+      PatchSubdivision subdivision;
+      subdivision.faceCount = stored.faceCount;
+      for (const saved::Slab& slab : stored.slabs) {
+        subdivision.slabs.push_back(
+            {angles.angle(slab.from), angles.angle(slab.to), angles.angle(slab.sample), slab.curves, slab.faces});
+      }
+      arrangement.subdivisions.push_back(std::move(subdivision));
+    }
+    if (space.gluings.size() != 3) throw std::out_of_range("gluings");
+    arrangement.acrossCurves = gluingOf(space.gluings[0], angles);
+    arrangement.aroundSpirals = gluingOf(space.gluings[1], angles);
+    arrangement.acrossHorizontalEdges = gluingOf(space.gluings[2], angles);
+    std::vector<std::optional<std::uint32_t>> cellOfShell;
+    for (std::size_t shell = 0; shell < space.shellSides.size(); ++shell) {
+      if (space.shellSides[shell] > static_cast<std::uint8_t>(ShellSide::Open)) throw std::out_of_range("a shell");
+      impl->sides.push_back(static_cast<ShellSide>(space.shellSides[shell]));
+      const std::int32_t cell = space.cellOfShell.at(shell);
+      cellOfShell.push_back(cell < 0 ? std::nullopt : std::optional<std::uint32_t>(static_cast<std::uint32_t>(cell)));
+    }
+    checkConsistency(arrangement, impl->sides, cellOfShell, space.cellCount);
+    arrangement.shells = Shells(arrangement.subdivisions, {&arrangement.acrossCurves, &arrangement.aroundSpirals,
+                                                           &arrangement.acrossHorizontalEdges});
+    if (arrangement.shells.count() != impl->sides.size()) throw std::out_of_range("the shells' count");
+    impl->cells = std::make_unique<FreeCells>(std::move(cellOfShell), space.cellCount);
+    for (std::size_t i = 0; i < space.stageNames.size() && i < space.stageSeconds.size(); ++i) {
+      impl->stageTimes.push_back({space.stageNames[i], space.stageSeconds[i]});
+    }
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::exception& error) {
+    throw InputError(path, std::string("inconsistent saved free space: ") + error.what());
+  }
+  impl->finish();
+  return std::unique_ptr<FreeSpace>(new FreeSpace(std::move(impl)));
+}
+
+}  // namespace freespace

@@ -1,0 +1,48 @@
+#pragma once
+
+// The parts of a FreeSpace, built (free_space.cpp) or read back (free_space_file.cpp).
+
+#include <memory>
+#include <vector>
+
+#include "freespace/collision/exact_collision_checker.h"
+#include "freespace/space/free_space.h"
+#include "freespace/topology/free_cells.h"
+
+namespace freespace {
+
+struct FreeSpace::Impl {
+  PredicateStatistics statistics;
+  mutable AngleAlgebra algebra{statistics};
+  std::vector<StageTime> stageTimes;
+  PerturbedMeshes meshes;
+  Arrangement arrangement;
+  std::unique_ptr<SliceRays> rays;
+  std::unique_ptr<ExactCollisionChecker> collision;
+  std::vector<ShellSide> sides;
+  std::unique_ptr<FreeCells> cells;
+
+  /// Builds everything from the meshes.
+  Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options);
+  /// Empty: its parts are set by the reader of a saved free space, then finish().
+  Impl() = default;
+  /// The rays and the collision test over the parts.
+  void finish() {
+    rays = std::make_unique<SliceRays>(arrangement, algebra);
+    collision = std::make_unique<ExactCollisionChecker>(meshes.robot, meshes.world);
+  }
+
+  /// Free (with its cell) or blocked, from the first sub-face a ray meets: a point
+  /// sees a sub-face's positive side across free space only if that side is free,
+  /// i.e. its shell is free (a closed shell's sides are all free or all blocked, and
+  /// an open shell bounds no free cell).
+  Location locationOf(const RayHit& hit) const {
+    if (hit.kind == RayHit::Kind::Nothing) return {true, FreeCells::kUnbounded};
+    if (hit.kind == RayHit::Kind::OnSegment || !hit.fromPositiveSide) return {false, 0};
+    const std::optional<std::uint32_t> cell = cells->cellOfShell(arrangement.shells.shellOf(hit.face));
+    if (!cell) return {false, 0};
+    return {true, *cell};
+  }
+};
+
+}  // namespace freespace

@@ -1,0 +1,163 @@
+#pragma once
+
+// A built free space as plain data for Boost.Serialization (free_space_file.cpp):
+// numbers as exact decimal or rational strings, algebraic angles as indices into a
+// table of angles whose functions are stored by their exact polynomials.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
+
+namespace freespace::saved {
+
+struct Function {
+  std::vector<std::uint32_t> key;  // empty: no key
+  std::vector<std::string> chart0, chart1;
+
+  template <class Archive>
+  void serialize(Archive& archive, unsigned) {
+    archive & key & chart0 & chart1;
+  }
+};
+
+struct Angle {
+  std::int32_t function = -1;  // -1: a rational angle
+  std::int32_t chart = 0;
+  std::string lo, hi;
+  std::int32_t index = -1;
+
+  template <class Archive>
+  void serialize(Archive& archive, unsigned) {
+    archive & function & chart & lo & hi & index;
+  }
+};
+
+struct AngleSet {
+  bool fullCircle = false;
+  std::vector<std::uint32_t> arcs;  // from, to, wraps: three per arc
+
+  template <class Archive>
+  void serialize(Archive& archive, unsigned) {
+    archive & fullCircle & arcs;
+  }
+};
+
+struct Mesh {
+  std::vector<double> vertices;          // x, y, z per vertex
+  std::vector<std::uint32_t> triangles;  // three per triangle
+
+  template <class Archive>
+  void serialize(Archive& archive, unsigned) {
+    archive & vertices & triangles;
+  }
+};
+
+struct Patch {
+  std::vector<std::int32_t> contact;   // kind, robot, world, side
+  AngleSet range;
+  std::vector<std::uint32_t> segment;  // per end: robotVertex, vertex, edge[0], edge[1]
+  std::vector<std::int32_t> lineTags;  // kind, side, vertices[4]
+  std::vector<double> linePoints;      // points[4], xyz
+  std::vector<std::uint8_t> spiralRobotVertex;
+  std::vector<double> spiralPoints;    // per end: points[3], xyz
+
+  template <class Archive>
+  void serialize(Archive& archive, unsigned) {
+    archive & contact & range & segment & lineTags & linePoints & spiralRobotVertex & spiralPoints;
+  }
+};
+
+struct Curve {
+  std::uint32_t first = 0, second = 0;
+  AngleSet angles;
+  std::vector<std::uint8_t> ends;  // per arc and end: endOnOtherLine[2][2], rangeEnd[2]
+
+  template <class Archive>
+  void serialize(Archive& archive, unsigned) {
+    archive & first & second & angles & ends;
+  }
+};
+
+struct Overlap {
+  std::vector<std::uint32_t> patches;
+  std::uint32_t angle = 0;
+  std::vector<std::uint8_t> reachesEnd;
+
+  template <class Archive>
+  void serialize(Archive& archive, unsigned) {
+    archive & patches & angle & reachesEnd;
+  }
+};
+
+struct Vertex {
+  std::vector<std::uint32_t> patches;
+  std::uint32_t angle = 0;
+  std::int32_t crossing = -1;
+
+  template <class Archive>
+  void serialize(Archive& archive, unsigned) {
+    archive & patches & angle & crossing;
+  }
+};
+
+struct Slab {
+  std::uint32_t from = 0, to = 0, sample = 0;
+  std::vector<std::uint32_t> curves, faces;
+
+  template <class Archive>
+  void serialize(Archive& archive, unsigned) {
+    archive & from & to & sample & curves & faces;
+  }
+};
+
+struct Subdivision {
+  std::vector<Slab> slabs;
+  std::uint32_t faceCount = 0;
+
+  template <class Archive>
+  void serialize(Archive& archive, unsigned) {
+    archive & slabs & faceCount;
+  }
+};
+
+struct Gluing {
+  std::vector<std::uint32_t> glues;      // first patch, face, second patch, face, edge kind, angle
+  std::vector<std::uint32_t> unmatched;  // patch, face
+
+  template <class Archive>
+  void serialize(Archive& archive, unsigned) {
+    archive & glues & unmatched;
+  }
+};
+
+struct Space {
+  Mesh robot, world;
+  bool perturbed = true;
+  std::uint64_t seed = 1;
+  double relativeSize = 0, absoluteSize = 0;
+  std::vector<Function> functions;
+  std::vector<Angle> angles;
+  std::vector<Patch> patches;
+  std::vector<Curve> curves;
+  std::vector<Overlap> overlaps;
+  std::vector<Vertex> vertices;
+  std::vector<Subdivision> subdivisions;
+  std::vector<Gluing> gluings;             // across curves, around spirals, across horizontal edges
+  std::vector<std::uint8_t> shellSides;    // ShellSide per shell
+  std::vector<std::int32_t> cellOfShell;   // -1: none
+  std::uint32_t cellCount = 0;
+  std::vector<std::string> stageNames;
+  std::vector<double> stageSeconds;
+
+  template <class Archive>
+  void serialize(Archive& archive, unsigned) {
+    archive & robot & world & perturbed & seed & relativeSize & absoluteSize & functions & angles & patches & curves &
+        overlaps & vertices & subdivisions & gluings & shellSides & cellOfShell & cellCount & stageNames &
+        stageSeconds;
+  }
+};
+
+}  // namespace freespace::saved
