@@ -12,15 +12,15 @@
 
 #include <atomic>
 #include <chrono>
-#include <random>
 #include <thread>
 
-#include "freespace/collision/exact_collision_checker.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/scenes/scene_generator.h"
 #include "freespace/space/free_space.h"
+#include "locate_oracle.h"
 
 using namespace freespace;
+using namespace freespace::testing;
 
 namespace {
 
@@ -59,22 +59,9 @@ TEST_P(BundledFreeSpace, KnownTopologyAndAgreementWithTheExactCollisionTest) {
     EXPECT_TRUE(box->low[0] <= pose.x && pose.x <= box->high[0] && box->low[1] <= pose.y && pose.y <= box->high[1]);
   }
   // Free or blocked: the exact collision test on the perturbed meshes.
-  const ExactCollisionChecker collision(space.meshes().robot, space.meshes().world);
-  const Box3 world = space.meshes().world.bounds();
-  const double reach = space.meshes().robot.bounds().sizes().head<2>().norm();
-  std::mt19937 random(11);
-  std::uniform_real_distribution<double> x(world.min().x() - reach, world.max().x() + reach);
-  std::uniform_real_distribution<double> y(world.min().y() - reach, world.max().y() + reach);
-  std::uniform_real_distribution<double> theta(-M_PI, M_PI);
-  int disagreements = 0, free = 0;
-  for (int i = 0; i < 500; ++i) {
-    const Pose2 pose{x(random), y(random), theta(random)};
-    const Location location = space.locate(pose);
-    free += location.free;
-    disagreements += location.free == collision.inCollision(pose);
-  }
-  EXPECT_EQ(disagreements, 0) << "of 500";
-  EXPECT_GT(free, 0);
+  const LocateCheck check = locateAgainstCollision(space, 500, 11);
+  EXPECT_EQ(check.disagreements, 0) << "of 500";
+  EXPECT_GT(check.free, 0);
 }
 
 // The cage: inside and outside. The other counts are not known independently.

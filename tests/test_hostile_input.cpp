@@ -4,37 +4,15 @@
 // perturbation.
 #include <gtest/gtest.h>
 
-#include <random>
-
-#include "freespace/collision/exact_collision_checker.h"
 #include "freespace/input_error.h"
 #include "freespace/space/free_space.h"
+#include "locate_oracle.h"
 #include "test_meshes.h"
 
 using namespace freespace;
 using namespace freespace::testing;
 
 namespace {
-
-/// Disagreements between locate and the exact collision test on random
-/// configurations around the environment, and how many were free.
-std::pair<int, int> disagreementsWithCollision(const FreeSpace& space, int samples) {
-  const ExactCollisionChecker collision(space.meshes().robot, space.meshes().world);
-  const Box3 world = space.meshes().world.bounds();
-  const double reach = space.meshes().robot.bounds().sizes().head<2>().norm();
-  std::mt19937 random(5);
-  std::uniform_real_distribution<double> x(world.min().x() - reach, world.max().x() + reach);
-  std::uniform_real_distribution<double> y(world.min().y() - reach, world.max().y() + reach);
-  std::uniform_real_distribution<double> theta(-M_PI, M_PI);
-  int disagreements = 0, free = 0;
-  for (int i = 0; i < samples; ++i) {
-    const Pose2 pose{x(random), y(random), theta(random)};
-    const bool locatedFree = space.locate(pose).free;
-    free += locatedFree;
-    disagreements += locatedFree == collision.inCollision(pose);
-  }
-  return {disagreements, free};
-}
 
 Mesh scaled(const Mesh& mesh, double factor) {
   TriangleSoup soup{{}, mesh.triangles()};
@@ -50,9 +28,9 @@ TEST(HostileInput, OverlappingEnvironmentSolidsAreTheirUnion) {
   const Mesh world = Mesh::fromSoup(joinSoups({boxSoup({0, 0, 0}, {2, 1, 1}), boxSoup({1, 0.5, 0.05}, {3, 2, 0.9})}),
                                     "overlapping boxes");
   const FreeSpace space(kRobot, world);
-  const auto [disagreements, free] = disagreementsWithCollision(space, 400);
-  EXPECT_EQ(disagreements, 0);
-  EXPECT_GT(free, 0);
+  const LocateCheck check = locateAgainstCollision(space, 400, 5);
+  EXPECT_EQ(check.disagreements, 0);
+  EXPECT_GT(check.free, 0);
 }
 
 TEST(HostileInput, HugeCoordinatesGiveTheSameCells) {
@@ -68,7 +46,7 @@ TEST(HostileInput, HugeCoordinatesGiveTheSameCells) {
   const Location inside = huge.locate({1.8e9, 1.8e9, 0.3}), outside = huge.locate({8e9, 8e9, 0.3});
   ASSERT_TRUE(inside.free && outside.free);
   EXPECT_NE(inside.cell, outside.cell);
-  EXPECT_EQ(disagreementsWithCollision(small, 200).first, 0);
+  EXPECT_EQ(locateAgainstCollision(small, 200, 5).disagreements, 0);
 }
 
 TEST(HostileInput, ARobotAboveTheEnvironmentIsFreeEverywhere) {
@@ -78,9 +56,9 @@ TEST(HostileInput, ARobotAboveTheEnvironmentIsFreeEverywhere) {
   for (const Point3& p : above.vertices()) lifted.vertices.push_back(p + Point3(0, 0, 5));
   const FreeSpace space(Mesh::fromSoup(lifted, "lifted robot"), world);
   EXPECT_EQ(space.cellCount(), 1u);
-  const auto [disagreements, free] = disagreementsWithCollision(space, 200);
-  EXPECT_EQ(disagreements, 0);
-  EXPECT_EQ(free, 200);
+  const LocateCheck check = locateAgainstCollision(space, 200, 5);
+  EXPECT_EQ(check.disagreements, 0);
+  EXPECT_EQ(check.free, 200);
 }
 
 TEST(HostileInput, CoincidentHeightsWithoutPerturbationAreAnErrorNamingTheInput) {

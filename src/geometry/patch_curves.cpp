@@ -1,6 +1,3 @@
-#include <boost/geometry.hpp>
-#include <boost/geometry/index/rtree.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
@@ -9,17 +6,12 @@
 
 #include "angle_bounds.h"
 #include "contact_vectors.h"
+#include "freespace/geometry/patch_box_index.h"
 #include "freespace/geometry/patch_curve.h"
 
 namespace freespace {
 
 namespace {
-
-namespace bg = boost::geometry;
-namespace bgi = boost::geometry::index;
-using BoxPoint = bg::model::point<double, 3, bg::cs::cartesian>;
-using Box = bg::model::box<BoxPoint>;
-using BoxEntry = std::pair<Box, std::uint32_t>;
 
 bool contains(std::initializer_list<std::uint32_t> set, std::uint32_t vertex) {
   return std::find(set.begin(), set.end(), vertex) != set.end();
@@ -139,10 +131,6 @@ bool isRangeEnd(const AngleSet& range, const AlgebraicAngle& angle, AngleAlgebra
   });
 }
 
-Box toBox(const PatchBox& box) {
-  return {BoxPoint(box.low[0], box.low[1], box.low[2]), BoxPoint(box.high[0], box.high[1], box.high[2])};
-}
-
 /// The key of any SF function: the line's contact kind and input vertices, and the
 /// spiral's vertex and edge, which determine the function up to the line's sign
 /// (kinds 2 to 7, apart from the EF keys' 0 and 1).
@@ -201,18 +189,11 @@ PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t
 }
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> candidatePatchPairs(const std::vector<PatchGeometry>& patches) {
-  std::vector<BoxEntry> entries;
-  for (std::uint32_t i = 0; i < patches.size(); ++i) {
-    for (const PatchBox& box : patchBoxes(patches[i])) entries.emplace_back(toBox(box), i);
-  }
-  const bgi::rtree<BoxEntry, bgi::rstar<16>> tree(entries.begin(), entries.end());
+  const PatchBoxIndex index(patches);
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  std::vector<BoxEntry> found;
-  for (const BoxEntry& entry : entries) {
-    found.clear();
-    tree.query(bgi::intersects(entry.first), std::back_inserter(found));
-    for (const BoxEntry& other : found) {
-      if (entry.second < other.second) pairs.emplace_back(entry.second, other.second);
+  for (const auto& [box, patch] : index.boxes()) {
+    for (std::uint32_t other : index.meeting(box)) {
+      if (patch < other) pairs.emplace_back(patch, other);
     }
   }
   std::sort(pairs.begin(), pairs.end());

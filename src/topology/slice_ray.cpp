@@ -1,21 +1,17 @@
 #include "freespace/topology/slice_ray.h"
 
-#include <boost/geometry.hpp>
-#include <boost/geometry/index/rtree.hpp>
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
+#include "freespace/geometry/patch_box_index.h"
 #include "freespace/topology/slice_pieces.h"
 
 namespace freespace {
 
 namespace {
 
-namespace bg = boost::geometry;
-namespace bgi = boost::geometry::index;
-using BoxPoint = bg::model::point<double, 3, bg::cs::cartesian>;
-using Box = bg::model::box<BoxPoint>;
-using BoxEntry = std::pair<Box, std::uint32_t>;
 using slices::Point;
 
 /// Padding of a query's angle: far more than the error of a rational angle's radians.
@@ -100,17 +96,9 @@ struct IntervalRay {
 struct SliceRays::Impl {
   const Arrangement& arrangement;
   AngleAlgebra& algebra;
-  bgi::rtree<BoxEntry, bgi::rstar<16>> tree;
+  PatchBoxIndex index;
 
-  Impl(const Arrangement& a, AngleAlgebra& alg) : arrangement(a), algebra(alg) {
-    std::vector<BoxEntry> entries;
-    for (std::uint32_t i = 0; i < arrangement.patches.size(); ++i) {
-      for (const PatchBox& box : patchBoxes(arrangement.patches[i])) {
-        entries.emplace_back(Box(BoxPoint(box.low[0], box.low[1], box.low[2]), BoxPoint(box.high[0], box.high[1], box.high[2])), i);
-      }
-    }
-    tree = bgi::rtree<BoxEntry, bgi::rstar<16>>(entries.begin(), entries.end());
-  }
+  Impl(const Arrangement& a, AngleAlgebra& alg) : arrangement(a), algebra(alg), index(a.patches) {}
 
   /// The patches whose boxes meet the box of the ray from `from` along `direction`
   /// (as far as `to` when bounded); the boxes are padded far beyond the rounding of
@@ -119,23 +107,23 @@ struct SliceRays::Impl {
                                         bool bounded) const {
     const double theta = std::remainder(angle.radians(), 2 * M_PI);
     const double huge = std::numeric_limits<double>::max();
-    double low[2], high[2];
+    PatchBox query{};
     for (int axis = 0; axis < 2; ++axis) {
       const double start = from[axis].convert_to<double>(), step = direction[axis].convert_to<double>();
       const double pad = 1e-9 * (1 + std::fabs(start) + std::fabs(step));
       const double end = bounded ? start + step : (direction[axis] > 0 ? huge : (direction[axis] < 0 ? -huge : start));
-      low[axis] = std::min(start, end) - pad;
-      high[axis] = std::max(start, end) + pad;
+      query.low[axis] = std::min(start, end) - pad;
+      query.high[axis] = std::max(start, end) + pad;
     }
-    std::vector<BoxEntry> found;
+    std::vector<std::uint32_t> patches;
     // Boxes stop at theta = +-pi: near it, look on both sides.
     for (const double at : {theta, theta - 2 * M_PI, theta + 2 * M_PI}) {
       if (at < -M_PI - kAnglePad || at > M_PI + kAnglePad) continue;
-      const Box query(BoxPoint(low[0], low[1], at - kAnglePad), BoxPoint(high[0], high[1], at + kAnglePad));
-      tree.query(bgi::intersects(query), std::back_inserter(found));
+      query.low[2] = at - kAnglePad;
+      query.high[2] = at + kAnglePad;
+      const std::vector<std::uint32_t> found = index.meeting(query);
+      patches.insert(patches.end(), found.begin(), found.end());
     }
-    std::vector<std::uint32_t> patches;
-    for (const BoxEntry& entry : found) patches.push_back(entry.second);
     std::sort(patches.begin(), patches.end());
     patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
     return patches;
