@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "freespace/io/text_file.h"
+#include "freespace/io/output_file.h"
 #include "freespace/scenes/scene_generator.h"
 #include "freespace/space/free_space.h"
 
@@ -122,6 +122,6 @@ int main(int argc, char** argv) {
       rows.push_back(measure(scene.name, scene.robot, scene.world));
     }
   }
-  if (!plot.empty()) writeTextFile(plot, true, [&](std::ostream& out) { writePlot(rows, out); });
+  if (!plot.empty()) writeFile(plot, true, [&](std::ostream& out) { writePlot(rows, out); });
   return 0;
 }

@@ -4,6 +4,7 @@
 // truncated, altered, or already present are clear errors naming the file.
 #include <gtest/gtest.h>
 
+#include <boost/crc.hpp>
 #include <chrono>
 #include <fstream>
 #include <random>
@@ -107,4 +108,35 @@ TEST(SavedSpace, BadFilesAreClearErrors) {
   write(other, altered);
   EXPECT_NE(loadError(other).find("checksum"), std::string::npos);
   EXPECT_EQ(loadError(dir.file("missing.fspace")), "cannot open file");
+}
+
+TEST(SavedSpace, AlteredPayloadsWithAValidChecksumLoadOrFailCleanly) {
+  const FreeSpace& built = builtSpace();
+  TempDir dir;
+  const std::string file = dir.file("space.fspace");
+  built.save(file);
+  const std::string bytes = contents(file);
+  const std::size_t payloadStart = bytes.find('\n') + 1 + 12;  // header line, size, CRC-32
+  std::mt19937 random(17);
+  std::uniform_int_distribution<std::size_t> position(payloadStart, bytes.size() - 1);
+  int loaded = 0, rejected = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    std::string altered = bytes;
+    for (int flip = 0; flip < 4; ++flip) altered[position(random)] ^= static_cast<char>(1 + trial % 255);
+    // A valid CRC-32 for the altered payload, little-endian after the size.
+    boost::crc_32_type crc;
+    crc.process_bytes(altered.data() + payloadStart, altered.size() - payloadStart);
+    for (int i = 0; i < 4; ++i) altered[payloadStart - 4 + i] = static_cast<char>((crc.checksum() >> (8 * i)) & 0xff);
+    const std::string other = dir.file("altered.fspace");
+    write(other, altered);
+    try {
+      FreeSpace::load(other);
+      ++loaded;
+    } catch (const InputError& error) {
+      EXPECT_EQ(error.file(), other);
+      ++rejected;
+    }
+  }
+  EXPECT_EQ(loaded + rejected, 40);
+  std::cout << loaded << " altered files loaded, " << rejected << " rejected\n";
 }

@@ -105,6 +105,9 @@ void addBuildCommand(CLI::App& app) {
     if (!options->save.empty() && !options->force && std::filesystem::exists(options->save, error)) {
       throw InputError(options->save, "already exists (not overwritten)");
     }
+    if (const std::optional<std::string> saved = options->input.savedSpaceFile()) {
+      throw InputError(*saved, "build needs --cfg FILE or ROBOT WORLD, not a saved free space");
+    }
     LoadedProblem loaded;
     const std::unique_ptr<FreeSpace> space = options->input.build(loaded);
     if (!options->save.empty()) space->save(options->save, options->force);

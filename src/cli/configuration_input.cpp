@@ -1,5 +1,6 @@
 #include "configuration_input.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -40,6 +41,9 @@ void ConfigurationInput::addOptions(CLI::App& command) {
 std::vector<Pose2> ConfigurationInput::poses() const {
   if (!batch_.empty()) return readBatch(batch_);
   if (at_.size() != 3) throw CLI::ValidationError("configurations", "give --at X Y THETA or --batch FILE");
+  if (!std::all_of(at_.begin(), at_.end(), [](double value) { return std::isfinite(value); })) {
+    throw CLI::ValidationError("--at", "expected three finite numbers X Y THETA");
+  }
   return {{at_[0], at_[1], at_[2]}};
 }
 

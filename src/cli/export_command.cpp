@@ -4,7 +4,7 @@
 #include "commands.h"
 #include "free_space_input.h"
 #include "freespace/exports/boundary_ply.h"
-#include "freespace/io/text_file.h"
+#include "freespace/io/output_file.h"
 
 namespace freespace::cli {
 
@@ -29,7 +29,7 @@ void addExportCommand(CLI::App& app) {
     const std::unique_ptr<FreeSpace> space = options->input.build(loaded);
     BoundaryPlyOptions ply;
     ply.tolerance = options->tolerance;
-    writeTextFile(options->ply, options->force, [&](std::ostream& out) { writeBoundaryPly(*space, ply, out); });
+    writeFile(options->ply, options->force, [&](std::ostream& out) { writeBoundaryPly(*space, ply, out); });
     std::cout << options->ply << ": boundaries of " << space->cellCount() << " free cells\n";
   });
 }

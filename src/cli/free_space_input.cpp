@@ -39,7 +39,11 @@ std::unique_ptr<FreeSpace> FreeSpaceInput::build(LoadedProblem& loaded) const {
   if (isatty(STDERR_FILENO)) {
     options.progress = [](const std::string& stage) { std::cerr << "building: " << stage << "...\n"; };
   }
-  return std::make_unique<FreeSpace>(loaded.robot, loaded.world, options);
+  auto space = std::make_unique<FreeSpace>(loaded.robot, loaded.world, options);
+  // Past the construction nothing polls the request: Ctrl-C stops the tool again.
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  return space;
 }
 
 }  // namespace freespace::cli

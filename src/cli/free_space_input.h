@@ -16,6 +16,7 @@ class FreeSpaceInput {
  public:
   void addOptions(CLI::App& command);
   std::unique_ptr<FreeSpace> build(LoadedProblem& loaded) const;
+  std::optional<std::string> savedSpaceFile() const { return scene_.savedSpaceFile(); }
 
  private:
   SceneInput scene_;

@@ -1,10 +1,12 @@
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <memory>
 
 #include "commands.h"
 #include "free_space_input.h"
 #include "freespace/exports/slice_svg.h"
-#include "freespace/io/text_file.h"
+#include "freespace/io/output_file.h"
 
 namespace freespace::cli {
 
@@ -28,13 +30,16 @@ void addSliceCommand(CLI::App& app) {
       ->check(CLI::Range(8, 4000));
   command->add_flag("--force", options->force, "overwrite an existing output file");
   command->callback([options]() {
+    const bool finite = std::isfinite(options->theta) &&
+                        std::all_of(options->robotAt.begin(), options->robotAt.end(), [](double v) { return std::isfinite(v); });
+    if (!finite) throw CLI::ValidationError("slice", "--theta and --robot-at need finite numbers");
     LoadedProblem loaded;
     const std::unique_ptr<FreeSpace> space = options->input.build(loaded);
     SliceSvgOptions slice;
     slice.theta = options->theta;
     slice.resolution = options->resolution;
     if (options->robotAt.size() == 2) slice.robotAt = std::array<double, 2>{options->robotAt[0], options->robotAt[1]};
-    writeTextFile(options->svg, options->force, [&](std::ostream& out) { writeSliceSvg(*space, slice, out); });
+    writeFile(options->svg, options->force, [&](std::ostream& out) { writeSliceSvg(*space, slice, out); });
     std::cout << options->svg << ": slice at theta " << options->theta << ", " << space->cellCount()
               << " free cells\n";
   });

@@ -9,6 +9,9 @@ namespace freespace {
 
 namespace {
 
+/// At most this many angles per slab, whatever the tolerance.
+constexpr int kMostSteps = 4096;
+
 struct Vertex {
   double x, y, z;
   std::uint32_t cell;
@@ -75,7 +78,7 @@ void writeBoundaryPly(const FreeSpace& space, const BoundaryPlyOptions& options,
   for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
     for (const PatchSlab& slab : arrangement.subdivisions[patch].slabs) {
       const auto [from, to] = anglesOf(slab);
-      const int steps = std::max(1, static_cast<int>(std::ceil((to - from) / step)));
+      const int steps = static_cast<int>(std::clamp(std::ceil((to - from) / step), 1.0, double{kMostSteps}));
       const PieceSampler sampler{arrangement, patch, slab};
       for (std::size_t gap = 0; gap < slab.faces.size(); ++gap) {
         const std::optional<std::uint32_t> cell = space.cellOfSubFace({patch, slab.faces[gap]});

@@ -16,7 +16,7 @@
 
 #include "file_extension.h"
 #include "freespace/input_error.h"
-#include "freespace/io/text_file.h"
+#include "freespace/io/output_file.h"
 
 namespace freespace {
 namespace {
@@ -115,9 +115,9 @@ void writeMesh(const Mesh& mesh, const std::string& path, bool overwrite) {
   if (!overwrite && std::filesystem::exists(path, error)) throw InputError(path, "already exists (not overwritten)");
   const std::string extension = detail::lowercaseExtension(path);
   if (extension == ".vtk") {
-    writeTextFile(path, true, [&](std::ostream& out) { writeVtk(mesh, out); });
+    writeFile(path, true, [&](std::ostream& out) { writeVtk(mesh, out); });
   } else if (extension == ".off") {
-    writeTextFile(path, true, [&](std::ostream& out) { writeOff(mesh, out); });
+    writeFile(path, true, [&](std::ostream& out) { writeOff(mesh, out); });
   } else if (const std::string format = assimpFormat(extension); !format.empty()) {
     writeWithAssimp(mesh, path, format);
   } else {

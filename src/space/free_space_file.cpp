@@ -8,6 +8,7 @@
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/crc.hpp>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -15,7 +16,7 @@
 
 #include "free_space_impl.h"
 #include "freespace/input_error.h"
-#include "freespace/io/text_file.h"
+#include "freespace/io/output_file.h"
 #include "saved_space.h"
 
 namespace freespace {
@@ -26,7 +27,22 @@ const std::string kHeader = "freespace saved free space, format ";
 constexpr int kFormatVersion = 1;
 
 std::string text(const Rational& value) { return value.str(); }
-Rational rationalOf(const std::string& value) { return Rational(value); }
+
+/// A rational written by text(): canonical (lowest terms, positive denominator), so
+/// that no zero denominator or unreduced fraction reaches GMP.
+Rational rationalOf(const std::string& value) {
+  if (value.empty() || value.find_first_not_of("-0123456789/") != std::string::npos) {
+    throw std::out_of_range("a number");
+  }
+  const Rational parsed(value);
+  if (boost::multiprecision::denominator(parsed) == 0 || parsed.str() != value) throw std::out_of_range("a number");
+  return parsed;
+}
+
+double finite(double value) {
+  if (!std::isfinite(value)) throw std::out_of_range("a coordinate");
+  return value;
+}
 
 /// Algebraic angles to and from the table of a saved space.
 class AngleTable {
@@ -58,6 +74,9 @@ class AngleTable {
   AlgebraicAngle angle(std::uint32_t index) {
     const saved::Angle& stored = space_.angles.at(index);
     const IsolatingInterval root{rationalOf(stored.lo), rationalOf(stored.hi)};
+    if ((stored.chart != 0 && stored.chart != 1) || root.hi < root.lo || stored.index < -1) {
+      throw std::out_of_range("an angle");
+    }
     if (stored.function < 0) {
       if (root.lo != root.hi) throw std::out_of_range("a rational angle with an interval");
       return AlgebraicAngle::rational(stored.chart, root.lo);
@@ -137,7 +156,9 @@ Mesh meshOf(const saved::Mesh& stored, const std::string& path) {
 }
 
 void pushPoint(std::vector<double>& out, const Point3& p) { out.insert(out.end(), {p.x(), p.y(), p.z()}); }
-Point3 pointAt(const std::vector<double>& in, std::size_t i) { return {in.at(3 * i), in.at(3 * i + 1), in.at(3 * i + 2)}; }
+Point3 pointAt(const std::vector<double>& in, std::size_t i) {
+  return {finite(in.at(3 * i)), finite(in.at(3 * i + 1)), finite(in.at(3 * i + 2))};
+}
 
 saved::Patch savedPatch(const PatchGeometry& patch, AngleTable& angles) {
   saved::Patch stored;
@@ -267,6 +288,22 @@ saved::Space savedSpace(const PerturbedMeshes& meshes, const Arrangement& arrang
   return space;
 }
 
+/// The header's integers are little-endian whatever the machine (the payload is a
+/// Boost binary archive: files are for machines of one architecture).
+void writeLittleEndian(std::ostream& out, std::uint64_t value, int bytes) {
+  for (int i = 0; i < bytes; ++i) out.put(static_cast<char>((value >> (8 * i)) & 0xff));
+}
+
+std::optional<std::uint64_t> readLittleEndian(std::istream& in, int bytes) {
+  std::uint64_t value = 0;
+  for (int i = 0; i < bytes; ++i) {
+    const int byte = in.get();
+    if (byte == std::char_traits<char>::eof()) return std::nullopt;
+    value |= static_cast<std::uint64_t>(byte) << (8 * i);
+  }
+  return value;
+}
+
 std::uint32_t checksum(const std::string& payload) {
   boost::crc_32_type crc;
   crc.process_bytes(payload.data(), payload.size());
@@ -285,15 +322,20 @@ std::string readPayload(const std::string& path) {
     throw InputError(path, "saved free space of format " + version + "; this build reads format " +
                                std::to_string(kFormatVersion));
   }
-  std::uint64_t size = 0;
-  std::uint32_t crc = 0;
-  in.read(reinterpret_cast<char*>(&size), sizeof size);
-  in.read(reinterpret_cast<char*>(&crc), sizeof crc);
-  if (!in || size > (std::uint64_t{1} << 40)) throw InputError(path, "damaged: truncated header");
-  std::string payload(size, '\0');
-  in.read(payload.data(), static_cast<std::streamsize>(size));
-  if (!in || in.peek() != std::char_traits<char>::eof()) throw InputError(path, "damaged: wrong length");
-  if (checksum(payload) != crc) throw InputError(path, "damaged: checksum mismatch");
+  const std::optional<std::uint64_t> size = readLittleEndian(in, 8);
+  const std::optional<std::uint64_t> crc = readLittleEndian(in, 4);
+  if (!size || !crc) throw InputError(path, "damaged: truncated header");
+  const std::streamoff start = in.tellg();
+  in.seekg(0, std::ios::end);
+  const std::streamoff end = in.tellg();
+  in.seekg(start);
+  if (start < 0 || end < start || static_cast<std::uint64_t>(end - start) != *size) {
+    throw InputError(path, "damaged: wrong length");
+  }
+  std::string payload(*size, '\0');
+  in.read(payload.data(), static_cast<std::streamsize>(*size));
+  if (!in) throw InputError(path, "damaged: wrong length");
+  if (checksum(payload) != *crc) throw InputError(path, "damaged: checksum mismatch");
   return payload;
 }
 
@@ -305,11 +347,24 @@ void checkConsistency(const Arrangement& arrangement, const std::vector<ShellSid
   for (const PatchCurve& curve : arrangement.curves) {
     if (curve.first >= patches || curve.second >= patches) throw std::out_of_range("a curve's patches");
   }
-  for (const PatchSubdivision& subdivision : arrangement.subdivisions) {
+  for (const PatchOverlap& overlap : arrangement.overlaps) {
+    for (std::uint32_t patch : overlap.patches) {
+      if (patch >= patches) throw std::out_of_range("an overlap's patches");
+    }
+  }
+  for (const PatchVertex& vertex : arrangement.vertices) {
+    for (std::uint32_t patch : vertex.patches) {
+      if (patch >= patches) throw std::out_of_range("a vertex's patches");
+    }
+  }
+  for (std::uint32_t patch = 0; patch < patches; ++patch) {
+    const PatchSubdivision& subdivision = arrangement.subdivisions[patch];
     for (const PatchSlab& slab : subdivision.slabs) {
       if (slab.faces.size() != slab.curves.size() + 1) throw std::out_of_range("a slab's faces");
       for (std::uint32_t curve : slab.curves) {
         if (curve >= arrangement.curves.size()) throw std::out_of_range("a slab's curves");
+        const PatchCurve& c = arrangement.curves[curve];
+        if (c.first != patch && c.second != patch) throw std::out_of_range("a slab's curve of other patches");
       }
       for (std::uint32_t face : slab.faces) {
         if (face >= subdivision.faceCount) throw std::out_of_range("a slab's faces");
@@ -327,8 +382,11 @@ void checkConsistency(const Arrangement& arrangement, const std::vector<ShellSid
     for (const SubFaceId& face : gluing->unmatched) checkFace(face);
   }
   if (sides.size() != cellOfShell.size()) throw std::out_of_range("shells");
-  for (const auto& cell : cellOfShell) {
-    if (cell && *cell >= cellCount) throw std::out_of_range("a shell's cell");
+  for (std::size_t shell = 0; shell < sides.size(); ++shell) {
+    const auto& cell = cellOfShell[shell];
+    if (cell.has_value() != (sides[shell] == ShellSide::Free) || (cell && *cell >= cellCount)) {
+      throw std::out_of_range("a shell's cell");
+    }
   }
 }
 
@@ -345,10 +403,10 @@ void FreeSpace::save(const std::string& path, bool overwrite) const {
   const std::string payload = payloadStream.str();
   const std::uint64_t size = payload.size();
   const std::uint32_t crc = checksum(payload);
-  writeTextFile(path, overwrite, [&](std::ostream& out) {
+  writeFile(path, overwrite, [&](std::ostream& out) {
     out << kHeader << kFormatVersion << '\n';
-    out.write(reinterpret_cast<const char*>(&size), sizeof size);
-    out.write(reinterpret_cast<const char*>(&crc), sizeof crc);
+    writeLittleEndian(out, size, 8);
+    writeLittleEndian(out, crc, 4);
     out.write(payload.data(), static_cast<std::streamsize>(payload.size()));
   });
 }
@@ -426,12 +484,12 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
     for (std::size_t i = 0; i < space.stageNames.size() && i < space.stageSeconds.size(); ++i) {
       impl->stageTimes.push_back({space.stageNames[i], space.stageSeconds[i]});
     }
+    impl->finish();
   } catch (const InputError&) {
     throw;
   } catch (const std::exception& error) {
     throw InputError(path, std::string("inconsistent saved free space: ") + error.what());
   }
-  impl->finish();
   return std::unique_ptr<FreeSpace>(new FreeSpace(std::move(impl)));
 }
 

@@ -20,12 +20,16 @@ struct Leftmost {
   Point point;
 };
 
-/// The smallest distance tried from a shell's leftmost point, relative to its size.
-const Rational kSmallest = [] {
-  Rational smallest(1);
-  for (int i = 0; i < 160; ++i) smallest /= 2;
-  return smallest;
-}();
+/// 2^-bits.
+Rational powerOfHalf(int bits) {
+  Rational value(1);
+  for (int i = 0; i < bits; ++i) value /= 2;
+  return value;
+}
+
+/// The distances tried from a shell's leftmost point, relative to its size.
+const Rational kLargest = powerOfHalf(24);
+const Rational kSmallest = powerOfHalf(200);
 
 bool leftOf(const Point& a, const Point& b) { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); }
 
@@ -67,16 +71,15 @@ class Nesting {
   }
 
  private:
-  /// A rational angle with a double parameter where the shell has a slice: the
-  /// sample of one of its sub-faces' slabs.
+  /// A rational angle where the shell has a slice: the sample of one of its
+  /// sub-faces' slabs.
   AlgebraicAngle firstSample(std::uint32_t shell) const {
     for (const SubFaceId& face : members_[shell]) {
       for (const PatchSlab& slab : arrangement_.subdivisions[face.patch].slabs) {
-        const bool holds = std::find(slab.faces.begin(), slab.faces.end(), face.face) != slab.faces.end();
-        if (holds && slab.sample.lower() == slab.sample.upper()) return slab.sample;
+        if (std::find(slab.faces.begin(), slab.faces.end(), face.face) != slab.faces.end()) return slab.sample;
       }
     }
-    throw std::logic_error("FreeCells: a free shell has no sample angle");
+    throw std::logic_error("FreeCells: a free shell has no slab");
   }
 
   /// The leftmost point of the shell's slice at a rational angle, if it has one.
@@ -110,42 +113,57 @@ class Nesting {
     return *best;
   }
 
-  /// The ray of one shell from a point q up and left of its leftmost point p, at a
-  /// distance that shrinks until a ray from q toward +x tells which side of the
-  /// shell q lies on: q is outside the shell (left of its whole slice), and near p
-  /// the outside is the free cell when the shell is a hole in it (the ray meets the
-  /// shell first, from its free side) and blocked when the shell is its cell's outer
-  /// shell (the ray meets a blocked side first). A hole's ray toward -x from q joins
-  /// it to the shell it meets, whose angle set grows by the ray's angle if it did not
-  /// hold it (that shell is returned, to shoot again).
+  /// Which side of a shell a point just outside it near its leftmost point lies on,
+  /// by the first sub-face a ray from it toward +x meets: the shell itself from its
+  /// free side (the point is in the shell's cell: the shell is a hole in it), or a
+  /// blocked side (the point is blocked: the shell is its cell's outer shell).
+  enum class Outside { Hole, Outer, Unknown };
+
+  Outside outsideAt(std::uint32_t shell, const AlgebraicAngle& angle, const Point& start) const {
+    const RayHit back = rays_.cast(angle, start, +1);
+    if (back.kind != RayHit::Kind::SubFace) return Outside::Unknown;
+    const std::uint32_t seen = arrangement_.shells.shellOf(back.face);
+    if (!back.fromPositiveSide || sides_[seen] != ShellSide::Free) return Outside::Outer;
+    return seen == shell ? Outside::Hole : Outside::Unknown;
+  }
+
+  /// The ray of one shell from a point q up-left (or down-left) of its leftmost point
+  /// p, outside the shell (left of its whole slice): near p the outside is the free
+  /// cell when the shell is a hole in it and blocked when it is its cell's outer
+  /// shell. The answer is taken once two points at distances d and d / 2^16 from p
+  /// agree (far points may see other obstacles), d shrinking from 2^-24 of the
+  /// shell's size. A hole's ray toward -x from the nearer point joins it to the shell
+  /// it meets, whose angle set grows by the ray's angle if it did not hold it (that
+  /// shell is returned, to shoot again).
   std::optional<std::uint32_t> shoot(std::uint32_t shell) {
     const Leftmost from = leftmost(shell);
     const Rational scale = 1 + abs(from.point[0]) + abs(from.point[1]);
-    for (Rational distance = scale / 1024; distance > scale * kSmallest; distance /= 16) {
-     for (int up : {1, -1}) {
-      const Point start{from.point[0] - distance, from.point[1] + up * distance};
-      const RayHit back = rays_.cast(from.angle, start, +1);
-      if (back.kind != RayHit::Kind::SubFace) continue;
-      const std::uint32_t seen = arrangement_.shells.shellOf(back.face);
-      if (!back.fromPositiveSide || sides_[seen] != ShellSide::Free) return std::nullopt;  // an outer shell
-      if (seen != shell) continue;
-      const RayHit hit = rays_.cast(from.angle, start, -1);
-      if (hit.kind == RayHit::Kind::Nothing) {
-        sets_.union_set(std::size_t{shell}, sides_.size());
-        return std::nullopt;
+    const auto near = [&](const Rational& distance, int up) {
+      return Point{from.point[0] - distance, from.point[1] + up * distance};
+    };
+    for (Rational distance = scale * kLargest; distance > scale * kSmallest; distance /= 256) {
+      for (int up : {1, -1}) {
+        const Outside far = outsideAt(shell, from.angle, near(distance, up));
+        const Point start = near(distance / 65536, up);
+        if (far == Outside::Unknown || outsideAt(shell, from.angle, start) != far) continue;
+        if (far == Outside::Outer) return std::nullopt;
+        const RayHit hit = rays_.cast(from.angle, start, -1);
+        if (hit.kind == RayHit::Kind::Nothing) {
+          sets_.union_set(std::size_t{shell}, sides_.size());
+          return std::nullopt;
+        }
+        if (hit.kind != RayHit::Kind::SubFace) continue;
+        const std::uint32_t other = arrangement_.shells.shellOf(hit.face);
+        if (!hit.fromPositiveSide || sides_[other] != ShellSide::Free) {
+          throw std::logic_error("FreeCells: a ray in free space meets a shell that bounds no free cell");
+        }
+        sets_.union_set(std::size_t{shell}, std::size_t{other});
+        const bool known = std::any_of(angles_[other].begin(), angles_[other].end(),
+                                       [&](const AlgebraicAngle& a) { return algebra_.compare(a, from.angle) == 0; });
+        if (known) return std::nullopt;
+        angles_[other].push_back(from.angle);
+        return other;
       }
-      if (hit.kind != RayHit::Kind::SubFace) continue;
-      const std::uint32_t other = arrangement_.shells.shellOf(hit.face);
-      if (!hit.fromPositiveSide || sides_[other] != ShellSide::Free) {
-        throw std::logic_error("FreeCells: a ray in free space meets a shell that bounds no free cell");
-      }
-      sets_.union_set(std::size_t{shell}, std::size_t{other});
-      const bool known = std::any_of(angles_[other].begin(), angles_[other].end(),
-                                     [&](const AlgebraicAngle& a) { return algebra_.compare(a, from.angle) == 0; });
-      if (known) return std::nullopt;
-      angles_[other].push_back(from.angle);
-      return other;
-     }
     }
     throw std::runtime_error("FreeCells: no ray could be shot from a shell's leftmost point");
   }

@@ -34,16 +34,16 @@ class GlueList {
 /// counterclockwise order, for each of which `facesLeft` tells whether its positive
 /// side faces the sector counterclockwise after it: the sector between ray a and the
 /// next ray b is faced by a when a faces left and by b when b does not; two facing
-/// sides are glued, one alone is unmatched.
-template <class Ray, class FacesLeft, class FaceOf>
+/// sides are glued (seen at the angle `atOf(a, b)`), one alone is unmatched.
+template <class Ray, class FacesLeft, class FaceOf, class AtOf>
 void glueAround(const std::vector<Ray>& counterclockwise, const FacesLeft& facesLeft, const FaceOf& faceOf,
-                GluedEdge edge, const AlgebraicAngle& at, GlueList& glues) {
+                GluedEdge edge, const AtOf& atOf, GlueList& glues) {
   const std::size_t count = counterclockwise.size();
   for (std::size_t i = 0; i < count; ++i) {
     const Ray &a = counterclockwise[i], &b = counterclockwise[(i + 1) % count];
     const bool aFaces = facesLeft(a), bFaces = !facesLeft(b);
     if (aFaces && bFaces) {
-      glues.add(faceOf(a, true), faceOf(b, false), edge, at);
+      glues.add(faceOf(a, true), faceOf(b, false), edge, atOf(a, b));
     } else if (aFaces) {
       glues.addUnmatched(faceOf(a, true));
     } else if (bFaces) {

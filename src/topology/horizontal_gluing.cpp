@@ -142,8 +142,8 @@ class EdgeGluer {
   }
 
  private:
-  /// For each side of the edge (index 1 below), an angle inside every slab meeting
-  /// the edge there, if any does.
+  /// For each side of the edge (index 1 below), if any slab meets the edge there, an
+  /// angle such that the open arc from it to the edge lies inside every such slab.
   std::array<std::optional<AlgebraicAngle>, 2> boundsOf(const HorizontalEdge& edge,
                                                         const std::vector<const PatchSlab*>& slabs) {
     std::array<std::optional<AlgebraicAngle>, 2> bounds;
@@ -164,10 +164,11 @@ class EdgeGluer {
   std::vector<SideAtAngle> sidesNextTo(const HorizontalEdge& edge, const std::vector<const PatchSlab*>& slabs,
                                        const std::array<std::optional<AlgebraicAngle>, 2>& bounds, int bits) {
     std::array<std::optional<std::pair<Rational, Rational>>, 2> rotations;
+    near_ = {};
     for (int below = 1; below >= 0; --below) {
       if (!bounds[below]) continue;
-      near_ = algebra_.rationalNextTo(edge.angle, *bounds[below], below == 1, bits);
-      rotations[below] = exactCosSin(near_);
+      near_[below] = algebra_.rationalNextTo(edge.angle, *bounds[below], below == 1, bits);
+      rotations[below] = exactCosSin(*near_[below]);
     }
     std::vector<SideAtAngle> sides;
     for (std::size_t i = 0; i < edge.sides.size(); ++i) {
@@ -327,7 +328,9 @@ class EdgeGluer {
     // +s; a ray up when it is -s.
     gluing::glueAround(
         rays, [](const Ray& ray) { return ray.below == (ray.orientation > 0); },
-        [](const Ray& ray, bool) { return ray.face; }, GluedEdge::Horizontal, near_, glues_);
+        [](const Ray& ray, bool) { return ray.face; }, GluedEdge::Horizontal,
+        [&](const Ray& a, const Ray& b) { return a.below && b.below ? *near_[1] : near_[0] ? *near_[0] : *near_[1]; },
+        glues_);
   }
 
   const std::vector<PatchGeometry>& patches_;
@@ -336,8 +339,9 @@ class EdgeGluer {
   AngleAlgebra& algebra_;
   gluing::GlueList& glues_;
   std::vector<std::uint32_t> onEdge_;
-  /// The angle the last glues were read at (above the edge if any side is there).
-  AlgebraicAngle near_ = AlgebraicAngle::rational(0, 0.0);
+  /// The angles the sides of the edge are read at, above (index 0) and below; a glue
+  /// of two sides below is seen below, any other above.
+  std::array<std::optional<AlgebraicAngle>, 2> near_;
   Point normal_;
 };
 

@@ -6,11 +6,11 @@
 namespace freespace {
 
 Shells::Shells(const std::vector<PatchSubdivision>& subdivisions, const std::vector<const SubFaceGluing*>& gluings) {
-  for (std::uint32_t patch = 0; patch < subdivisions.size(); ++patch) {
-    firstFace_.push_back(static_cast<std::uint32_t>(faceAt_.size()));
-    for (std::uint32_t face = 0; face < subdivisions[patch].faceCount; ++face) faceAt_.push_back({patch, face});
+  std::size_t count = 0;
+  for (const PatchSubdivision& subdivision : subdivisions) {
+    firstFace_.push_back(static_cast<std::uint32_t>(count));
+    count += subdivision.faceCount;
   }
-  const std::size_t count = faceAt_.size();
   std::vector<std::size_t> rank(count), parent(count);
   boost::disjoint_sets<std::size_t*, std::size_t*> sets(rank.data(), parent.data());
   for (std::size_t i = 0; i < count; ++i) sets.make_set(i);
@@ -27,14 +27,6 @@ Shells::Shells(const std::vector<PatchSubdivision>& subdivisions, const std::vec
   for (const SubFaceGluing* gluing : gluings) {
     for (const SubFaceId& face : gluing->unmatched) closed_[shellOfFace_[index(face)]] = false;
   }
-}
-
-std::vector<SubFaceId> Shells::faces(std::uint32_t shell) const {
-  std::vector<SubFaceId> members;
-  for (std::size_t i = 0; i < faceAt_.size(); ++i) {
-    if (shellOfFace_[i] == shell) members.push_back(faceAt_[i]);
-  }
-  return members;
 }
 
 }  // namespace freespace

@@ -75,15 +75,19 @@ void sortCounterclockwise(std::vector<Spoke>& spokes, const std::vector<PatchGeo
     HalfAngle{angle.chart(), angle.lower()}.cosSin(cosine, sine);
     std::vector<std::array<Interval, 2>> directions;
     for (const Spoke& spoke : spokes) directions.push_back(directionOf(patches[spoke.patch], spoke.end, cosine, sine));
-    std::vector<std::size_t> order(spokes.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    // Every pair certain first: a comparison that may be wrong must not reach the sort.
     bool certain = true;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      const std::optional<bool> result = certainlyBefore(directions[a], directions[b]);
-      certain = certain && result.has_value();
-      return result.value_or(a < b);
-    });
+    for (std::size_t a = 0; a < spokes.size() && certain; ++a) {
+      for (std::size_t b = a + 1; b < spokes.size() && certain; ++b) {
+        certain = certainlyBefore(directions[a], directions[b]).has_value();
+      }
+    }
     if (certain) {
+      std::vector<std::size_t> order(spokes.size());
+      for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+      std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return a != b && *certainlyBefore(directions[a], directions[b]);
+      });
       std::vector<Spoke> sorted;
       for (std::size_t i : order) sorted.push_back(spokes[i]);
       spokes = std::move(sorted);
@@ -178,8 +182,8 @@ SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
       // 0 -> end 1, PatchSegment) faces it when the spiral is the spoke's end 1.
       gluing::glueAround(
           spokes, [](const Spoke& spoke) { return spoke.end == 1; },
-          [](const Spoke& spoke, bool) { return SubFaceId{spoke.patch, spoke.face}; }, GluedEdge::Spiral, sample,
-          glues);
+          [](const Spoke& spoke, bool) { return SubFaceId{spoke.patch, spoke.face}; }, GluedEdge::Spiral,
+          [&](const Spoke&, const Spoke&) { return sample; }, glues);
     }
   }
   return glues.take();

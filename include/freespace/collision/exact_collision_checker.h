@@ -11,6 +11,12 @@
 
 namespace freespace {
 
+/// A configuration given exactly: the rotation by a rational point (cosine, sine)
+/// of the unit circle, then the translation by (x, y).
+struct ExactPose {
+  Rational cosine, sine, x, y;
+};
+
 /// Decides exactly whether robot A placed at (x, y, theta) and environment B
 /// intersect. Closed bodies: touching counts as intersecting, and so does a
 /// component of one body lying strictly inside a component of the other (which
@@ -23,12 +29,6 @@ namespace freespace {
 /// (Boost.Geometry R-tree) over B's triangles limits the pairs tested.
 ///
 /// Thread safe: queries are const and use no shared scratch memory.
-/// A configuration given exactly: the rotation by a rational point (cosine, sine)
-/// of the unit circle, then the translation by (x, y).
-struct ExactPose {
-  Rational cosine, sine, x, y;
-};
-
 class ExactCollisionChecker {
  public:
   ExactCollisionChecker(const Mesh& robot, const Mesh& world);

@@ -19,14 +19,11 @@ class Shells {
   std::uint32_t shellOf(SubFaceId face) const { return shellOfFace_[firstFace_[face.patch] + face.face]; }
   std::size_t count() const { return closed_.size(); }
   bool closed(std::uint32_t shell) const { return closed_[shell]; }
-  /// The sub-faces of a shell.
-  std::vector<SubFaceId> faces(std::uint32_t shell) const;
 
  private:
   std::vector<std::uint32_t> firstFace_;
   std::vector<std::uint32_t> shellOfFace_;
   std::vector<bool> closed_;
-  std::vector<SubFaceId> faceAt_;
 };
 
 }  // namespace freespace

@@ -25,7 +25,6 @@ struct RayHit {
   };
   Kind kind = Kind::Nothing;
   SubFaceId face;
-  std::array<Rational, 2> point;
   /// Whether the ray arrives from the sub-face's positive (free) side.
   bool fromPositiveSide = false;
 };
