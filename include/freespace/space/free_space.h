@@ -51,7 +51,8 @@ class FreeSpace {
   FreeSpace& operator=(const FreeSpace&) = delete;
 
   /// Saves the built structure (perturbed meshes, arrangement, shells' sides, cells)
-  /// to a versioned file with a checksum (Boost.Serialization binary archive inside).
+  /// to a versioned file with a checksum (a Boost.Serialization binary archive
+  /// inside: for machines of one architecture).
   /// Refuses (InputError) to replace an existing file unless `overwrite`.
   void save(const std::string& path, bool overwrite = false) const;
   /// Reads a saved free space back, without rebuilding; its statistics are empty. A
