@@ -464,9 +464,7 @@ AlgebraicAngle AngleAlgebra::rationalNextTo(const AlgebraicAngle& angle, const A
   const bool boundWraps = before ? compare(bound, angle) > 0 : compare(angle, bound) > 0;
   const AngleInterval between = before ? AngleInterval{bound, angle, boundWraps} : AngleInterval{angle, bound, boundWraps};
   ExactPosition position = exactPosition(angle);
-  Rational gap(1);
-  for (int bit = 0; bit < bits; ++bit) gap /= 2;
-  for (;; gap /= 2) {
+  for (Rational gap = powerOfHalf(static_cast<unsigned>(bits));; gap /= 2) {
     while (position.u.hi - position.u.lo >= gap / 2) bisectPosition(position, chartOffset(angle.chart()));
     // The root is in [lo, hi], narrower than gap / 2: a step of gap / 2 past the
     // near end is less than gap from it and not on it.

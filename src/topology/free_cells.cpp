@@ -20,13 +20,6 @@ struct Leftmost {
   Point point;
 };
 
-/// 2^-bits.
-Rational powerOfHalf(int bits) {
-  Rational value(1);
-  for (int i = 0; i < bits; ++i) value /= 2;
-  return value;
-}
-
 /// The distances tried from a shell's leftmost point, relative to its size.
 const Rational kLargest = powerOfHalf(24);
 const Rational kSmallest = powerOfHalf(200);

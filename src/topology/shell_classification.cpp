@@ -12,11 +12,7 @@ namespace {
 using slices::Point;
 
 /// The smallest distance tried from a sub-face, relative to its size.
-const Rational kSmallest = [] {
-  Rational smallest(1);
-  for (int i = 0; i < 200; ++i) smallest /= 2;
-  return smallest;
-}();
+const Rational kSmallest = powerOfHalf(200);
 
 std::optional<SubFaceProbe> probeInSlab(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
                                         const PatchSlab& slab, std::size_t gap) {
