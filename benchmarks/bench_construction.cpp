@@ -7,8 +7,6 @@
 // plus sub-faces).
 //
 // Usage: bench_construction [--rooms MAX] [--plot FILE.svg] [SCENE ...]
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -32,12 +30,6 @@ struct Row {
   double seconds;
 };
 
-double peakMegabytes() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;
-}
-
 Row measure(const std::string& name, const Mesh& robot, const Mesh& world) {
   const auto start = std::chrono::steady_clock::now();
   const FreeSpace space(robot, world);
@@ -50,7 +42,7 @@ Row measure(const std::string& name, const Mesh& robot, const Mesh& world) {
   for (const StageTime& stage : space.stageTimes()) std::cout << stage.stage << " " << stage.seconds << ", ";
   std::cout << "); " << arrangement.patches.size() << " patches, " << arrangement.curves.size() << " curves, "
             << arrangement.vertices.size() << " vertices, " << subFaces << " sub-faces, " << space.shellCount()
-            << " shells, " << space.cellCount() << " free cells; peak " << peakMegabytes() << " MB; double intervals "
+            << " shells, " << space.cellCount() << " free cells; peak " << peakMemoryMegabytes() << " MB; double intervals "
             << 100 * space.statistics().doubleIntervalFraction() << "%" << std::endl;
   return {name, robot.triangles().size(), world.triangles().size(), arrangement.vertices.size() + subFaces, seconds};
 }

@@ -1,5 +1,3 @@
-#include <sys/resource.h>
-
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -39,12 +37,6 @@ nlohmann::json cellsJson(const FreeSpace& space) {
     cells.push_back(entry);
   }
   return cells;
-}
-
-double peakMemoryMegabytes() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in kilobytes on Linux
 }
 
 nlohmann::json statisticsJson(const FreeSpace& space) {

@@ -1,5 +1,7 @@
 #include "freespace/space/free_space.h"
 
+#include <sys/resource.h>
+
 #include <chrono>
 #include <stdexcept>
 
@@ -61,6 +63,12 @@ FreeSpace::Impl::Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptio
   cells = clock.run("cells", [&] {
     return std::make_unique<FreeCells>(arrangement, *rays, sides, algebra, cancellation);
   });
+}
+
+double peakMemoryMegabytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // ru_maxrss is in kilobytes on Linux
 }
 
 FreeSpace::FreeSpace(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options)

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "freespace/geometry/patch_vertex.h"
+#include "freespace/topology/slice_pieces.h"
 #include "freespace/topology/sub_face_gluing.h"
 #include "gluing_parts.h"
 
@@ -10,7 +11,9 @@ namespace freespace {
 
 namespace {
 
-using Point = std::array<Rational, 2>;
+using slices::ExactSegment;
+using slices::Point;
+using slices::segmentAt;
 
 /// How near the angles the cross-sections are read at lie to a horizontal edge (one
 /// on each side, inside the slabs meeting the edge there): within 2^-kBits in the
@@ -63,20 +66,6 @@ std::vector<HorizontalEdge> horizontalEdges(const std::vector<PatchGeometry>& pa
     for (HorizontalEdge& edge : ofFunction) edges.push_back(std::move(edge));
   }
   return edges;
-}
-
-/// A patch's segment and line at a rational angle.
-struct ExactSegment {
-  Point end0, end1;
-  Rational nx, ny, w;
-
-  Rational valueAt(const Point& p) const { return nx * p[0] + ny * p[1] + w; }
-};
-
-ExactSegment segmentAt(const PatchGeometry& patch, const Rational& cosine, const Rational& sine) {
-  const LineAtAngle<Rational> line = lineAtAngle(lineOf<Rational>(patch.line), cosine, sine);
-  return {spiralPoint(spiralOf<Rational>(patch.ends[0]), cosine, sine),
-          spiralPoint(spiralOf<Rational>(patch.ends[1]), cosine, sine), line.nx, line.ny, line.w};
 }
 
 /// Names a point of the edge that the sides' segments and curves reach from both
@@ -310,7 +299,7 @@ class EdgeGluer {
       const Rational lambda = (at - side.position0) / (side.position1 - side.position0);
       if (lambda <= 0 || lambda >= 1) continue;
       const ExactSegment& s = side.segment;
-      const Point p{s.end0[0] + lambda * (s.end1[0] - s.end0[0]), s.end0[1] + lambda * (s.end1[1] - s.end0[1])};
+      const Point p = s.at(lambda);
       const auto gap = std::upper_bound(side.crossings.begin(), side.crossings.end(), lambda) - side.crossings.begin();
       rays.push_back({side.side.below, p[0] * normal_[0] + p[1] * normal_[1], side.orientation,
                       {side.side.patch, side.slab->faces[static_cast<std::size_t>(gap)]}});

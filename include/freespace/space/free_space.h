@@ -39,6 +39,10 @@ struct StageTime {
   double seconds = 0;
 };
 
+/// The largest resident memory of this process so far, in megabytes (for the
+/// statistics of a construction).
+double peakMemoryMegabytes();
+
 /// The exact free space of a robot translating and turning among a fixed
 /// environment (DESIGN.md sections 3 to 6), built once from the two meshes: the
 /// perturbed meshes, the patches and their arrangement, its shells classified by
