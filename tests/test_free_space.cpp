@@ -101,5 +101,5 @@ TEST(FreeSpaceConstruction, AnnouncesItsStagesAndStopsSoonAfterCancellation) {
   ASSERT_GE(stages.size(), 3u);
   EXPECT_EQ(stages[0], "perturb");
   EXPECT_EQ(stages[1], "patches");
-  EXPECT_EQ(stages[2], "arrangement");
+  EXPECT_EQ(stages[2], "curves");
 }

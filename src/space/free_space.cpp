@@ -2,7 +2,6 @@
 
 #include <sys/resource.h>
 
-#include <chrono>
 #include <stdexcept>
 
 #include "free_space_impl.h"
@@ -11,35 +10,8 @@
 
 namespace freespace {
 
-namespace {
-
-/// Times the stages of a construction and announces each.
-class StageClock {
- public:
-  StageClock(std::vector<StageTime>& times, const std::function<void(const std::string&)>& progress,
-             const Cancellation& cancellation)
-      : times_(times), progress_(progress), cancellation_(cancellation) {}
-
-  template <class Work>
-  auto run(const std::string& stage, Work&& work) {
-    cancellation_.check();
-    if (progress_) progress_(stage);
-    const auto start = std::chrono::steady_clock::now();
-    auto result = work();
-    times_.push_back({stage, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
-    return result;
-  }
-
- private:
-  std::vector<StageTime>& times_;
-  const std::function<void(const std::string&)>& progress_;
-  const Cancellation& cancellation_;
-};
-
-}  // namespace
-
 FreeSpace::Impl::Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options) {
-  StageClock clock(stageTimes, options.progress, options.cancellation);
+  StageClock clock(options.progress, options.cancellation);
   meshes = clock.run("perturb", [&] {
     PerturbedMeshes perturbed = perturbMeshes(robot, world, options.perturbation);
     requireDistinctHeights(perturbed.robot, perturbed.world, options.sourceName);
@@ -53,16 +25,15 @@ FreeSpace::Impl::Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptio
     return patchGeometries(patches, meshes.robot, robotTopology, meshes.world, worldTopology, statistics);
   });
   const Cancellation& cancellation = options.cancellation;
-  arrangement = clock.run("arrangement", [&] {
-    return buildArrangement(std::move(geometries), algebra, cancellation, options.progress);
-  });
-  sides = clock.run("shells", [&] {
+  arrangement = buildArrangement(std::move(geometries), algebra, clock);
+  sides = clock.run("classification", [&] {
     finish();
     return classifyShells(arrangement, *rays, *collision, cancellation);
   });
   cells = clock.run("cells", [&] {
     return std::make_unique<FreeCells>(arrangement, *rays, sides, algebra, cancellation);
   });
+  stageTimes = clock.times();
 }
 
 double peakMemoryMegabytes() {

@@ -2,30 +2,34 @@
 
 namespace freespace {
 
-Arrangement buildArrangement(std::vector<PatchGeometry> patches, AngleAlgebra& algebra,
-                             const Cancellation& cancellation,
-                             const std::function<void(const std::string& stage)>& progress) {
-  const auto announce = [&](const char* stage) {
-    cancellation.check();
-    if (progress) progress(stage);
-  };
+Arrangement buildArrangement(std::vector<PatchGeometry> patches, AngleAlgebra& algebra, StageClock& clock) {
+  const Cancellation& cancellation = clock.cancellation();
   Arrangement a;
   a.patches = std::move(patches);
-  announce("curves");
-  a.curves = patchCurves(a.patches, algebra, cancellation);
-  announce("overlaps");
-  a.overlaps = patchOverlaps(a.patches, algebra);
-  announce("vertices");
-  a.vertices = patchVertices(a.patches, a.curves, a.overlaps, algebra, cancellation);
-  announce("subdivision");
-  a.subdivisions = patchSubdivisions(a.patches, a.curves, a.vertices, a.overlaps, algebra, cancellation);
-  announce("gluing");
-  a.acrossCurves = glueAcrossCurves(a.patches, a.curves, a.subdivisions, algebra, cancellation);
-  a.aroundSpirals = glueAroundSpirals(a.patches, a.subdivisions, algebra, cancellation);
-  a.acrossHorizontalEdges =
-      glueAcrossHorizontalEdges(a.patches, a.curves, a.overlaps, a.subdivisions, algebra, cancellation);
-  a.shells = Shells(a.subdivisions, {&a.acrossCurves, &a.aroundSpirals, &a.acrossHorizontalEdges});
+  a.curves = clock.run("curves", [&] { return patchCurves(a.patches, algebra, cancellation); });
+  a.overlaps = clock.run("overlaps", [&] { return patchOverlaps(a.patches, algebra); });
+  a.vertices =
+      clock.run("vertices", [&] { return patchVertices(a.patches, a.curves, a.overlaps, algebra, cancellation); });
+  a.subdivisions = clock.run("subdivision", [&] {
+    return patchSubdivisions(a.patches, a.curves, a.vertices, a.overlaps, algebra, cancellation);
+  });
+  a.acrossCurves = clock.run("gluing_curves", [&] {
+    return glueAcrossCurves(a.patches, a.curves, a.subdivisions, algebra, cancellation);
+  });
+  a.aroundSpirals =
+      clock.run("gluing_spirals", [&] { return glueAroundSpirals(a.patches, a.subdivisions, algebra, cancellation); });
+  a.acrossHorizontalEdges = clock.run("gluing_horizontal", [&] {
+    return glueAcrossHorizontalEdges(a.patches, a.curves, a.overlaps, a.subdivisions, algebra, cancellation);
+  });
+  a.shells = clock.run("shells", [&] {
+    return Shells(a.subdivisions, {&a.acrossCurves, &a.aroundSpirals, &a.acrossHorizontalEdges});
+  });
   return a;
+}
+
+Arrangement buildArrangement(std::vector<PatchGeometry> patches, AngleAlgebra& algebra) {
+  StageClock clock;
+  return buildArrangement(std::move(patches), algebra, clock);
 }
 
 }  // namespace freespace

@@ -9,6 +9,7 @@
 
 #include "freespace/geometry/cancellation.h"
 #include "freespace/geometry/perturbed_meshes.h"
+#include "freespace/geometry/stage_clock.h"
 #include "freespace/numbers/predicate_statistics.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/topology/arrangement.h"
@@ -32,11 +33,6 @@ struct FreeSpaceOptions {
 struct Location {
   bool free = false;
   std::uint32_t cell = 0;
-};
-
-struct StageTime {
-  std::string stage;
-  double seconds = 0;
 };
 
 /// The largest resident memory of this process so far, in megabytes (for the

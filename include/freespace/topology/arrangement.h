@@ -1,13 +1,12 @@
 #pragma once
 
-#include <functional>
-#include <string>
 #include <vector>
 
 #include "freespace/geometry/patch_curve.h"
 #include "freespace/geometry/patch_geometry.h"
 #include "freespace/geometry/patch_subdivision.h"
 #include "freespace/geometry/patch_vertex.h"
+#include "freespace/geometry/stage_clock.h"
 #include "freespace/topology/shells.h"
 #include "freespace/topology/sub_face_gluing.h"
 
@@ -28,9 +27,11 @@ struct Arrangement {
   Shells shells;
 };
 
-/// Builds it stage by stage, announcing each to `progress` (when set).
-Arrangement buildArrangement(std::vector<PatchGeometry> patches, AngleAlgebra& algebra,
-                             const Cancellation& cancellation = {},
-                             const std::function<void(const std::string& stage)>& progress = {});
+/// Builds it stage by stage (curves, overlaps, vertices, subdivision, the three
+/// gluings, shells), each run and timed by `clock`.
+Arrangement buildArrangement(std::vector<PatchGeometry> patches, AngleAlgebra& algebra, StageClock& clock);
+
+/// The same without progress, cancellation or stage times.
+Arrangement buildArrangement(std::vector<PatchGeometry> patches, AngleAlgebra& algebra);
 
 }  // namespace freespace
