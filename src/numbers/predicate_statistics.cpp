@@ -16,6 +16,7 @@ const char* predicateKindName(PredicateKind kind) {
     case PredicateKind::SignAtRoot: return "sign_at_root";
     case PredicateKind::RootOrder: return "root_order";
     case PredicateKind::CrossingOrder: return "crossing_order";
+    case PredicateKind::EdgeCrossSection: return "edge_cross_section";
     case PredicateKind::Other: return "other";
     case PredicateKind::Count: break;
   }

@@ -6,6 +6,7 @@
 #include "freespace/topology/slice_pieces.h"
 #include "freespace/topology/sub_face_gluing.h"
 #include "gluing_parts.h"
+#include "horizontal_edge.h"
 
 namespace freespace {
 
@@ -14,25 +15,23 @@ namespace {
 using slices::ExactSegment;
 using slices::Point;
 using slices::segmentAt;
+using gluing::EdgeCrossSections;
+using gluing::EdgeRay;
+using gluing::EdgeSide;
+using gluing::HorizontalEdge;
+using gluing::EdgePoint;
+using gluing::kCrossingLine;
+using gluing::kSpiral;
+using gluing::curvePointOf;
+using gluing::spiralPointOf;
+using gluing::PointReading;
+using gluing::onePointOfEdge;
 
 /// How near the angles the cross-sections are read at lie to a horizontal edge (one
 /// on each side, inside the slabs meeting the edge there): within 2^-kBits in the
 /// tangent parameter. The named points of the edge (see EdgePoint) must come out
 /// apart and in one order on both sides; if not, the bits are doubled (twice at most).
 constexpr int kBits = 64;
-
-/// A patch meeting a horizontal edge with its slab that ends there (`below`) or
-/// starts there.
-struct EdgeSide {
-  std::uint32_t patch;
-  bool below;
-};
-
-/// The sides of the patches meeting along one line at one angle.
-struct HorizontalEdge {
-  AlgebraicAngle angle;
-  std::vector<EdgeSide> sides;
-};
 
 /// Groups range ends and overlaps by the EF function they are roots of (range ends
 /// of one function's root share a line there: the edge lies in the facet's plane;
@@ -68,13 +67,6 @@ std::vector<HorizontalEdge> horizontalEdges(const std::vector<PatchGeometry>& pa
   return edges;
 }
 
-/// Names a point of the edge that the sides' segments and curves reach from both
-/// sides of the edge: a spiral (a segment end), the crossing with the line of a patch
-/// not on the edge, or the point where two patches on the edge have equal slopes
-/// (their curve lands there).
-using EdgePoint = std::array<std::uint32_t, 5>;
-constexpr std::uint32_t kSpiral = 0, kCrossingLine = 1, kEqualSlopes = 2;
-
 /// A side of the edge read at its near angle: its segment, the crossings of its
 /// slab's curves by lambda, and its named points with their positions along the edge.
 struct SideAtAngle {
@@ -87,12 +79,10 @@ struct SideAtAngle {
   int orientation = 0;
 };
 
-/// A patch in the cross-section at one position: a ray from the edge.
-struct Ray {
-  bool below;
+/// A patch in the cross-section at one position, with its exact offset there.
+struct OffsetRay {
   Rational offset;
-  int orientation;
-  SubFaceId face;
+  EdgeRay ray;
 };
 
 /// The named points of the edge in their order along it, each with the range of
@@ -103,28 +93,25 @@ struct NamedPosition {
   Rational low, high;
 };
 
-class EdgeGluer {
+/// Reads the cross-sections of an edge exactly, at rational angles next to it.
+class ExactEdgeReader {
  public:
-  EdgeGluer(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
-            const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra, gluing::GlueList& glues)
-      : patches_(patches), curves_(curves), subdivisions_(subdivisions), algebra_(algebra), glues_(glues) {}
+  ExactEdgeReader(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
+                  AngleAlgebra& algebra)
+      : patches_(patches), curves_(curves), algebra_(algebra) {}
 
-  void glue(const HorizontalEdge& edge) {
-    std::vector<const PatchSlab*> slabs;
+  EdgeCrossSections read(const HorizontalEdge& edge, const std::vector<const PatchSlab*>& slabs) {
     onEdge_.clear();
-    for (const EdgeSide& side : edge.sides) {
-      slabs.push_back(gluing::slabMeeting(subdivisions_[side.patch], edge.angle, side.below, algebra_));
-      if (!slabs.back()) throw std::logic_error("glueAcrossHorizontalEdges: a patch has no slab at its edge");
-      onEdge_.push_back(side.patch);
-    }
+    for (const EdgeSide& side : edge.sides) onEdge_.push_back(side.patch);
     const std::array<std::optional<AlgebraicAngle>, 2> bounds = boundsOf(edge, slabs);
     for (int bits = kBits; bits <= 4 * kBits; bits *= 2) {
       const std::vector<SideAtAngle> sides = sidesNextTo(edge, slabs, bounds, bits);
       if (const std::optional<std::vector<NamedPosition>> points = namedPositions(sides, edge.angle)) {
+        EdgeCrossSections sections;
         for (std::size_t i = 0; i + 1 < points->size(); ++i) {
-          glueAt(((*points)[i].high + (*points)[i + 1].low) / 2, sides);
+          sections.push_back(raysAt(((*points)[i].high + (*points)[i + 1].low) / 2, sides));
         }
-        return;
+        return sections;
       }
     }
     throw std::logic_error("glueAcrossHorizontalEdges: points of an edge not apart");
@@ -153,11 +140,8 @@ class EdgeGluer {
   std::vector<SideAtAngle> sidesNextTo(const HorizontalEdge& edge, const std::vector<const PatchSlab*>& slabs,
                                        const std::array<std::optional<AlgebraicAngle>, 2>& bounds, int bits) {
     std::array<std::optional<std::pair<Rational, Rational>>, 2> rotations;
-    near_ = {};
     for (int below = 1; below >= 0; --below) {
-      if (!bounds[below]) continue;
-      near_[below] = algebra_.rationalNextTo(edge.angle, *bounds[below], below == 1, bits);
-      rotations[below] = exactCosSin(*near_[below]);
+      if (bounds[below]) rotations[below] = exactCosSin(algebra_.rationalNextTo(edge.angle, *bounds[below], below == 1, bits));
     }
     std::vector<SideAtAngle> sides;
     for (std::size_t i = 0; i < edge.sides.size(); ++i) {
@@ -205,47 +189,14 @@ class EdgeGluer {
 
   Rational position(const Point& p) const { return p[1] * normal_[0] - p[0] * normal_[1]; }
 
-  EdgePoint spiralPoint(const SideAtAngle& side, int k) const {
-    const SegmentEnd& end = patches_[side.side.patch].segment.ends[k];
-    return {kSpiral, end.robotVertex, end.vertex, end.edge[0], end.edge[1]};
-  }
-
-  EdgePoint curvePoint(const SideAtAngle& side, std::uint32_t curve) const {
-    const std::uint32_t other = curves_[curve].other(side.side.patch);
-    if (std::find(onEdge_.begin(), onEdge_.end(), other) == onEdge_.end()) return {kCrossingLine, other, 0, 0, 0};
-    return {kEqualSlopes, std::min(other, side.side.patch), std::max(other, side.side.patch), 0, 0};
-  }
-
-  /// A named point as read by one side: where, and the patch that reads it, with
-  /// the segment end (a spiral) or the curve's other patch (a crossing line).
+  /// A named point as read by one side, and where.
   struct Reading {
     Rational at;
-    EdgePoint point;
-    std::uint32_t patch;
-    int end;
-    std::uint32_t other;
+    PointReading what;
   };
 
-  /// Whether two named points are one point of the edge, decided exactly at its
-  /// angle: a spiral on a crossing line (an SF root at the edge's angle), or two
-  /// crossing lines through one point of the edge (an FFF root).
-  bool samePoint(const Reading& a, const Reading& b, const AlgebraicAngle& edge) {
-    if (a.point[0] > b.point[0]) return samePoint(b, a, edge);
-    if (a.point[0] == kSpiral && b.point[0] == kCrossingLine) {
-      const PatchGeometry& spiralOwner = patches_[a.patch];
-      const auto function =
-          spiralOnLine(patches_[b.other].line, spiralOwner.ends[a.end], spiralOwner.segment.ends[a.end]);
-      return algebra_.signAt(*function, edge) == Sign::Zero;
-    }
-    if (a.point[0] == kCrossingLine && b.point[0] == kCrossingLine) {
-      const auto function = threePatchFunction(patches_[a.patch].line, patches_[a.other].line, patches_[b.other].line);
-      return algebra_.signAt(*function, edge) == Sign::Zero;
-    }
-    return false;
-  }
-
   /// The named points the sides reach, in order along the edge: readings of one
-  /// point, and of points that are one point of the edge (samePoint), are merged.
+  /// point, and of points that are one point of the edge (onePointOfEdge), are merged.
   /// None when readings of points apart at the edge interleave (the angles read at
   /// are not near enough to the edge to tell their order).
   std::optional<std::vector<NamedPosition>> namedPositions(const std::vector<SideAtAngle>& sides,
@@ -253,20 +204,21 @@ class EdgeGluer {
     std::vector<Reading> read;
     for (const SideAtAngle& side : sides) {
       const std::uint32_t patch = side.side.patch;
-      read.push_back({side.position0, spiralPoint(side, 0), patch, 0, 0});
-      read.push_back({side.position1, spiralPoint(side, 1), patch, 1, 0});
+      read.push_back({side.position0, {spiralPointOf(patches_[patch], 0), patch, 0, 0}});
+      read.push_back({side.position1, {spiralPointOf(patches_[patch], 1), patch, 1, 0}});
       for (std::size_t i = 0; i < side.crossings.size(); ++i) {
         const std::uint32_t curve = side.slab->curves[i];
         read.push_back({side.position0 + side.crossings[i] * (side.position1 - side.position0),
-                        curvePoint(side, curve), patch, -1, curves_[curve].other(patch)});
+                        {curvePointOf(patch, curves_[curve].other(patch), onEdge_), patch, -1,
+                         curves_[curve].other(patch)}});
       }
     }
     // The range of positions each point is read at, by first reading.
     std::map<EdgePoint, std::pair<Rational, Rational>> range;
-    std::map<EdgePoint, const Reading*> first;
+    std::map<EdgePoint, const PointReading*> first;
     for (const Reading& reading : read) {
-      const auto [found, inserted] = range.try_emplace(reading.point, reading.at, reading.at);
-      if (inserted) first[reading.point] = &reading;
+      const auto [found, inserted] = range.try_emplace(reading.what.point, reading.at, reading.at);
+      if (inserted) first[reading.what.point] = &reading.what;
       found->second.first = std::min(found->second.first, reading.at);
       found->second.second = std::max(found->second.second, reading.at);
     }
@@ -278,7 +230,7 @@ class EdgeGluer {
     std::vector<NamedPosition> points;
     for (const NamedPosition& next : byLow) {
       const bool overlapping = !points.empty() && next.low <= points.back().high;
-      if (!points.empty() && samePoint(*first[points.back().point], *first[next.point], edge)) {
+      if (!points.empty() && onePointOfEdge(*first[points.back().point], *first[next.point], edge, patches_, algebra_)) {
         points.back().high = std::max(points.back().high, next.high);
         continue;
       }
@@ -289,63 +241,101 @@ class EdgeGluer {
   }
 
   /// The rays of the sides over one position of the edge, ordered counterclockwise
-  /// in the cross-section (s across, theta up): rays up by decreasing slope, then rays
-  /// down by decreasing slope. The offset of a line read above the edge is its slope
+  /// in the cross-section. The offset of a line read above the edge is its slope
   /// times a positive gap, below times a negative one: rays up by decreasing offset,
   /// rays down by increasing offset.
-  void glueAt(const Rational& at, const std::vector<SideAtAngle>& sides) {
-    std::vector<Ray> rays;
+  std::vector<EdgeRay> raysAt(const Rational& at, const std::vector<SideAtAngle>& sides) {
+    std::vector<OffsetRay> rays;
     for (const SideAtAngle& side : sides) {
       const Rational lambda = (at - side.position0) / (side.position1 - side.position0);
       if (lambda <= 0 || lambda >= 1) continue;
       const ExactSegment& s = side.segment;
       const Point p = s.at(lambda);
       const auto gap = std::upper_bound(side.crossings.begin(), side.crossings.end(), lambda) - side.crossings.begin();
-      rays.push_back({side.side.below, p[0] * normal_[0] + p[1] * normal_[1], side.orientation,
-                      {side.side.patch, side.slab->faces[static_cast<std::size_t>(gap)]}});
+      rays.push_back({p[0] * normal_[0] + p[1] * normal_[1],
+                      {side.side.below, side.orientation,
+                       {side.side.patch, side.slab->faces[static_cast<std::size_t>(gap)]}}});
     }
-    std::sort(rays.begin(), rays.end(), [](const Ray& a, const Ray& b) {
-      if (a.below != b.below) return b.below;
-      return a.below ? a.offset < b.offset : a.offset > b.offset;
+    std::sort(rays.begin(), rays.end(), [](const OffsetRay& a, const OffsetRay& b) {
+      if (a.ray.below != b.ray.below) return b.ray.below;
+      return a.ray.below ? a.offset < b.offset : a.offset > b.offset;
     });
-    for (std::size_t i = 1; i < rays.size(); ++i) {
-      if (rays[i - 1].below == rays[i].below && rays[i - 1].offset == rays[i].offset) {
+    std::vector<EdgeRay> counterclockwise;
+    for (std::size_t i = 0; i < rays.size(); ++i) {
+      if (i > 0 && rays[i - 1].ray.below == rays[i].ray.below && rays[i - 1].offset == rays[i].offset) {
         throw std::logic_error("glueAcrossHorizontalEdges: two lines cross over a sample of an edge");
       }
+      counterclockwise.push_back(rays[i].ray);
     }
-    // A ray down faces the sector after it (on its left) when its positive side is
-    // +s; a ray up when it is -s.
-    gluing::glueAround(
-        rays, [](const Ray& ray) { return ray.below == (ray.orientation > 0); },
-        [](const Ray& ray, bool) { return ray.face; }, GluedEdge::Horizontal,
-        [&](const Ray& a, const Ray& b) { return a.below && b.below ? *near_[1] : near_[0] ? *near_[0] : *near_[1]; },
-        glues_);
+    return counterclockwise;
   }
 
   const std::vector<PatchGeometry>& patches_;
   const std::vector<PatchCurve>& curves_;
-  const std::vector<PatchSubdivision>& subdivisions_;
   AngleAlgebra& algebra_;
-  gluing::GlueList& glues_;
   std::vector<std::uint32_t> onEdge_;
-  /// The angles the sides of the edge are read at, above (index 0) and below; a glue
-  /// of two sides below is seen below, any other above.
-  std::array<std::optional<AlgebraicAngle>, 2> near_;
   Point normal_;
 };
 
+/// The slab of each side of the edge: the one ending at its angle for a side below,
+/// starting there otherwise.
+std::vector<const PatchSlab*> slabsMeeting(const HorizontalEdge& edge, const std::vector<PatchSubdivision>& subdivisions,
+                                           AngleAlgebra& algebra) {
+  std::vector<const PatchSlab*> slabs;
+  for (const EdgeSide& side : edge.sides) {
+    slabs.push_back(gluing::slabMeeting(subdivisions[side.patch], edge.angle, side.below, algebra));
+    if (!slabs.back()) throw std::logic_error("glueAcrossHorizontalEdges: a patch has no slab at its edge");
+  }
+  return slabs;
+}
+
+/// Glues consecutive rays around the edge, as around a spiral: a ray down faces the
+/// sector after it (on its left) when its positive side is +s; a ray up when it is -s.
+void glueAcross(const HorizontalEdge& edge, const EdgeCrossSections& sections, gluing::GlueList& glues) {
+  for (const std::vector<EdgeRay>& rays : sections) {
+    gluing::glueAround(
+        rays, [](const EdgeRay& ray) { return ray.below == (ray.orientation > 0); },
+        [](const EdgeRay& ray, bool) { return ray.face; }, GluedEdge::Horizontal,
+        [&](const EdgeRay&, const EdgeRay&) { return edge.angle; }, glues);
+  }
+}
+
 }  // namespace
+
+namespace gluing {
+
+bool onePointOfEdge(const PointReading& a, const PointReading& b, const AlgebraicAngle& edge,
+                    const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra) {
+  if (a.point[0] > b.point[0]) return onePointOfEdge(b, a, edge, patches, algebra);
+  if (a.point[0] == kSpiral && b.point[0] == kCrossingLine) {
+    const PatchGeometry& spiralOwner = patches[a.patch];
+    const auto function = spiralOnLine(patches[b.other].line, spiralOwner.ends[a.end], spiralOwner.segment.ends[a.end]);
+    return algebra.signAt(*function, edge) == Sign::Zero;
+  }
+  if (a.point[0] == kCrossingLine && b.point[0] == kCrossingLine) {
+    const auto function = threePatchFunction(patches[a.patch].line, patches[a.other].line, patches[b.other].line);
+    return algebra.signAt(*function, edge) == Sign::Zero;
+  }
+  return false;
+}
+
+}  // namespace gluing
 
 SubFaceGluing glueAcrossHorizontalEdges(const std::vector<PatchGeometry>& patches,
                                         const std::vector<PatchCurve>& curves,
                                         const std::vector<PatchOverlap>& overlaps,
                                         const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra,
-                                        const Cancellation& cancellation) {
+                                        const Cancellation& cancellation, EdgeReading reading) {
   gluing::GlueList glues;
-  EdgeGluer gluer(patches, curves, subdivisions, algebra, glues);
+  ExactEdgeReader exact(patches, curves, algebra);
   for (const HorizontalEdge& edge : horizontalEdges(patches, overlaps, algebra)) {
     cancellation.check();
-    gluer.glue(edge);
+    const std::vector<const PatchSlab*> slabs = slabsMeeting(edge, subdivisions, algebra);
+    std::optional<EdgeCrossSections> sections;
+    if (reading == EdgeReading::Filtered) sections = gluing::crossSectionsInIntervals(edge, slabs, patches, curves, algebra);
+    algebra.statistics().recordDecision(PredicateKind::EdgeCrossSection,
+                                        static_cast<int>(sections ? PrecisionLevel::DoubleInterval : PrecisionLevel::Exact));
+    glueAcross(edge, sections ? *sections : exact.read(edge, slabs), glues);
   }
   return glues.take();
 }

@@ -18,6 +18,7 @@ enum class PredicateKind : int {
   SignAtRoot,    // sign of an angle polynomial at an algebraic angle
   RootOrder,     // order of two algebraic angles
   CrossingOrder, // order of two lines' crossings along a patch's segment
+  EdgeCrossSection,  // the cross-sections of a horizontal edge, read as one decision
   Other,
   Count
 };

@@ -21,7 +21,8 @@ enum class GluedEdge { Curve, Spiral, Horizontal };
 /// Two sub-faces whose positive sides face the same region of the arrangement,
 /// next to each other across an edge (DESIGN.md section 6, step 5: walking from a
 /// sub-face side across an edge to the angularly next side), as seen in the slice at
-/// a rational angle `at`.
+/// the angle `at`: a rational angle for curves and spirals, the edge's angle for a
+/// horizontal edge (the two sub-faces meet along the edge there).
 struct SubFaceGlue {
   SubFaceId first;
   SubFaceId second;
@@ -69,11 +70,18 @@ SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
 /// on both sides; points read apart there that are one point at theta_h (a spiral on
 /// a crossing line, two crossing lines through one point: exact SF and FFF signs at
 /// theta_h) are merged.
+///
+/// Filtered, each edge is first read at theta_h in double intervals: the slopes are
+/// the first derivatives in theta of the lines' offsets there, and the named points
+/// the spirals, crossings and equal slopes at theta_h; only an edge where some order
+/// is uncertain is read exactly. Exact reads every edge exactly (for tests).
+enum class EdgeReading { Filtered, Exact };
 SubFaceGluing glueAcrossHorizontalEdges(const std::vector<PatchGeometry>& patches,
                                         const std::vector<PatchCurve>& curves,
                                         const std::vector<PatchOverlap>& overlaps,
                                         const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra,
-                                        const Cancellation& cancellation = {});
+                                        const Cancellation& cancellation = {},
+                                        EdgeReading reading = EdgeReading::Filtered);
 
 /// The slab of `subdivision` whose open angles hold `angle`, if any.
 const PatchSlab* slabAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle, AngleAlgebra& algebra);
