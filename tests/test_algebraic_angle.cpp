@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <type_traits>
 
 #include "freespace/numbers/algebraic_angle.h"
 #include "freespace/numbers/angle_polynomial.h"
@@ -239,6 +241,36 @@ TEST(AlgebraicAngle, NearTiesBeyondDoublesAreDecidedInMultiprecision) {
   const auto multiprecision = static_cast<int>(PrecisionLevel::Multiprecision);
   EXPECT_EQ(statistics.counts(PredicateKind::SignAtRoot).decided[multiprecision], 1u);
   EXPECT_EQ(statistics.counts(PredicateKind::RootOrder).decided[multiprecision], 1u);
+}
+
+TEST(AlgebraicAngle, RootsApartByAFewUlpsAreToldApartByTightCoefficients) {
+  // t - a and t - b with b 64 ulps above a, each coefficient computed as
+  // (1000 + a) - 1000: in double intervals about 1e-13 wide, which hides the order;
+  // in 108-bit MPFI exact, so the tight coefficients decide without rationals (the
+  // exact coefficients throw).
+  const double a = 0.3, b = a + 64 * (std::nextafter(a, 1.0) - a);
+  const auto rootAt = [](double value) {
+    return std::make_shared<AngleFunction>([value](auto type, int) {
+      using T = typename decltype(type)::type;
+      if constexpr (std::is_same_v<T, Rational>) throw std::logic_error("exact coefficients asked for");
+      return Polynomial<T>({T(1000) - (T(1000) + T(value)), T(1)});
+    });
+  };
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const std::vector<AlgebraicAngle> rootsA = algebra.roots(rootAt(a), PredicateKind::Other);
+  const std::vector<AlgebraicAngle> rootsB = algebra.roots(rootAt(b), PredicateKind::Other);
+  ASSERT_EQ(rootsA.size(), 2u);  // one in each chart
+  ASSERT_EQ(rootsB.size(), 2u);
+  ASSERT_GT(rootsA[0].upper(), rootsB[0].lower());  // the double enclosures overlap
+  EXPECT_EQ(algebra.compare(rootsA[0], rootsB[0]), -1);
+  EXPECT_EQ(algebra.compare(rootsB[0], rootsA[0]), 1);
+  const AlgebraicAngle between = algebra.rationalBetween(rootsA[0], rootsB[0]);
+  EXPECT_EQ(algebra.compare(rootsA[0], between), -1);
+  EXPECT_EQ(algebra.compare(between, rootsB[0]), -1);
+  const auto& decided = statistics.counts(PredicateKind::RootOrder).decided;
+  EXPECT_GE(decided[static_cast<int>(PrecisionLevel::Multiprecision)], 2u);
+  EXPECT_EQ(decided[static_cast<int>(PrecisionLevel::Exact)], 0u);
 }
 
 RC_GTEST_PROP(AlgebraicAngle, PositiveSetMatchesSampledTrigonometry, ()) {

@@ -14,6 +14,9 @@ namespace {
 
 constexpr int kDoubleLevel = static_cast<int>(PrecisionLevel::DoubleInterval);
 constexpr int kExactLevel = static_cast<int>(PrecisionLevel::Exact);
+/// Decisions in double intervals from tight coefficients (AngleFunction::tight) are
+/// counted at the first MPFI level, whose precision computed the coefficients.
+constexpr int kTightLevel = static_cast<int>(PrecisionLevel::Multiprecision);
 /// Bisections tried in double intervals before a predicate escalates.
 constexpr int kDoubleRefinements = 48;
 
@@ -145,6 +148,19 @@ std::optional<std::pair<int, int>> compareRootsOnLadder(const RationalPolynomial
   }
 }
 
+/// The sign of p at the angle, certain in double intervals, refining the angle's
+/// enclosure as long as that helps.
+std::optional<Sign> signInDoubles(const Polynomial<Interval>& p, AlgebraicAngle& angle) {
+  for (int step = 0; step <= kDoubleRefinements; ++step) {
+    {
+      RoundingScope rounding;
+      if (const auto sign = certainSign(p.evaluate(Interval(angle.lower(), angle.upper())))) return sign;
+    }
+    if (!angle.refineInDoubles()) break;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 AngleFunction::AngleFunction(std::array<RationalPolynomial, 2> exact, std::optional<RootKey> key)
@@ -153,7 +169,13 @@ AngleFunction::AngleFunction(std::array<RationalPolynomial, 2> exact, std::optio
     std::vector<Interval> coefficients;
     for (const Rational& coefficient : exact[chart].coefficients()) coefficients.push_back(enclosingInterval(coefficient));
     approximate_[chart] = Polynomial<Interval>(std::move(coefficients));
+    tight_[chart] = approximate_[chart];  // already as narrow as doubles allow
   }
+}
+
+const Polynomial<Interval>& AngleFunction::tight(int chart) const {
+  if (!tight_[chart]) tight_[chart] = tightFormula_(chart);
+  return *tight_[chart];
 }
 
 const RationalPolynomial& AngleFunction::exact(int chart) const {
@@ -216,7 +238,7 @@ bool AlgebraicAngle::refineInDoubles() {
   const double middle = 0.5 * (lower_ + upper_);
   if (!(middle > lower_ && middle < upper_)) return false;
   RoundingScope rounding;
-  const Polynomial<Interval>& p = function_->approximate(chart_);
+  const Polynomial<Interval>& p = tight_ ? function_->tight(chart_) : function_->approximate(chart_);
   const std::optional<Sign> atLower = certainSign(p.evaluate(Interval(lower_)));
   const std::optional<Sign> atUpper = certainSign(p.evaluate(Interval(upper_)));
   const std::optional<Sign> atMiddle = certainSign(p.evaluate(Interval(middle)));
@@ -232,6 +254,12 @@ bool AlgebraicAngle::refineInDoubles() {
   } else {
     upper_ = middle;
   }
+  return true;
+}
+
+bool AlgebraicAngle::useTightCoefficients() {
+  if (!function_ || tight_) return false;
+  tight_ = true;
   return true;
 }
 
@@ -269,19 +297,17 @@ Sign AngleAlgebra::signAt(const AngleFunction& function, const AlgebraicAngle& a
     return Sign::Zero;
   }
   AlgebraicAngle refined = angle;
-  const Polynomial<Interval>& p = function.approximate(angle.chart());
-  for (int step = 0; step <= kDoubleRefinements; ++step) {
-    std::optional<Sign> sign;
-    {
-      RoundingScope rounding;
-      sign = certainSign(p.evaluate(Interval(refined.lower(), refined.upper())));
-    }
-    if (sign) return record(PredicateKind::SignAtRoot, kDoubleLevel, *sign);
-    if (!refined.refineInDoubles()) break;
+  if (const auto sign = signInDoubles(function.approximate(angle.chart()), refined)) {
+    return record(PredicateKind::SignAtRoot, kDoubleLevel, *sign);
   }
-  // Escalation: an exact identity test first (after perturbation, most signs that
-  // doubles cannot decide are identities), then the MPFI ladder, then exact.
+  // Escalation: tight coefficients, then an exact identity test (after perturbation,
+  // most signs that doubles cannot decide are identities), then the MPFI ladder,
+  // then exact.
   const EscalationTimer timer(statistics_, PredicateKind::SignAtRoot);
+  refined.useTightCoefficients();
+  if (const auto sign = signInDoubles(function.tight(angle.chart()), refined)) {
+    return record(PredicateKind::SignAtRoot, kTightLevel, *sign);
+  }
   const RationalPolynomial& exact = function.exact(angle.chart());
   if (angle.isRational()) return record(PredicateKind::SignAtRoot, kExactLevel, freespace::signAt(exact, angle.root().lo));
   const RationalPolynomial& squareFree = angle.function()->squareFree(angle.chart());
@@ -322,14 +348,25 @@ int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
   }
   if (const std::optional<int> order = compareByKey(first, second)) return *order;
   if (first.isRational() || second.isRational() || first.index() < 0 || second.index() < 0) {
+    if (const std::optional<int> order = compareTightly(first, second)) return *order;
     return compareEscalated(first, second);
   }
   const std::pair<RootId, RootId> pair{{first.function(), first.chart(), first.index()},
                                        {second.function(), second.chart(), second.index()}};
   const auto known = escalatedOrders_.find(pair);
   if (known != escalatedOrders_.end()) return known->second;
-  const int order = compareEscalated(first, second);
+  const std::optional<int> tight = compareTightly(first, second);
+  const int order = tight ? *tight : compareEscalated(first, second);
   escalatedOrders_.emplace(pair, order);
+  return order;
+}
+
+std::optional<int> AngleAlgebra::compareTightly(AlgebraicAngle& first, AlgebraicAngle& second) {
+  const bool tightened = first.useTightCoefficients() | second.useTightCoefficients();
+  if (!tightened) return std::nullopt;
+  const EscalationTimer timer(statistics_, PredicateKind::RootOrder);
+  const std::optional<int> order = compareInDoubles(first, second);
+  if (order) record(PredicateKind::RootOrder, kTightLevel, signOf(*order));
   return order;
 }
 
@@ -443,9 +480,10 @@ AlgebraicAngle AngleAlgebra::rationalBetween(const AlgebraicAngle& from, const A
   const int order = compare(from, to);
   if (order == 0) throw std::invalid_argument("rationalBetween: the two angles are equal");
   AlgebraicAngle narrowFrom = from, narrowTo = to;
-  if (auto inside = refineBothUntil(narrowFrom, narrowTo,
-                                    [&] { return betweenInDoubles(narrowFrom, narrowTo, order > 0); })) {
-    return *inside;
+  const auto between = [&] { return betweenInDoubles(narrowFrom, narrowTo, order > 0); };
+  if (auto inside = refineBothUntil(narrowFrom, narrowTo, between)) return *inside;
+  if (narrowFrom.useTightCoefficients() | narrowTo.useTightCoefficients()) {
+    if (auto inside = refineBothUntil(narrowFrom, narrowTo, between)) return *inside;
   }
   // Going counterclockwise from `from`, `to` comes a full turn later when it
   // precedes `from` in the cut order.

@@ -14,14 +14,25 @@
 #include "freespace/numbers/exact_polynomial.h"
 #include "freespace/numbers/half_angle.h"
 #include "freespace/numbers/interval.h"
+#include "freespace/numbers/multiprecision_interval.h"
 #include "freespace/numbers/polynomial.h"
 
 namespace freespace {
 
+/// The polynomial with each coefficient rounded outward to double intervals.
+template <unsigned Digits10>
+Polynomial<Interval> enclosingDoubles(const Polynomial<MultiprecisionInterval<Digits10>>& p) {
+  std::vector<Interval> coefficients;
+  for (const auto& coefficient : p.coefficients()) coefficients.push_back(enclosingInterval(coefficient));
+  return Polynomial<Interval>(std::move(coefficients));
+}
+
 /// A function of the angle theta given in each chart (HalfAngle) by a polynomial in
 /// the tangent parameter t whose sign is the function's sign. It keeps double
-/// interval coefficients for filtering and computes exact rational coefficients the
-/// first time they are needed. Use from one thread.
+/// interval coefficients for filtering; the first time they are needed it computes
+/// tight ones (the formula evaluated in MPFI at about 108 bits, rounded outward to
+/// doubles: a few ulps wide instead of the tens that double interval arithmetic
+/// accumulates) and exact rational ones. Use from one thread.
 class AngleFunction {
  public:
   /// Names a function up to a nonzero constant factor: two functions with the same
@@ -34,7 +45,11 @@ class AngleFunction {
   /// from double inputs; it is written once for every number type.
   template <class Formula>
   explicit AngleFunction(const Formula& formula, std::optional<RootKey> key = std::nullopt)
-      : exactFormula_([formula](int chart) { return formula(NumberType<Rational>{}, chart); }), key_(key) {
+      : exactFormula_([formula](int chart) { return formula(NumberType<Rational>{}, chart); }),
+        tightFormula_([formula](int chart) {
+          return enclosingDoubles(formula(NumberType<MultiprecisionInterval<kMultiprecisionDigits[0]>>{}, chart));
+        }),
+        key_(key) {
     RoundingScope rounding;
     for (int chart = 0; chart < 2; ++chart) approximate_[chart] = formula(NumberType<Interval>{}, chart);
   }
@@ -44,6 +59,7 @@ class AngleFunction {
   AngleFunction(std::array<RationalPolynomial, 2> exact, std::optional<RootKey> key);
 
   const Polynomial<Interval>& approximate(int chart) const { return approximate_[chart]; }
+  const Polynomial<Interval>& tight(int chart) const;
   const RationalPolynomial& exact(int chart) const;
   const RationalPolynomial& squareFree(int chart) const;
   /// True when the function vanishes at every angle (decided from the double
@@ -54,7 +70,9 @@ class AngleFunction {
  private:
   std::array<Polynomial<Interval>, 2> approximate_;
   std::function<RationalPolynomial(int)> exactFormula_;
+  std::function<Polynomial<Interval>(int)> tightFormula_;
   std::optional<RootKey> key_;
+  mutable std::array<std::optional<Polynomial<Interval>>, 2> tight_;
   mutable std::array<std::optional<RationalPolynomial>, 2> exact_;
   mutable std::array<std::optional<RationalPolynomial>, 2> squareFree_;
 };
@@ -95,6 +113,9 @@ class AlgebraicAngle {
   /// sign at the midpoint is certain in double intervals. Returns false when no
   /// progress can be made in doubles.
   bool refineInDoubles();
+  /// From now on refines with the function's tight coefficients. Returns false when
+  /// there is nothing to tighten (a rational angle, or already tight).
+  bool useTightCoefficients();
 
  private:
   std::shared_ptr<const AngleFunction> function_;
@@ -102,6 +123,7 @@ class AlgebraicAngle {
   std::optional<IsolatingInterval> exactRoot_;
   double lower_, upper_;
   int index_ = -1;
+  bool tight_ = false;
 };
 
 /// An arc of the circle, counterclockwise from `from` to `to` (both included).
@@ -181,6 +203,8 @@ class AngleAlgebra {
  private:
   std::optional<int> compareInDoubles(AlgebraicAngle& a, AlgebraicAngle& b) const;
   std::optional<int> compareByKey(const AlgebraicAngle& a, const AlgebraicAngle& b);
+  /// The order in double intervals once the functions' tight coefficients are used.
+  std::optional<int> compareTightly(AlgebraicAngle& first, AlgebraicAngle& second);
   int compareEscalated(const AlgebraicAngle& a, const AlgebraicAngle& b);
   Sign record(PredicateKind kind, int level, Sign sign);
 

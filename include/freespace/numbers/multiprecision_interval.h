@@ -4,6 +4,7 @@
 
 #include <optional>
 
+#include "freespace/numbers/interval.h"
 #include "freespace/numbers/sign.h"
 
 namespace freespace {
@@ -25,6 +26,13 @@ std::optional<Sign> certainSign(const MultiprecisionInterval<Digits10>& value) {
   if (boost::multiprecision::upper(value) < 0) return Sign::Negative;
   if (boost::multiprecision::lower(value) == 0 && boost::multiprecision::upper(value) == 0) return Sign::Zero;
   return std::nullopt;
+}
+
+/// The narrowest double interval holding the MPFI interval.
+template <unsigned Digits10>
+Interval enclosingInterval(const MultiprecisionInterval<Digits10>& value) {
+  const auto* bounds = value.backend().data();
+  return Interval(mpfr_get_d(&bounds->left, MPFR_RNDD), mpfr_get_d(&bounds->right, MPFR_RNDU));
 }
 
 }  // namespace freespace
