@@ -341,24 +341,28 @@ std::optional<int> AngleAlgebra::compareByKey(const AlgebraicAngle& a, const Alg
 }
 
 int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
+  // Enclosures apart decide at once, before anything is copied or refined.
+  if (a.chart() != b.chart() || a.upper() < b.lower() || b.upper() < a.lower()) {
+    const int order = a.chart() != b.chart() ? (a.chart() < b.chart() ? -1 : 1) : (a.upper() < b.lower() ? -1 : 1);
+    record(PredicateKind::RootOrder, kDoubleLevel, signOf(order));
+    return order;
+  }
+  if (const std::optional<int> order = compareByKey(a, b)) return *order;
+  // Orders of roots that needed refinement are remembered: sorts ask again.
+  const bool remembered = !a.isRational() && !b.isRational() && a.index() >= 0 && b.index() >= 0;
+  std::optional<std::pair<RootId, RootId>> pair;
+  if (remembered) {
+    pair.emplace(RootId{a.function(), a.chart(), a.index()}, RootId{b.function(), b.chart(), b.index()});
+    const auto known = knownOrders_.find(*pair);
+    if (known != knownOrders_.end()) return known->second;
+  }
   AlgebraicAngle first = a, second = b;
-  if (const std::optional<int> order = compareInDoubles(first, second)) {
-    record(PredicateKind::RootOrder, kDoubleLevel, signOf(*order));
-    return *order;
-  }
-  if (const std::optional<int> order = compareByKey(first, second)) return *order;
-  if (first.isRational() || second.isRational() || first.index() < 0 || second.index() < 0) {
-    if (const std::optional<int> order = compareTightly(first, second)) return *order;
-    return compareEscalated(first, second);
-  }
-  const std::pair<RootId, RootId> pair{{first.function(), first.chart(), first.index()},
-                                       {second.function(), second.chart(), second.index()}};
-  const auto known = escalatedOrders_.find(pair);
-  if (known != escalatedOrders_.end()) return known->second;
-  const std::optional<int> tight = compareTightly(first, second);
-  const int order = tight ? *tight : compareEscalated(first, second);
-  escalatedOrders_.emplace(pair, order);
-  return order;
+  std::optional<int> order = compareInDoubles(first, second);
+  if (order) record(PredicateKind::RootOrder, kDoubleLevel, signOf(*order));
+  if (!order) order = compareTightly(first, second);
+  if (!order) order = compareEscalated(first, second);
+  if (pair) knownOrders_.emplace(std::move(*pair), *order);
+  return *order;
 }
 
 std::optional<int> AngleAlgebra::compareTightly(AlgebraicAngle& first, AlgebraicAngle& second) {

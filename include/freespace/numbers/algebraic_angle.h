@@ -222,7 +222,7 @@ class AngleAlgebra {
   PredicateStatistics& statistics_;
   /// Orders of roots that doubles could not separate, decided once: the same pair
   /// of close roots is met again and again by a construction.
-  std::map<std::pair<RootId, RootId>, int> escalatedOrders_;
+  std::map<std::pair<RootId, RootId>, int> knownOrders_;
 };
 
 }  // namespace freespace
