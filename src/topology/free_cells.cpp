@@ -75,22 +75,50 @@ class Nesting {
     throw std::logic_error("FreeCells: a free shell has no slab");
   }
 
-  /// The leftmost point of the shell's slice at a rational angle, if it has one.
+  /// The leftmost point of the shell's slice at a rational angle, if it has one:
+  /// the ends of its sub-faces' pieces are first bounded in double intervals, and
+  /// only those that may be leftmost are computed exactly.
   std::optional<Point> leftmostAt(std::uint32_t shell, const AlgebraicAngle& angle) const {
-    const auto [cosine, sine] = exactCosSin(angle);
-    std::optional<Point> best;
-    for (const SubFaceId& face : members_[shell]) {
-      if (!algebra_.contains(arrangement_.patches[face.patch].patch.range, angle)) continue;
-      const PatchSlab* slab = slabAt(arrangement_.subdivisions[face.patch], angle, algebra_);
-      if (!slab) throw std::logic_error("FreeCells: a shell's angle is an event of one of its patches");
-      const slices::ExactSegment segment = slices::segmentAt(arrangement_.patches[face.patch], cosine, sine);
-      for (std::size_t gap = 0; gap < slab->faces.size(); ++gap) {
-        if (slab->faces[gap] != face.face) continue;
-        const auto [low, high] = slices::pieceOf(arrangement_, face.patch, *slab, gap, segment, cosine, sine);
-        for (const Rational& lambda : {low, high}) {
-          const Point point = segment.at(lambda);
-          if (!best || leftOf(point, *best)) best = point;
+    struct PieceEnd {
+      SubFaceId face;
+      const PatchSlab* slab;
+      std::size_t gap;
+      double lowestX;
+    };
+    std::vector<PieceEnd> ends;
+    double leftmostX = HUGE_VAL;  // no piece end lies right of every point left of this
+    {
+      RoundingScope rounding;
+      const slices::IntervalSlice slice(angle);
+      for (const SubFaceId& face : members_[shell]) {
+        if (!algebra_.contains(arrangement_.patches[face.patch].patch.range, angle)) continue;
+        const PatchSlab* slab = slabAt(arrangement_.subdivisions[face.patch], angle, algebra_);
+        if (!slab) throw std::logic_error("FreeCells: a shell's angle is an event of one of its patches");
+        const PatchGeometry& patch = arrangement_.patches[face.patch];
+        const std::array<Interval, 2> end0 = slice.end(patch, 0), end1 = slice.end(patch, 1);
+        for (std::size_t gap = 0; gap < slab->faces.size(); ++gap) {
+          if (slab->faces[gap] != face.face) continue;
+          const auto piece = slice.pieceOf(arrangement_, face.patch, *slab, gap);
+          Interval x(-HUGE_VAL, HUGE_VAL);
+          if (piece) {
+            const Interval low = end0[0] + piece->first * (end1[0] - end0[0]);
+            const Interval high = end0[0] + piece->second * (end1[0] - end0[0]);
+            x = Interval(std::min(low.lower(), high.lower()), std::min(low.upper(), high.upper()));
+          }
+          ends.push_back({face, slab, gap, x.lower()});
+          leftmostX = std::min(leftmostX, x.upper());
         }
+      }
+    }
+    std::optional<Point> best;
+    const auto [cosine, sine] = exactCosSin(angle);
+    for (const PieceEnd& end : ends) {
+      if (end.lowestX > leftmostX) continue;
+      const slices::ExactSegment segment = slices::segmentAt(arrangement_.patches[end.face.patch], cosine, sine);
+      const auto [low, high] = slices::pieceOf(arrangement_, end.face.patch, *end.slab, end.gap, segment, cosine, sine);
+      for (const Rational& lambda : {low, high}) {
+        const Point point = segment.at(lambda);
+        if (!best || leftOf(point, *best)) best = point;
       }
     }
     return best;

@@ -35,18 +35,10 @@ struct IntervalMeeting {
 };
 
 /// The ray and the angle in double intervals: a filter before exact crossings.
-struct IntervalRay {
-  Interval cosine, sine;
+struct IntervalRay : slices::IntervalSlice {
   std::array<Interval, 2> from, direction;
 
-  IntervalRay(const AlgebraicAngle& angle, const Point& start, const Point& step) {
-    if (angle.lower() == angle.upper()) {
-      HalfAngle{angle.chart(), angle.lower()}.cosSin(cosine, sine);
-    } else {
-      const auto [c, s] = exactCosSin(angle);
-      cosine = enclosingInterval(c);
-      sine = enclosingInterval(s);
-    }
+  IntervalRay(const AlgebraicAngle& angle, const Point& start, const Point& step) : IntervalSlice(angle) {
     for (int axis = 0; axis < 2; ++axis) {
       from[axis] = enclosingInterval(start[axis]);
       direction[axis] = enclosingInterval(step[axis]);
@@ -57,8 +49,7 @@ struct IntervalRay {
   /// patch's segment, in intervals; none when it certainly misses it (inside a
   /// RoundingScope). `certain` when it certainly meets it at an inner point.
   std::optional<IntervalMeeting> meeting(std::uint32_t patch, const PatchGeometry& geometry, bool bounded) const {
-    const std::array<Interval, 2> end0 = spiralPoint(spiralOf<Interval>(geometry.ends[0]), cosine, sine);
-    const std::array<Interval, 2> end1 = spiralPoint(spiralOf<Interval>(geometry.ends[1]), cosine, sine);
+    const std::array<Interval, 2> end0 = end(geometry, 0), end1 = end(geometry, 1);
     const Interval wx = end1[0] - end0[0], wy = end1[1] - end0[1];
     const Interval ox = end0[0] - from[0], oy = end0[1] - from[1];
     const Interval denominator = direction[0] * wy - direction[1] * wx;
@@ -73,21 +64,8 @@ struct IntervalRay {
 
   /// The value of a patch's line at the start.
   Interval lineAtStart(const PatchGeometry& patch) const {
-    const LineAtAngle<Interval> line = lineAtAngle(lineOf<Interval>(patch.line), cosine, sine);
-    return line.nx * from[0] + line.ny * from[1] + line.w;
-  }
-
-  /// Where another patch's line crosses a patch's segment, as lambda.
-  std::optional<Interval> crossingLambda(const PatchGeometry& segment, const PatchGeometry& other) const {
-    const LineAtAngle<Interval> line = lineAtAngle(lineOf<Interval>(other.line), cosine, sine);
-    const auto valueAt = [&](int k) {
-      const std::array<Interval, 2> end = spiralPoint(spiralOf<Interval>(segment.ends[k]), cosine, sine);
-      return line.nx * end[0] + line.ny * end[1] + line.w;
-    };
-    const Interval v0 = valueAt(0), difference = v0 - valueAt(1);
-    const std::optional<Sign> sign = certainSign(difference);
-    if (!sign || *sign == Sign::Zero) return std::nullopt;
-    return v0 / difference;
+    const LineAtAngle<Interval> at = line(patch);
+    return at.nx * from[0] + at.ny * from[1] + at.w;
   }
 };
 

@@ -4,7 +4,11 @@
 // one of its sub-faces covers there.
 
 #include <array>
+#include <optional>
 #include <utility>
+
+#include "freespace/numbers/half_angle.h"
+#include "freespace/numbers/rational.h"
 
 #include "freespace/topology/arrangement.h"
 
@@ -46,5 +50,55 @@ inline std::pair<Rational, Rational> pieceOf(const Arrangement& arrangement, std
   return {gap == 0 ? Rational(0) : lambdaOf(slab.curves[gap - 1]),
           gap == slab.curves.size() ? Rational(1) : lambdaOf(slab.curves[gap])};
 }
+
+/// The slice at a rational angle in double intervals, a filter before the exact
+/// one (use inside a RoundingScope).
+struct IntervalSlice {
+  Interval cosine, sine;
+
+  explicit IntervalSlice(const AlgebraicAngle& rationalAngle) {
+    if (rationalAngle.lower() == rationalAngle.upper()) {
+      HalfAngle{rationalAngle.chart(), rationalAngle.lower()}.cosSin(cosine, sine);
+    } else {
+      const auto [c, s] = exactCosSin(rationalAngle);
+      cosine = enclosingInterval(c);
+      sine = enclosingInterval(s);
+    }
+  }
+
+  std::array<Interval, 2> end(const PatchGeometry& patch, int k) const {
+    return spiralPoint(spiralOf<Interval>(patch.ends[k]), cosine, sine);
+  }
+
+  LineAtAngle<Interval> line(const PatchGeometry& patch) const {
+    return lineAtAngle(lineOf<Interval>(patch.line), cosine, sine);
+  }
+
+  /// Where another patch's line crosses a patch's segment, as lambda; nothing when
+  /// the segment may be parallel to it.
+  std::optional<Interval> crossingLambda(const PatchGeometry& segment, const PatchGeometry& other) const {
+    const LineAtAngle<Interval> at = line(other);
+    const auto valueAt = [&](int k) {
+      const std::array<Interval, 2> p = end(segment, k);
+      return at.nx * p[0] + at.ny * p[1] + at.w;
+    };
+    const Interval v0 = valueAt(0), difference = v0 - valueAt(1);
+    const std::optional<Sign> sign = certainSign(difference);
+    if (!sign || *sign == Sign::Zero) return std::nullopt;
+    return v0 / difference;
+  }
+
+  /// pieceOf in intervals; nothing when a crossing is uncertain.
+  std::optional<std::pair<Interval, Interval>> pieceOf(const Arrangement& arrangement, std::uint32_t patch,
+                                                      const PatchSlab& slab, std::size_t gap) const {
+    const auto lambdaOf = [&](std::uint32_t curve) {
+      return crossingLambda(arrangement.patches[patch], arrangement.patches[arrangement.curves[curve].other(patch)]);
+    };
+    const std::optional<Interval> low = gap == 0 ? Interval(0) : lambdaOf(slab.curves[gap - 1]);
+    const std::optional<Interval> high = gap == slab.curves.size() ? Interval(1) : lambdaOf(slab.curves[gap]);
+    if (!low || !high) return std::nullopt;
+    return std::make_pair(*low, *high);
+  }
+};
 
 }  // namespace freespace::slices
