@@ -273,6 +273,30 @@ TEST(AlgebraicAngle, RootsApartByAFewUlpsAreToldApartByTightCoefficients) {
   EXPECT_EQ(decided[static_cast<int>(PrecisionLevel::Exact)], 0u);
 }
 
+TEST(AlgebraicAngle, RootsOneUlpApartAreToldApartByPreciseBisection) {
+  // t - a and t - b with b the double after a: no double enclosure separates them,
+  // the roots bisected in 108-bit MPFI do, without exact coefficients (they throw).
+  const double a = 0.3, b = std::nextafter(a, 1.0);
+  const auto rootAt = [](double value) {
+    return std::make_shared<AngleFunction>([value](auto type, int) {
+      using T = typename decltype(type)::type;
+      if constexpr (std::is_same_v<T, Rational>) throw std::logic_error("exact coefficients asked for");
+      return Polynomial<T>({(T(1000) - T(value)) - T(1000), T(1)});
+    });
+  };
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const AlgebraicAngle rootA = algebra.roots(rootAt(a), PredicateKind::Other).at(0);
+  const AlgebraicAngle rootB = algebra.roots(rootAt(b), PredicateKind::Other).at(0);
+  EXPECT_EQ(algebra.compare(rootA, rootB), -1);
+  EXPECT_EQ(algebra.compare(rootB, rootA), 1);
+  const AlgebraicAngle between = algebra.rationalBetween(rootA, rootB);
+  ASSERT_TRUE(between.isRational());
+  EXPECT_GT(between.root().lo, Rational(a));
+  EXPECT_LT(between.root().lo, Rational(b));
+  EXPECT_EQ(statistics.counts(PredicateKind::RootOrder).decided[static_cast<int>(PrecisionLevel::Exact)], 0u);
+}
+
 RC_GTEST_PROP(AlgebraicAngle, PositiveSetMatchesSampledTrigonometry, ()) {
   std::vector<Form> forms;
   const int count = *rc::gen::inRange(1, 4);

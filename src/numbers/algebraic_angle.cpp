@@ -164,7 +164,9 @@ std::optional<Sign> signInDoubles(const Polynomial<Interval>& p, AlgebraicAngle&
 }  // namespace
 
 AngleFunction::AngleFunction(std::array<RationalPolynomial, 2> exact, std::optional<RootKey> key)
-    : exactFormula_([exact](int chart) { return exact[chart]; }), key_(key) {
+    : exactFormula_([exact](int chart) { return exact[chart]; }),
+      preciseFormula_([exact](int chart) { return detail::enclosePolynomial<kMultiprecisionDigits[0]>(exact[chart]); }),
+      key_(key) {
   for (int chart = 0; chart < 2; ++chart) {
     std::vector<Interval> coefficients;
     for (const Rational& coefficient : exact[chart].coefficients()) coefficients.push_back(enclosingInterval(coefficient));
@@ -174,8 +176,13 @@ AngleFunction::AngleFunction(std::array<RationalPolynomial, 2> exact, std::optio
 }
 
 const Polynomial<Interval>& AngleFunction::tight(int chart) const {
-  if (!tight_[chart]) tight_[chart] = tightFormula_(chart);
+  if (!tight_[chart]) tight_[chart] = enclosingDoubles(precise(chart));
   return *tight_[chart];
+}
+
+const Polynomial<PreciseInterval>& AngleFunction::precise(int chart) const {
+  if (!precise_[chart]) precise_[chart] = preciseFormula_(chart);
+  return *precise_[chart];
 }
 
 const RationalPolynomial& AngleFunction::exact(int chart) const {
@@ -360,9 +367,55 @@ int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
   std::optional<int> order = compareInDoubles(first, second);
   if (order) record(PredicateKind::RootOrder, kDoubleLevel, signOf(*order));
   if (!order) order = compareTightly(first, second);
+  if (!order) order = comparePrecisely(first, second);
   if (!order) order = compareEscalated(first, second);
   if (pair) knownOrders_.emplace(std::move(*pair), *order);
   return *order;
+}
+
+namespace {
+
+/// Bisections of a precise root: from a double enclosure about 56 bits more.
+constexpr int kPreciseBisections = 56;
+
+std::optional<detail::PreciseRoot> preciseRootOf(const AlgebraicAngle& angle) {
+  if (angle.isRational()) return detail::PreciseRoot::fixed(angle.root().lo, angle.root().hi);
+  return detail::PreciseRoot::isolating(angle.function()->precise(angle.chart()), angle.lower(), angle.upper());
+}
+
+/// The roots bisected in MPFI until they are apart.
+std::optional<std::pair<detail::PreciseRoot, detail::PreciseRoot>> apartPrecisely(const AlgebraicAngle& first,
+                                                                                  const AlgebraicAngle& second) {
+  std::optional<detail::PreciseRoot> a = preciseRootOf(first), b = preciseRootOf(second);
+  if (!a || !b) return std::nullopt;
+  for (int step = 0; step < kPreciseBisections; ++step) {
+    if (a->below(*b) || b->below(*a)) return std::make_pair(std::move(*a), std::move(*b));
+    const bool movedA = !first.isRational() && a->bisect(first.function()->precise(first.chart()));
+    const bool movedB = !second.isRational() && b->bisect(second.function()->precise(second.chart()));
+    if (!movedA && !movedB) return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+/// A rational angle between two angles of one chart, `from` below `to`, from their
+/// roots bisected in MPFI.
+std::optional<AlgebraicAngle> betweenPrecisely(const AlgebraicAngle& from, const AlgebraicAngle& to) {
+  const auto apart = apartPrecisely(from, to);
+  if (!apart || !apart->first.below(apart->second)) return std::nullopt;
+  const std::optional<Rational> t = apart->first.pointBelow(apart->second);
+  if (!t) return std::nullopt;
+  return AlgebraicAngle::rational(from.chart(), *t);
+}
+
+}  // namespace
+
+std::optional<int> AngleAlgebra::comparePrecisely(const AlgebraicAngle& first, const AlgebraicAngle& second) {
+  const EscalationTimer timer(statistics_, PredicateKind::RootOrder);
+  const auto apart = apartPrecisely(first, second);
+  if (!apart) return std::nullopt;
+  const int order = apart->first.below(apart->second) ? -1 : 1;
+  record(PredicateKind::RootOrder, kTightLevel, signOf(order));
+  return order;
 }
 
 std::optional<int> AngleAlgebra::compareTightly(AlgebraicAngle& first, AlgebraicAngle& second) {
@@ -488,6 +541,9 @@ AlgebraicAngle AngleAlgebra::rationalBetween(const AlgebraicAngle& from, const A
   if (auto inside = refineBothUntil(narrowFrom, narrowTo, between)) return *inside;
   if (narrowFrom.useTightCoefficients() | narrowTo.useTightCoefficients()) {
     if (auto inside = refineBothUntil(narrowFrom, narrowTo, between)) return *inside;
+  }
+  if (order < 0 && from.chart() == to.chart()) {
+    if (auto inside = betweenPrecisely(narrowFrom, narrowTo)) return *inside;
   }
   // Going counterclockwise from `from`, `to` comes a full turn later when it
   // precedes `from` in the cut order.

@@ -83,4 +83,83 @@ std::optional<int> compareRootsInPrecision(const RationalPolynomial& f, Isolatin
   return std::nullopt;
 }
 
+/// A root of a polynomial given in MPFI, isolated between two binary points and
+/// halved at that precision (no rationals): the step after tight coefficients.
+/// A fixed root (a rational angle) is an interval that is not narrowed.
+class PreciseRoot {
+ public:
+  using Number = MultiprecisionInterval<kMultiprecisionDigits[0]>;
+
+  /// From an isolating double enclosure: nothing when the signs at its ends are not
+  /// certain and opposite.
+  static std::optional<PreciseRoot> isolating(const Polynomial<Number>& p, double lower, double upper) {
+    PreciseRoot root{Number(lower), Number(upper)};
+    const std::optional<Sign> atLow = certainSign(Number(p.evaluate(root.low_)));
+    const std::optional<Sign> atHigh = certainSign(Number(p.evaluate(root.high_)));
+    if (!atLow || !atHigh || *atLow == Sign::Zero || *atLow != -*atHigh) return std::nullopt;
+    root.atLow_ = *atLow;
+    return root;
+  }
+
+  static PreciseRoot fixed(const Rational& low, const Rational& high) {
+    PreciseRoot root(hull<kMultiprecisionDigits[0]>(low, low), hull<kMultiprecisionDigits[0]>(high, high));
+    root.fixed_ = true;
+    return root;
+  }
+
+  /// Halves once; false when fixed, when no binary point lies strictly inside or when
+  /// the sign at the middle is not certain.
+  bool bisect(const Polynomial<Number>& p) {
+    if (fixed_) return false;
+    const Number middle(boost::multiprecision::lower(Number((low_ + high_) / 2)));
+    if (!(boost::multiprecision::upper(low_) < boost::multiprecision::lower(middle) &&
+          boost::multiprecision::upper(middle) < boost::multiprecision::lower(high_))) {
+      return false;
+    }
+    const std::optional<Sign> sign = certainSign(Number(p.evaluate(middle)));
+    if (!sign) return false;
+    if (*sign == Sign::Zero) {
+      low_ = high_ = middle;
+      fixed_ = true;
+    } else if (*sign == atLow_) {
+      low_ = middle;
+    } else {
+      high_ = middle;
+    }
+    return true;
+  }
+
+  /// Certainly below the other root.
+  bool below(const PreciseRoot& other) const {
+    return boost::multiprecision::upper(high_) < boost::multiprecision::lower(other.low_);
+  }
+
+  /// A binary point strictly between this root and a root certainly above it,
+  /// exactly as a rational; nothing when none is found at this precision.
+  std::optional<Rational> pointBelow(const PreciseRoot& above) const {
+    const Number middle(boost::multiprecision::lower(
+        Number((Number(boost::multiprecision::upper(high_)) + Number(boost::multiprecision::lower(above.low_))) / 2)));
+    if (!(boost::multiprecision::upper(high_) < boost::multiprecision::lower(middle) &&
+          boost::multiprecision::upper(middle) < boost::multiprecision::lower(above.low_))) {
+      return std::nullopt;
+    }
+    Rational point;
+    mpfr_get_q(point.backend().data(), &middle.backend().data()->left);
+    return point;
+  }
+
+  Number enclosure() const {
+    Number result;
+    mpfi_interv_fr(result.backend().data(), &low_.backend().data()->left, &high_.backend().data()->right);
+    return result;
+  }
+
+ private:
+  PreciseRoot(Number low, Number high) : low_(std::move(low)), high_(std::move(high)) {}
+
+  Number low_, high_;
+  Sign atLow_ = Sign::Zero;
+  bool fixed_ = false;
+};
+
 }  // namespace freespace::detail

@@ -19,6 +19,9 @@
 
 namespace freespace {
 
+/// MPFI intervals of the first precision of the ladder (about 108 bits).
+using PreciseInterval = MultiprecisionInterval<kMultiprecisionDigits[0]>;
+
 /// The polynomial with each coefficient rounded outward to double intervals.
 template <unsigned Digits10>
 Polynomial<Interval> enclosingDoubles(const Polynomial<MultiprecisionInterval<Digits10>>& p) {
@@ -46,9 +49,7 @@ class AngleFunction {
   template <class Formula>
   explicit AngleFunction(const Formula& formula, std::optional<RootKey> key = std::nullopt)
       : exactFormula_([formula](int chart) { return formula(NumberType<Rational>{}, chart); }),
-        tightFormula_([formula](int chart) {
-          return enclosingDoubles(formula(NumberType<MultiprecisionInterval<kMultiprecisionDigits[0]>>{}, chart));
-        }),
+        preciseFormula_([formula](int chart) { return formula(NumberType<PreciseInterval>{}, chart); }),
         key_(key) {
     RoundingScope rounding;
     for (int chart = 0; chart < 2; ++chart) approximate_[chart] = formula(NumberType<Interval>{}, chart);
@@ -60,6 +61,8 @@ class AngleFunction {
 
   const Polynomial<Interval>& approximate(int chart) const { return approximate_[chart]; }
   const Polynomial<Interval>& tight(int chart) const;
+  /// The chart's polynomial in MPFI at about 108 bits (whose rounding is `tight`).
+  const Polynomial<PreciseInterval>& precise(int chart) const;
   const RationalPolynomial& exact(int chart) const;
   const RationalPolynomial& squareFree(int chart) const;
   /// True when the function vanishes at every angle (decided from the double
@@ -70,9 +73,10 @@ class AngleFunction {
  private:
   std::array<Polynomial<Interval>, 2> approximate_;
   std::function<RationalPolynomial(int)> exactFormula_;
-  std::function<Polynomial<Interval>(int)> tightFormula_;
+  std::function<Polynomial<PreciseInterval>(int)> preciseFormula_;
   std::optional<RootKey> key_;
   mutable std::array<std::optional<Polynomial<Interval>>, 2> tight_;
+  mutable std::array<std::optional<Polynomial<PreciseInterval>>, 2> precise_;
   mutable std::array<std::optional<RationalPolynomial>, 2> exact_;
   mutable std::array<std::optional<RationalPolynomial>, 2> squareFree_;
 };
@@ -205,6 +209,9 @@ class AngleAlgebra {
   std::optional<int> compareByKey(const AlgebraicAngle& a, const AlgebraicAngle& b);
   /// The order in double intervals once the functions' tight coefficients are used.
   std::optional<int> compareTightly(AlgebraicAngle& first, AlgebraicAngle& second);
+  /// The order from the roots bisected in MPFI (the functions' precise polynomials),
+  /// when their signs stay certain.
+  std::optional<int> comparePrecisely(const AlgebraicAngle& first, const AlgebraicAngle& second);
   int compareEscalated(const AlgebraicAngle& a, const AlgebraicAngle& b);
   Sign record(PredicateKind kind, int level, Sign sign);
 
