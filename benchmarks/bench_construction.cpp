@@ -1,12 +1,16 @@
 // The construction over scenes of growing size: the tetrahedron in floor plans of
-// 1, 2, 4, ... rooms (the scene generator's tetra_floorplan_N), then any scenes
-// named on the command line (generator names or .cfg files). Prints per scene the
+// 1, 2, 4, ... rooms (the scene generator's tetra_floorplan_N); with --mixed-rooms
+// the 14-facet house robot in floor plans of 1, 2, 4, ... rooms whose walls have
+// three heights (0.375, 0.75, 1.25: below, between and above the robot's features);
+// with --robots the robots of 4 to 108 facets in one such floor plan; then any
+// scenes named on the command line (generator names or .cfg files). Prints per scene the
 // time of each stage, the counts (patches, curves, vertices, sub-faces, shells, free
 // cells), the peak memory and the share of predicates decided in double intervals;
 // with --plot FILE.svg also draws the total time against the output size (vertices
 // plus sub-faces).
 //
-// Usage: bench_construction [--rooms MAX] [--plot FILE.svg] [SCENE ...]
+// Usage: bench_construction [--rooms MAX] [--mixed-rooms MAX] [--robots ROOMS]
+//                           [--plot FILE.svg] [SCENE ...]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -84,16 +88,33 @@ void writePlot(const std::vector<Row>& rows, std::ostream& out) {
   out << "</svg>\n";
 }
 
+/// A floor plan of `rooms` rooms of 3 x 3 with 1 wide doors, as the tetrahedron's,
+/// its walls of three heights.
+Mesh mixedHeightFloorPlan(unsigned rooms) {
+  FloorPlanLayout layout;
+  layout.rooms = rooms;
+  layout.columns = static_cast<unsigned>(std::ceil(std::sqrt(static_cast<double>(rooms))));
+  layout.cellSize = 3;
+  layout.wallHeights = {0.375, 0.75, 1.25};
+  layout.doorWidth = 1;
+  layout.extraDoors = rooms / 5;
+  return makeCheckedMesh(makeFloorPlan(layout, 1).walls, "floor plan");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  unsigned maxRooms = 16;
+  unsigned maxRooms = 16, maxMixedRooms = 0, robotsRooms = 0;
   std::string plot;
   std::vector<std::string> extra;
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
     if (argument == "--rooms" && i + 1 < argc) {
       maxRooms = static_cast<unsigned>(std::stoul(argv[++i]));
+    } else if (argument == "--mixed-rooms" && i + 1 < argc) {
+      maxMixedRooms = static_cast<unsigned>(std::stoul(argv[++i]));
+    } else if (argument == "--robots" && i + 1 < argc) {
+      robotsRooms = static_cast<unsigned>(std::stoul(argv[++i]));
     } else if (argument == "--plot" && i + 1 < argc) {
       plot = argv[++i];
     } else {
@@ -104,6 +125,19 @@ int main(int argc, char** argv) {
   for (unsigned rooms = 1; rooms <= maxRooms; rooms *= 2) {
     const Scene scene = makeScene("tetra_floorplan_" + std::to_string(rooms));
     rows.push_back(measure(scene.name, scene.robot, scene.world));
+  }
+  const Mesh house = makeHouseRobot();
+  for (unsigned rooms = 1; rooms <= maxMixedRooms; rooms *= 2) {
+    rows.push_back(measure("house_mixed_" + std::to_string(rooms), house, mixedHeightFloorPlan(rooms)));
+  }
+  if (robotsRooms > 0) {
+    const Mesh world = mixedHeightFloorPlan(robotsRooms);
+    const std::string suffix = "_mixed_" + std::to_string(robotsRooms);
+    rows.push_back(measure("tetrahedron" + suffix, makeTetrahedronRobot(), world));
+    rows.push_back(measure("house" + suffix, house, world));
+    for (unsigned teeth = 1; teeth <= 4; ++teeth) {
+      rows.push_back(measure("fishbone" + std::to_string(teeth) + suffix, makeFishboneRobot(teeth), world));
+    }
   }
   for (const std::string& name : extra) {
     if (name.size() > 4 && name.substr(name.size() - 4) == ".cfg") {

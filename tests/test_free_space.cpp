@@ -64,6 +64,34 @@ TEST_P(BundledFreeSpace, KnownTopologyAndAgreementWithTheExactCollisionTest) {
   EXPECT_GT(check.free, 0);
 }
 
+// The benchmark's robots (14-facet house, non-convex fishbone) in a floor plan whose
+// walls have three heights: locate agrees with the exact collision test, and the
+// robot placed in each room's centre is free, all rooms in one cell (doors are wider
+// than both robots).
+TEST(FreeSpace, BenchmarkRobotsAmongWallsOfSeveralHeights) {
+  FloorPlanLayout layout;
+  layout.rooms = 2;
+  layout.columns = 2;
+  layout.cellSize = 3;
+  layout.wallHeights = {0.375, 0.75, 1.25};
+  layout.doorWidth = 1;
+  const FloorPlan plan = makeFloorPlan(layout, 1);
+  const Mesh world = makeCheckedMesh(plan.walls, "floor plan");
+  for (const Mesh& robot : {makeHouseRobot(), makeFishboneRobot(2)}) {
+    const FreeSpace space(robot, world);
+    const LocateCheck check = locateAgainstCollision(space, 500, 5);
+    std::cout << robot.triangles().size() << "-facet robot: " << space.cellCount() << " cells, " << check.free
+              << " of 500 free\n";
+    EXPECT_EQ(check.disagreements, 0) << "of 500";
+    EXPECT_GT(check.free, 0);
+    const Location first = space.locate({plan.roomCentres[0].x(), plan.roomCentres[0].y(), 0});
+    const Location second = space.locate({plan.roomCentres[1].x(), plan.roomCentres[1].y(), 0});
+    ASSERT_TRUE(first.free);
+    ASSERT_TRUE(second.free);
+    EXPECT_EQ(first.cell, second.cell);
+  }
+}
+
 // The cage: inside and outside. The other counts are not known independently.
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledFreeSpace,
                          ::testing::Values(SceneCase{"cage", 2}, SceneCase{"keyhole", -1}, SceneCase{"keyhole_narrow", -1},

@@ -407,6 +407,37 @@ TEST(Scenes, TetraFloorplanFamilyScalesWithTheRoomCount) {
             canonicalTriangles(makeScene("tetra_floorplan").world));
 }
 
+TEST(Scenes, BenchmarkRobotsHaveTheirFacetCountsAndVolumes) {
+  const Mesh house = makeHouseRobot();
+  EXPECT_EQ(house.triangles().size(), 14u);
+  // Box 0.75 x 0.75 x 0.5 and a pyramid of height 0.375 on it.
+  EXPECT_DOUBLE_EQ(house.volume(), 0.75 * 0.75 * 0.5 + 0.75 * 0.75 * 0.375 / 3);
+  for (unsigned teeth = 1; teeth <= 4; ++teeth) {
+    const Mesh fishbone = makeFishboneRobot(teeth);
+    EXPECT_EQ(fishbone.triangles().size(), 32 * teeth - 20) << teeth << " teeth";
+    // Teeth 0.125 x 0.75, the spine 0.25 wide between them, all 0.5 high.
+    EXPECT_DOUBLE_EQ(fishbone.volume(), (teeth * 0.125 * 0.75 + (teeth - 1) * 0.125 * 0.25) * 0.5);
+  }
+  EXPECT_THROW(makeFishboneRobot(0), std::invalid_argument);
+}
+
+TEST(Scenes, FloorPlanWallsTakeEachOfSeveralHeights) {
+  FloorPlanLayout layout;
+  layout.rooms = 9;
+  layout.columns = 3;
+  layout.wallHeights = {0.375, 0.75, 1.25};
+  const Mesh walls = makeCheckedMesh(makeFloorPlan(layout, 3).walls, "walls");
+  std::set<double> tops;
+  for (const Point3& v : walls.vertices()) tops.insert(v.z());
+  EXPECT_EQ(tops, (std::set<double>{0, 0.375, 0.75, 1.25}));
+  // One wall height: the same floor plan as without the list.
+  layout.wallHeights = {layout.wallHeight};
+  FloorPlanLayout single = layout;
+  single.wallHeights.clear();
+  EXPECT_EQ(canonicalTriangles(makeCheckedMesh(makeFloorPlan(layout, 3).walls, "a")),
+            canonicalTriangles(makeCheckedMesh(makeFloorPlan(single, 3).walls, "b")));
+}
+
 TEST(Scenes, NamesAreChecked) {
   EXPECT_TRUE(isSceneName("maze"));
   EXPECT_TRUE(isSceneName("tetra_floorplan_12"));

@@ -9,6 +9,8 @@
 #include <random>
 
 #include "bundled_scene.h"
+#include "freespace/problem/planar_problem.h"
+#include "freespace/space/free_space.h"
 #include "freespace/collision/exact_collision_checker.h"
 #include "freespace/topology/shell_classification.h"
 
@@ -123,6 +125,37 @@ TEST_P(BundledSceneShells, RaysFromFreeConfigurationsMeetClosedShellsFromTheirFr
   EXPECT_EQ(check.fromNegative, 0);
   EXPECT_EQ(check.openShells, 0);
   EXPECT_EQ(check.degenerate, 0);
+}
+
+/// Every sub-face of a shell bounding a free cell, probed on both sides by the exact
+/// collision test: free on its positive side, blocked on its negative side (the
+/// shell is oriented with the free side inward); and the shell is closed.
+TEST_P(BundledSceneShells, ShellsOfFreeCellsAreClosedWithTheFreeSideInward) {
+  const LoadedProblem loaded = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + GetParam());
+  const FreeSpace space(loaded.robot, loaded.world);
+  const Arrangement& arrangement = space.arrangement();
+  const SliceRays rays(arrangement, space.algebra());
+  const ExactCollisionChecker collision(space.meshes().robot, space.meshes().world);
+  int faces = 0, probed = 0, freeBelow = 0, blockedAbove = 0, open = 0;
+  for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
+    for (std::uint32_t index = 0; index < arrangement.subdivisions[patch].faceCount; ++index) {
+      const SubFaceId face{patch, index};
+      if (!space.cellOfSubFace(face)) continue;
+      ++faces;
+      open += !arrangement.shells.closed(arrangement.shells.shellOf(face));
+      const auto above = probeSubFace(arrangement, rays, face, ProbeSide::Positive);
+      const auto below = probeSubFace(arrangement, rays, face, ProbeSide::Negative);
+      if (!above || !below) continue;
+      ++probed;
+      blockedAbove += collision.inCollisionAt(above->pose);
+      freeBelow += !collision.inCollisionAt(below->pose);
+    }
+  }
+  std::cout << GetParam() << ": " << faces << " sub-faces bound free cells, " << probed << " probed on both sides\n";
+  EXPECT_GT(probed, faces / 2);
+  EXPECT_EQ(open, 0);
+  EXPECT_EQ(blockedAbove, 0);
+  EXPECT_EQ(freeBelow, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledSceneShells,

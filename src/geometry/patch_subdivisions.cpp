@@ -441,6 +441,13 @@ Sign signAtRationalAngle(const AlgebraicAngle& rationalAngle, PredicateKind kind
     });
   }
   const auto [cosine, sine] = exactCosSin(rationalAngle);
+  {
+    RoundingScope rounding;
+    if (const std::optional<Sign> sign = certainSign(value(enclosingInterval(cosine), enclosingInterval(sine)))) {
+      algebra.statistics().recordDecision(kind, static_cast<int>(PrecisionLevel::DoubleInterval));
+      return *sign;
+    }
+  }
   algebra.statistics().recordDecision(kind, static_cast<int>(PrecisionLevel::Exact));
   return exactSign(value(cosine, sine));
 }

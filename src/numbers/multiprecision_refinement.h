@@ -143,8 +143,12 @@ class PreciseRoot {
           boost::multiprecision::upper(middle) < boost::multiprecision::lower(above.low_))) {
       return std::nullopt;
     }
+    // A double there if there is one (exact arithmetic on it is cheaper).
+    const Number nearest(mpfr_get_d(&middle.backend().data()->left, MPFR_RNDN));
+    const bool doubleInside = boost::multiprecision::upper(high_) < boost::multiprecision::lower(nearest) &&
+                              boost::multiprecision::upper(nearest) < boost::multiprecision::lower(above.low_);
     Rational point;
-    mpfr_get_q(point.backend().data(), &middle.backend().data()->left);
+    mpfr_get_q(point.backend().data(), &(doubleInside ? nearest : middle).backend().data()->left);
     return point;
   }
 

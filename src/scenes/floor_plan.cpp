@@ -2,6 +2,7 @@
 // spanning tree (so every room can be reached) plus a few loops.
 
 #include <cmath>
+#include <map>
 #include <stdexcept>
 
 #include "freespace/scenes/scene_generator.h"
@@ -107,6 +108,50 @@ Opening doorOpening(const WallSegment& wall, const FloorPlanLayout& layout, deta
   return {centre - layout.doorWidth / 2, centre + layout.doorWidth / 2};
 }
 
+/// Every wall with its door cut out, one union extruded to one height.
+TriangleSoup wallsOfOneHeight(const std::vector<WallSegment>& walls, const FloorPlanLayout& layout,
+                              detail::SeededRandom& random) {
+  std::vector<Box2> rectangles;
+  for (const WallSegment& wall : walls) {
+    std::vector<Opening> openings;
+    if (wall.hasDoor) openings.push_back(doorOpening(wall, layout, random));
+    const std::vector<Box2> pieces = wallRectangles(wall.from, wall.to, layout.wallThickness, openings);
+    rectangles.insert(rectangles.end(), pieces.begin(), pieces.end());
+  }
+  return extrudeRectangleUnion(rectangles, 0, layout.wallHeight);
+}
+
+/// Each wall at one of the heights, chosen at random, between square posts at the
+/// grid's nodes, each post as high as the highest wall it holds. Walls reach one
+/// grid step into the posts, so the solids overlap without sharing an edge.
+TriangleSoup wallsOfSeveralHeights(const std::vector<WallSegment>& walls, const FloorPlanLayout& layout,
+                                   detail::SeededRandom& random) {
+  const double thickness = layout.wallThickness;
+  std::map<std::pair<double, double>, double> posts;  // node -> height
+  std::vector<TriangleSoup> parts;
+  for (const WallSegment& wall : walls) {
+    std::vector<Opening> openings;
+    if (wall.hasDoor) openings.push_back(doorOpening(wall, layout, random));
+    const double height = layout.wallHeights[static_cast<std::size_t>(
+        random.integer(0, static_cast<std::int64_t>(layout.wallHeights.size()) - 1))];
+    const Point2 direction = (wall.to - wall.from).normalized();
+    // wallRectangles adds half the thickness past both ends.
+    const double inset = thickness - kSceneGrid;
+    const std::vector<Box2> pieces =
+        wallRectangles(wall.from + inset * direction, wall.to - inset * direction, thickness, openings);
+    parts.push_back(extrudeRectangleUnion(pieces, 0, height));
+    for (const Point2& node : {wall.from, wall.to}) {
+      double& post = posts[{node.x(), node.y()}];
+      post = std::max(post, height);
+    }
+  }
+  for (const auto& [node, height] : posts) {
+    const Point3 corner(node.first - thickness / 2, node.second - thickness / 2, 0);
+    parts.push_back(makeBox(Box3(corner, corner + Point3(thickness, thickness, height))));
+  }
+  return joinParts(parts);
+}
+
 }  // namespace
 
 FloorPlan makeFloorPlan(const FloorPlanLayout& layout, std::uint64_t seed) {
@@ -120,15 +165,8 @@ FloorPlan makeFloorPlan(const FloorPlanLayout& layout, std::uint64_t seed) {
   addSpanningTreeDoors(walls, layout.rooms, random);
   addExtraDoors(walls, layout.extraDoors, random);
 
-  std::vector<Box2> rectangles;
   FloorPlan plan;
-  for (const WallSegment& wall : walls) {
-    std::vector<Opening> openings;
-    if (wall.hasDoor) openings.push_back(doorOpening(wall, layout, random));
-    const std::vector<Box2> pieces = wallRectangles(wall.from, wall.to, layout.wallThickness, openings);
-    rectangles.insert(rectangles.end(), pieces.begin(), pieces.end());
-  }
-  plan.walls = extrudeRectangleUnion(rectangles, 0, layout.wallHeight);
+  plan.walls = layout.wallHeights.size() > 1 ? wallsOfSeveralHeights(walls, layout, random) : wallsOfOneHeight(walls, layout, random);
   for (unsigned room = 0; room < layout.rooms; ++room) plan.roomCentres.push_back(grid.centre(static_cast<int>(room)));
   return plan;
 }

@@ -62,6 +62,34 @@ Mesh makeTetrahedronRobot() {
   return centredRobot(soup, "tetrahedron robot");
 }
 
+Mesh makeHouseRobot() {
+  const double a = 0.375, eaves = 0.5, apex = 0.875;
+  TriangleSoup soup;
+  soup.vertices = {{-a, -a, 0},     {a, -a, 0},     {a, a, 0},     {-a, a, 0},   {-a, -a, eaves},
+                   {a, -a, eaves}, {a, a, eaves}, {-a, a, eaves}, {0, 0, apex}};
+  soup.triangles = {{0, 2, 1}, {0, 3, 2}, {0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5}, {2, 3, 7},
+                    {2, 7, 6}, {3, 0, 4}, {3, 4, 7}, {4, 5, 8}, {5, 6, 8}, {6, 7, 8}, {7, 4, 8}};
+  return centredRobot(soup, "house robot");
+}
+
+Mesh makeFishboneRobot(unsigned teeth) {
+  if (teeth == 0) throw std::invalid_argument("fishbone robot: needs a tooth");
+  const double tooth = 0.125, spine = 0.125, reach = 0.375;
+  // Along y < 0 from left to right, the teeth and the notches between them; the
+  // side y > 0 is its mirror image, walked back.
+  Polygon2 lower;
+  for (unsigned i = 0; i < teeth; ++i) {
+    const double x = 2 * tooth * i;
+    if (i > 0) lower.push_back({x, -spine});
+    lower.push_back({x, -reach});
+    lower.push_back({x + tooth, -reach});
+    if (i + 1 < teeth) lower.push_back({x + tooth, -spine});
+  }
+  Polygon2 outline = lower;
+  for (auto corner = lower.rbegin(); corner != lower.rend(); ++corner) outline.push_back({corner->x(), -corner->y()});
+  return centredRobot(extrudePolygon(outline, 0, 0.5), "fishbone robot");
+}
+
 Mesh makeOverhangRobot() {
   const TriangleSoup base = makeBox(Box3(Point3(-0.5, -0.5, 0), Point3(0.5, 0.5, 0.5)));
   const TriangleSoup plate = makeBox(Box3(Point3(-1, -0.5, 0.625), Point3(1, 1.5, 0.875)));

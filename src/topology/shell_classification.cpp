@@ -15,7 +15,8 @@ using slices::Point;
 const Rational kSmallest = powerOfHalf(200);
 
 std::optional<SubFaceProbe> probeInSlab(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
-                                        const PatchSlab& slab, std::size_t gap) {
+                                        const PatchSlab& slab, std::size_t gap, ProbeSide side) {
+  const int sign = side == ProbeSide::Positive ? 1 : -1;
   const AlgebraicAngle& sample = slab.sample;
   const auto [cosine, sine] = exactCosSin(sample);
   const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[face.patch], cosine, sine);
@@ -23,9 +24,9 @@ std::optional<SubFaceProbe> probeInSlab(const Arrangement& arrangement, const Sl
   const Point middle = segment.at((low + high) / 2);
   const Rational scale = (1 + abs(middle[0]) + abs(middle[1])) / (abs(segment.nx) + abs(segment.ny));
   for (Rational distance = scale / 1024; distance > scale * kSmallest; distance /= 16) {
-    const Point off{middle[0] + distance * segment.nx, middle[1] + distance * segment.ny};
+    const Point off{middle[0] + sign * distance * segment.nx, middle[1] + sign * distance * segment.ny};
     const RayHit hit = rays.castTo(sample, off, middle);
-    if (hit.kind == RayHit::Kind::SubFace && hit.face == face && hit.fromPositiveSide) {
+    if (hit.kind == RayHit::Kind::SubFace && hit.face == face && hit.fromPositiveSide == (sign > 0)) {
       return SubFaceProbe{{cosine, sine, off[0], off[1]}};
     }
   }
@@ -34,11 +35,12 @@ std::optional<SubFaceProbe> probeInSlab(const Arrangement& arrangement, const Sl
 
 }  // namespace
 
-std::optional<SubFaceProbe> probeSubFace(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face) {
+std::optional<SubFaceProbe> probeSubFace(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
+                                         ProbeSide side) {
   for (const PatchSlab& slab : arrangement.subdivisions[face.patch].slabs) {
     for (std::size_t gap = 0; gap < slab.faces.size(); ++gap) {
       if (slab.faces[gap] != face.face) continue;
-      if (auto probe = probeInSlab(arrangement, rays, face, slab, gap)) return probe;
+      if (auto probe = probeInSlab(arrangement, rays, face, slab, gap, side)) return probe;
     }
   }
   return std::nullopt;

@@ -101,6 +101,9 @@ struct FloorPlanLayout {
   double cellSize = 3.5;
   double wallThickness = 0.25;
   double wallHeight = 0.5;
+  /// When not empty, each wall (a room's side) takes one of these heights at
+  /// random instead of wallHeight; walls of different heights overlap at corners.
+  std::vector<double> wallHeights;
   double doorWidth = 1.25;
   unsigned extraDoors = 3;
 };
@@ -132,6 +135,13 @@ Mesh makeTRobot(double height);
 Mesh makeURobot(double height);
 /// A tetrahedron: a triangle of minimum width 0.75 on the floor, apex at z = 0.75.
 Mesh makeTetrahedronRobot();
+/// A house: a 0.75 x 0.75 box over z in [0, 0.5] under a pyramid roof with its apex
+/// at z = 0.875; 14 facets (convex).
+Mesh makeHouseRobot();
+/// A fishbone: a spine 0.25 wide along x with `teeth` teeth 0.125 wide and 0.75 long
+/// across it, 0.125 apart, extruded over z in [0, 0.5]; 32 teeth - 20 facets
+/// (non-convex; one tooth is a box).
+Mesh makeFishboneRobot(unsigned teeth);
 /// A genuinely 3D robot of two components: a 1 x 1 base over z in [0, 0.5] and a
 /// 2 x 2 plate over z in [0.625, 0.875] that overhangs the base by 1 towards +y.
 Mesh makeOverhangRobot();

@@ -14,11 +14,15 @@ struct SubFaceProbe {
   ExactPose pose;
 };
 
+enum class ProbeSide { Positive, Negative };
+
 /// A probe of the sub-face at the sample angle of one of its slabs, at the middle of
-/// its piece of segment, moved along the line's normal toward its positive side by a
-/// distance that shrinks until the path back meets the sub-face first (SliceRays,
-/// exact). None when no slab of the sub-face allows it.
-std::optional<SubFaceProbe> probeSubFace(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face);
+/// its piece of segment, moved along the line's normal toward its positive (or
+/// negative) side by a distance that shrinks until the path back meets the sub-face
+/// first, from that side (SliceRays, exact). None when no slab of the sub-face
+/// allows it.
+std::optional<SubFaceProbe> probeSubFace(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
+                                         ProbeSide side = ProbeSide::Positive);
 
 enum class ShellSide { Free, Blocked, Open };
 
