@@ -1,6 +1,6 @@
 // The construction over scenes of growing size: the tetrahedron in floor plans of
 // 1, 2, 4, ... rooms (the scene generator's tetra_floorplan_N); with --mixed-rooms
-// the 14-facet house robot in floor plans of 1, 2, 4, ... rooms whose walls have
+// the 14-facet house robot in floor plans of 1, 2, 4, ... rooms up to MAX whose walls have
 // three heights (0.375, 0.75, 1.25: below, between and above the robot's features);
 // with --robots the robots of 4 to 108 facets in one such floor plan; then any
 // scenes named on the command line (generator names or .cfg files). Prints per scene the
@@ -88,6 +88,10 @@ void writePlot(const std::vector<Row>& rows, std::ostream& out) {
   out << "</svg>\n";
 }
 
+/// The room counts 1, 2, 4, ... and the largest one last: twice `rooms`, at most
+/// `largest` (and past it when `rooms` is `largest`, to end the loop).
+unsigned doubledUpTo(unsigned rooms, unsigned largest) { return rooms < largest ? std::min(2 * rooms, largest) : 2 * rooms; }
+
 /// A floor plan of `rooms` rooms of 3 x 3 with 1 wide doors, as the tetrahedron's,
 /// its walls of three heights.
 Mesh mixedHeightFloorPlan(unsigned rooms) {
@@ -127,7 +131,7 @@ int main(int argc, char** argv) {
     rows.push_back(measure(scene.name, scene.robot, scene.world));
   }
   const Mesh house = makeHouseRobot();
-  for (unsigned rooms = 1; rooms <= maxMixedRooms; rooms *= 2) {
+  for (unsigned rooms = 1; rooms <= maxMixedRooms; rooms = doubledUpTo(rooms, maxMixedRooms)) {
     rows.push_back(measure("house_mixed_" + std::to_string(rooms), house, mixedHeightFloorPlan(rooms)));
   }
   if (robotsRooms > 0) {

@@ -45,11 +45,12 @@ Comparison compareReadings(const std::vector<PatchGeometry>& patches, AngleAlgeb
   const std::vector<PatchOverlap> overlaps = patchOverlaps(patches, algebra);
   const std::vector<PatchVertex> vertices = patchVertices(patches, curves, overlaps, algebra);
   const std::vector<PatchSubdivision> subdivisions = patchSubdivisions(patches, curves, vertices, overlaps, algebra);
-  constexpr int kDouble = static_cast<int>(PrecisionLevel::DoubleInterval), kExact = static_cast<int>(PrecisionLevel::Exact);
+  constexpr int kDouble = static_cast<int>(PrecisionLevel::DoubleInterval),
+                kExact = static_cast<int>(PrecisionLevel::Exact);
   const auto& edgeCounts = algebra.statistics().counts(PredicateKind::EdgeCrossSection).decided;
   const std::size_t doubleBefore = edgeCounts[kDouble], exactBefore = edgeCounts[kExact];
-  const SubFaceGluing filtered = glueAcrossHorizontalEdges(patches, curves, overlaps, subdivisions, algebra, {},
-                                                           EdgeReading::Filtered);
+  const SubFaceGluing filtered =
+      glueAcrossHorizontalEdges(patches, curves, overlaps, subdivisions, algebra, {}, EdgeReading::Filtered);
   Comparison comparison;
   comparison.edgesInIntervals = edgeCounts[kDouble] - doubleBefore;
   comparison.edgesExact = edgeCounts[kExact] - exactBefore;

@@ -1,11 +1,13 @@
 #include <algorithm>
 #include <map>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <unordered_map>
 
 #include "angle_bounds.h"
 #include "contact_vectors.h"
+#include "freespace/geometry/patch_box_index.h"
 #include "freespace/geometry/patch_vertex.h"
 
 namespace freespace {
@@ -151,22 +153,25 @@ struct CoincidentPair {
 };
 
 /// Contacts with one facet, of two vertices of the other body: they have the same
-/// normal n = R a1 + a2 at every angle, so parallel lines.
+/// normal n = R a1 + a2 at every angle, so parallel lines. Only pairs whose patch
+/// boxes meet can overlap (a facet of one body meets most vertices of the other).
 std::vector<CoincidentPair> parallelPairs(const std::vector<PatchGeometry>& patches) {
-  std::map<std::pair<int, std::uint32_t>, std::vector<std::uint32_t>> byFacet;
+  std::vector<std::optional<std::pair<int, std::uint32_t>>> facetOf(patches.size());
   for (std::uint32_t i = 0; i < patches.size(); ++i) {
     const Contact& contact = patches[i].patch.contact;
-    if (contact.kind == ContactKind::VertexFacet) byFacet[{0, contact.world}].push_back(i);
-    if (contact.kind == ContactKind::FacetVertex) byFacet[{1, contact.robot}].push_back(i);
+    if (contact.kind == ContactKind::VertexFacet) facetOf[i] = {0, contact.world};
+    if (contact.kind == ContactKind::FacetVertex) facetOf[i] = {1, contact.robot};
   }
-  std::vector<CoincidentPair> pairs;
-  for (const auto& [facet, members] : byFacet) {
-    for (std::size_t i = 0; i < members.size(); ++i) {
-      for (std::size_t j = i + 1; j < members.size(); ++j) {
-        pairs.push_back({members[i], members[j], coincidence(patches[members[i]], patches[members[j]])});
-      }
+  const PatchBoxIndex index(patches);
+  std::set<std::pair<std::uint32_t, std::uint32_t>> meeting;
+  for (const auto& [box, patch] : index.boxes()) {
+    if (!facetOf[patch]) continue;
+    for (std::uint32_t other : index.meeting(box)) {
+      if (patch < other && facetOf[other] == facetOf[patch]) meeting.emplace(patch, other);
     }
   }
+  std::vector<CoincidentPair> pairs;
+  for (const auto& [a, b] : meeting) pairs.push_back({a, b, coincidence(patches[a], patches[b])});
   return pairs;
 }
 

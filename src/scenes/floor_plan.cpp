@@ -166,7 +166,8 @@ FloorPlan makeFloorPlan(const FloorPlanLayout& layout, std::uint64_t seed) {
   addExtraDoors(walls, layout.extraDoors, random);
 
   FloorPlan plan;
-  plan.walls = layout.wallHeights.size() > 1 ? wallsOfSeveralHeights(walls, layout, random) : wallsOfOneHeight(walls, layout, random);
+  plan.walls = layout.wallHeights.size() > 1 ? wallsOfSeveralHeights(walls, layout, random)
+                                             : wallsOfOneHeight(walls, layout, random);
   for (unsigned room = 0; room < layout.rooms; ++room) plan.roomCentres.push_back(grid.centre(static_cast<int>(room)));
   return plan;
 }

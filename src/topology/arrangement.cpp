@@ -13,9 +13,8 @@ Arrangement buildArrangement(std::vector<PatchGeometry> patches, AngleAlgebra& a
   a.subdivisions = clock.run("subdivision", [&] {
     return patchSubdivisions(a.patches, a.curves, a.vertices, a.overlaps, algebra, cancellation);
   });
-  a.acrossCurves = clock.run("gluing_curves", [&] {
-    return glueAcrossCurves(a.patches, a.curves, a.subdivisions, algebra, cancellation);
-  });
+  a.acrossCurves = clock.run(
+      "gluing_curves", [&] { return glueAcrossCurves(a.patches, a.curves, a.subdivisions, algebra, cancellation); });
   a.aroundSpirals =
       clock.run("gluing_spirals", [&] { return glueAroundSpirals(a.patches, a.subdivisions, algebra, cancellation); });
   a.acrossHorizontalEdges = clock.run("gluing_horizontal", [&] {

@@ -98,8 +98,8 @@ class IntervalEdge {
     const Interval alongNormal = dot(line.n, normal_);
     const std::optional<Sign> orientation = certainSign(alongNormal);
     if (!orientation || *orientation == Sign::Zero) return std::nullopt;
-    return Slope{-(dot(line.dn, origin_) + line.dw) / alongNormal, -dot(line.dn, across_) / (squaredNorm_ * alongNormal),
-                 static_cast<int>(*orientation)};
+    return Slope{-(dot(line.dn, origin_) + line.dw) / alongNormal,
+                 -dot(line.dn, across_) / (squaredNorm_ * alongNormal), static_cast<int>(*orientation)};
   }
 
  private:
@@ -165,7 +165,8 @@ std::optional<std::optional<EdgeRay>> rayOver(const IntervalSide& side, double m
     if (beforeM && gap != i) return std::nullopt;
     gap += beforeM;
   }
-  return std::optional<EdgeRay>(EdgeRay{side.side.below, side.slope.orientation, {side.side.patch, side.slab->faces[gap]}});
+  return std::optional<EdgeRay>(
+      EdgeRay{side.side.below, side.slope.orientation, {side.side.patch, side.slab->faces[gap]}});
 }
 
 }  // namespace
@@ -173,7 +174,8 @@ std::optional<std::optional<EdgeRay>> rayOver(const IntervalSide& side, double m
 std::optional<EdgeCrossSections> crossSectionsInIntervals(const HorizontalEdge& edge,
                                                           const std::vector<const PatchSlab*>& slabs,
                                                           const std::vector<PatchGeometry>& patches,
-                                                          const std::vector<PatchCurve>& curves, AngleAlgebra& algebra) {
+                                                          const std::vector<PatchCurve>& curves,
+                                                          AngleAlgebra& algebra) {
   RoundingScope rounding;
   const IntervalEdge at(edge, patches);
   if (!at.valid()) return std::nullopt;
@@ -202,9 +204,8 @@ std::optional<EdgeCrossSections> crossSectionsInIntervals(const HorizontalEdge& 
           std::find_if(sides.begin(), sides.end(), [&](const IntervalSide& s) { return s.side.patch == other; });
       // A crossing line, or equal slopes: a_i + m b_i = a_j + m b_j.
       const std::optional<Interval> position =
-          point[0] == kCrossingLine
-              ? at.positionOfCrossing(patches[other])
-              : quotient(otherSide->slope.a - side.slope.a, side.slope.b - otherSide->slope.b);
+          point[0] == kCrossingLine ? at.positionOfCrossing(patches[other])
+                                    : quotient(otherSide->slope.a - side.slope.a, side.slope.b - otherSide->slope.b);
       if (!position) return std::nullopt;
       name({point, side.side.patch, -1, other}, *position);
     }
