@@ -1,6 +1,7 @@
 #include <map>
 
 #include "freespace/geometry/patch_segment.h"
+#include "freespace/topology/slice_pieces.h"
 #include "horizontal_edge.h"
 
 namespace freespace::gluing {
@@ -29,7 +30,8 @@ struct LineWithSlope {
   Interval w, dw;
 };
 
-LineWithSlope lineWithSlope(const PatchGeometry& patch, const Interval& cosine, const Interval& sine) {
+LineWithSlope lineWithSlope(const PatchGeometry& patch, const slices::IntervalSlice& slice) {
+  const Interval &cosine = slice.cosine, &sine = slice.sine;
   const PatchLine<Interval> line = lineOf<Interval>(patch.line);
   const LineAtAngle<Interval> at = lineAtAngle(line, cosine, sine);
   return {{at.nx, at.ny},
@@ -60,12 +62,8 @@ std::optional<bool> certainlyBelow(const Interval& a, const Interval& b) {
 class IntervalEdge {
  public:
   /// Needs the first side's normal to be certainly not zero (`valid`).
-  IntervalEdge(const HorizontalEdge& edge, const std::vector<PatchGeometry>& patches) {
-    const Interval t(edge.angle.lower(), edge.angle.upper()), w = Interval(1) + t * t;
-    cosine_ = (Interval(1) - t * t) / w;
-    sine_ = (t + t) / w;
-    if (edge.angle.chart() == 1) cosine_ = -cosine_, sine_ = -sine_;
-    const LineWithSlope first = lineWithSlope(patches[edge.sides.front().patch], cosine_, sine_);
+  IntervalEdge(const HorizontalEdge& edge, const std::vector<PatchGeometry>& patches) : slice_(edge.angle) {
+    const LineWithSlope first = lineWithSlope(patches[edge.sides.front().patch], slice_);
     normal_ = first.n;
     squaredNorm_ = dot(normal_, normal_);
     across_ = {-normal_[1], normal_[0]};
@@ -78,13 +76,12 @@ class IntervalEdge {
   Interval position(const Vector& p) const { return p[1] * normal_[0] - p[0] * normal_[1]; }
 
   Interval positionOfEnd(const PatchGeometry& patch, int k) const {
-    const std::array<Interval, 2> p = spiralPoint(spiralOf<Interval>(patch.ends[k]), cosine_, sine_);
-    return position({p[0], p[1]});
+    return position(slice_.end(patch, k));
   }
 
   /// Where the line of a patch not on the edge crosses L: n . d(m) + w = 0.
   std::optional<Interval> positionOfCrossing(const PatchGeometry& patch) const {
-    const LineWithSlope line = lineWithSlope(patch, cosine_, sine_);
+    const LineWithSlope line = lineWithSlope(patch, slice_);
     return quotient(-(dot(line.n, origin_) + line.w) * squaredNorm_, dot(line.n, across_));
   }
 
@@ -94,7 +91,7 @@ class IntervalEdge {
   };
 
   std::optional<Slope> slopeOf(const PatchGeometry& patch) const {
-    const LineWithSlope line = lineWithSlope(patch, cosine_, sine_);
+    const LineWithSlope line = lineWithSlope(patch, slice_);
     const Interval alongNormal = dot(line.n, normal_);
     const std::optional<Sign> orientation = certainSign(alongNormal);
     if (!orientation || *orientation == Sign::Zero) return std::nullopt;
@@ -103,7 +100,8 @@ class IntervalEdge {
   }
 
  private:
-  Interval cosine_, sine_, squaredNorm_;
+  slices::IntervalSlice slice_;
+  Interval squaredNorm_;
   Vector normal_, across_, origin_;
   bool valid_ = false;
 };

@@ -51,18 +51,25 @@ inline std::pair<Rational, Rational> pieceOf(const Arrangement& arrangement, std
           gap == slab.curves.size() ? Rational(1) : lambdaOf(slab.curves[gap])};
 }
 
-/// The slice at a rational angle in double intervals, a filter before the exact
-/// one (use inside a RoundingScope).
+/// The slice at an angle in double intervals, a filter before the exact one (use
+/// inside a RoundingScope): a rational angle's cosine and sine enclosed, or those of
+/// an algebraic angle's enclosure.
 struct IntervalSlice {
   Interval cosine, sine;
 
-  explicit IntervalSlice(const AlgebraicAngle& rationalAngle) {
-    if (rationalAngle.lower() == rationalAngle.upper()) {
-      HalfAngle{rationalAngle.chart(), rationalAngle.lower()}.cosSin(cosine, sine);
-    } else {
-      const auto [c, s] = exactCosSin(rationalAngle);
+  explicit IntervalSlice(const AlgebraicAngle& angle) {
+    if (angle.lower() == angle.upper()) {
+      HalfAngle{angle.chart(), angle.lower()}.cosSin(cosine, sine);
+    } else if (angle.isRational()) {
+      const auto [c, s] = exactCosSin(angle);
       cosine = enclosingInterval(c);
       sine = enclosingInterval(s);
+    } else {
+      // HalfAngle's formulas over the interval of t.
+      const Interval t(angle.lower(), angle.upper()), w = Interval(1) + t * t;
+      const Interval chartSign(angle.chart() == 0 ? 1.0 : -1.0);
+      cosine = chartSign * (Interval(1) - t * t) / w;
+      sine = chartSign * (t + t) / w;
     }
   }
 
