@@ -14,9 +14,10 @@ namespace {
 
 constexpr int kDoubleLevel = static_cast<int>(PrecisionLevel::DoubleInterval);
 constexpr int kExactLevel = static_cast<int>(PrecisionLevel::Exact);
-/// Decisions in double intervals from tight coefficients (AngleFunction::tight) are
-/// counted at the first MPFI level, whose precision computed the coefficients.
-constexpr int kTightLevel = static_cast<int>(PrecisionLevel::Multiprecision);
+/// Decisions from a function's formula evaluated in 108-bit MPFI (tight coefficients,
+/// AngleFunction::tight, and roots bisected in MPFI) are counted at the first MPFI
+/// level, whose precision they use.
+constexpr int kPreciseLevel = static_cast<int>(PrecisionLevel::Multiprecision);
 /// Bisections tried in double intervals before a predicate escalates.
 constexpr int kDoubleRefinements = 48;
 
@@ -313,7 +314,7 @@ Sign AngleAlgebra::signAt(const AngleFunction& function, const AlgebraicAngle& a
   const EscalationTimer timer(statistics_, PredicateKind::SignAtRoot);
   refined.useTightCoefficients();
   if (const auto sign = signInDoubles(function.tight(angle.chart()), refined)) {
-    return record(PredicateKind::SignAtRoot, kTightLevel, *sign);
+    return record(PredicateKind::SignAtRoot, kPreciseLevel, *sign);
   }
   const RationalPolynomial& exact = function.exact(angle.chart());
   if (angle.isRational()) return record(PredicateKind::SignAtRoot, kExactLevel, freespace::signAt(exact, angle.root().lo));
@@ -414,7 +415,7 @@ std::optional<int> AngleAlgebra::comparePrecisely(const AlgebraicAngle& first, c
   const auto apart = apartPrecisely(first, second);
   if (!apart) return std::nullopt;
   const int order = apart->first.below(apart->second) ? -1 : 1;
-  record(PredicateKind::RootOrder, kTightLevel, signOf(order));
+  record(PredicateKind::RootOrder, kPreciseLevel, signOf(order));
   return order;
 }
 
@@ -423,7 +424,7 @@ std::optional<int> AngleAlgebra::compareTightly(AlgebraicAngle& first, Algebraic
   if (!tightened) return std::nullopt;
   const EscalationTimer timer(statistics_, PredicateKind::RootOrder);
   const std::optional<int> order = compareInDoubles(first, second);
-  if (order) record(PredicateKind::RootOrder, kTightLevel, signOf(*order));
+  if (order) record(PredicateKind::RootOrder, kPreciseLevel, signOf(*order));
   return order;
 }
 

@@ -88,7 +88,7 @@ std::optional<int> compareRootsInPrecision(const RationalPolynomial& f, Isolatin
 /// A fixed root (a rational angle) is an interval that is not narrowed.
 class PreciseRoot {
  public:
-  using Number = MultiprecisionInterval<kMultiprecisionDigits[0]>;
+  using Number = PreciseInterval;
 
   /// From an isolating double enclosure: nothing when the signs at its ends are not
   /// certain and opposite.
@@ -152,11 +152,6 @@ class PreciseRoot {
     return point;
   }
 
-  Number enclosure() const {
-    Number result;
-    mpfi_interv_fr(result.backend().data(), &low_.backend().data()->left, &high_.backend().data()->right);
-    return result;
-  }
 
  private:
   PreciseRoot(Number low, Number high) : low_(std::move(low)), high_(std::move(high)) {}

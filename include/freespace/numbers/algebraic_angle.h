@@ -19,9 +19,6 @@
 
 namespace freespace {
 
-/// MPFI intervals of the first precision of the ladder (about 108 bits).
-using PreciseInterval = MultiprecisionInterval<kMultiprecisionDigits[0]>;
-
 /// The polynomial with each coefficient rounded outward to double intervals.
 template <unsigned Digits10>
 Polynomial<Interval> enclosingDoubles(const Polynomial<MultiprecisionInterval<Digits10>>& p) {

@@ -20,6 +20,9 @@ using MultiprecisionInterval = boost::multiprecision::number<boost::multiprecisi
 inline constexpr unsigned kMultiprecisionDigits[] = {32, 64, 128, 256};
 inline constexpr int kMultiprecisionLevels = 4;
 
+/// MPFI intervals of the first precision of the ladder (about 108 bits).
+using PreciseInterval = MultiprecisionInterval<kMultiprecisionDigits[0]>;
+
 template <unsigned Digits10>
 std::optional<Sign> certainSign(const MultiprecisionInterval<Digits10>& value) {
   if (boost::multiprecision::lower(value) > 0) return Sign::Positive;
