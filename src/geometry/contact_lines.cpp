@@ -96,6 +96,7 @@ PatchLine<T> lineOf(const ContactPoints& contact) {
 
 template PatchLine<Interval> lineOf<Interval>(const ContactPoints&);
 template PatchLine<Rational> lineOf<Rational>(const ContactPoints&);
+template PatchLine<DoubleDoubleInterval> lineOf<DoubleDoubleInterval>(const ContactPoints&);
 // The adaptive engine's ladder, for predicates that use patch lines.
 template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[0]>> lineOf(const ContactPoints&);
 template PatchLine<MultiprecisionInterval<kMultiprecisionDigits[1]>> lineOf(const ContactPoints&);

@@ -86,4 +86,12 @@ inline AngleFunction::RootKey edgeFacetKey(bool robotPair, std::uint32_t x, std:
   return {robotPair ? 0u : 1u, std::min(x, y), std::max(x, y), plane[0], plane[1], plane[2]};
 }
 
+/// Whether an EF key names the zero function: a pair of one vertex (x - x = 0) or a
+/// plane through a repeated vertex (its normal is zero). Such keys come from SF
+/// functions whose spiral lies on the line at every angle.
+inline bool namesZeroFunction(const AngleFunction::RootKey& key) {
+  const bool edgeFacet = key[0] <= 1;
+  return edgeFacet && (key[1] == key[2] || key[3] == key[4] || key[4] == key[5]);
+}
+
 }  // namespace freespace::detail

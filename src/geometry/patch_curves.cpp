@@ -144,10 +144,18 @@ AngleFunction::RootKey spiralLineKey(const ContactPoints& line, const SegmentEnd
 
 std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, const SpiralPoints& end,
                                                   const SegmentEnd& endFeatures) {
+  const std::optional<AngleFunction::RootKey> edgeFacet = spiralFacetKey(line, endFeatures);
+  if (edgeFacet && detail::namesZeroFunction(*edgeFacet)) {
+    // Exactly zero, with no arithmetic that could blur it.
+    return std::make_shared<AngleFunction>([](auto type, int) {
+      using T = typename decltype(type)::type;
+      return Polynomial<T>({T(0)});
+    }, edgeFacet);
+  }
   return std::make_shared<AngleFunction>([line, end](auto type, int chart) {
     using T = typename decltype(type)::type;
     return tangentPolynomial(spiralFacetForm(lineOf<T>(line), spiralOf<T>(end)), chart);
-  }, spiralFacetKey(line, endFeatures).value_or(spiralLineKey(line, endFeatures)));
+  }, edgeFacet.value_or(spiralLineKey(line, endFeatures)));
 }
 
 PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t second, const PatchGeometry& b,

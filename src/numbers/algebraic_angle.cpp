@@ -14,9 +14,10 @@ namespace {
 
 constexpr int kDoubleLevel = static_cast<int>(PrecisionLevel::DoubleInterval);
 constexpr int kExactLevel = static_cast<int>(PrecisionLevel::Exact);
-/// Decisions from a function's formula evaluated in 108-bit MPFI (tight coefficients,
-/// AngleFunction::tight, and roots bisected in MPFI) are counted at the first MPFI
-/// level, whose precision they use.
+/// Decisions from a function's double-double coefficients rounded to doubles (tight
+/// coefficients, AngleFunction::tight).
+constexpr int kTightLevel = static_cast<int>(PrecisionLevel::DoubleDouble);
+/// Decisions from roots bisected in 108-bit MPFI.
 constexpr int kPreciseLevel = static_cast<int>(PrecisionLevel::Multiprecision);
 /// Bisections tried in double intervals before a predicate escalates.
 constexpr int kDoubleRefinements = 48;
@@ -164,30 +165,58 @@ std::optional<Sign> signInDoubles(const Polynomial<Interval>& p, AlgebraicAngle&
 
 }  // namespace
 
+/// Exact polynomials read back: the double-double ones enclose them.
+struct AngleFunction::ExactEvaluator final : Evaluator {
+  explicit ExactEvaluator(std::array<RationalPolynomial, 2> polynomials) : polynomials(std::move(polynomials)) {}
+  Polynomial<DoubleDoubleInterval> doubleDouble(int chart) const override {
+    std::vector<DoubleDoubleInterval> coefficients;
+    for (const Rational& coefficient : polynomials[chart].coefficients()) coefficients.emplace_back(coefficient);
+    return Polynomial<DoubleDoubleInterval>(std::move(coefficients));
+  }
+  RationalPolynomial exact(int chart) const override { return polynomials[chart]; }
+  std::array<RationalPolynomial, 2> polynomials;
+};
+
 AngleFunction::AngleFunction(std::array<RationalPolynomial, 2> exact, std::optional<RootKey> key)
-    : exactFormula_([exact](int chart) { return exact[chart]; }),
-      preciseFormula_([exact](int chart) { return detail::enclosePolynomial<kMultiprecisionDigits[0]>(exact[chart]); }),
-      key_(key) {
+    : key_(key) {
   for (int chart = 0; chart < 2; ++chart) {
     std::vector<Interval> coefficients;
     for (const Rational& coefficient : exact[chart].coefficients()) coefficients.push_back(enclosingInterval(coefficient));
     approximate_[chart] = Polynomial<Interval>(std::move(coefficients));
     tight_[chart] = approximate_[chart];  // already as narrow as doubles allow
   }
+  evaluator_ = std::make_unique<ExactEvaluator>(std::move(exact));
+}
+
+const Polynomial<DoubleDoubleInterval>& AngleFunction::doubleDouble(int chart) const {
+  if (!doubleDouble_[chart]) doubleDouble_[chart] = evaluator_->doubleDouble(chart);
+  return *doubleDouble_[chart];
 }
 
 const Polynomial<Interval>& AngleFunction::tight(int chart) const {
-  if (!tight_[chart]) tight_[chart] = enclosingDoubles(precise(chart));
+  if (!tight_[chart]) {
+    std::vector<Interval> coefficients;
+    for (const DoubleDoubleInterval& coefficient : doubleDouble(chart).coefficients()) {
+      coefficients.push_back(enclosingInterval(coefficient));
+    }
+    tight_[chart] = Polynomial<Interval>(std::move(coefficients));
+  }
   return *tight_[chart];
 }
 
 const Polynomial<PreciseInterval>& AngleFunction::precise(int chart) const {
-  if (!precise_[chart]) precise_[chart] = preciseFormula_(chart);
+  if (!precise_[chart]) {
+    std::vector<PreciseInterval> coefficients;
+    for (const DoubleDoubleInterval& coefficient : doubleDouble(chart).coefficients()) {
+      coefficients.push_back(enclosingPreciseInterval(coefficient));
+    }
+    precise_[chart] = Polynomial<PreciseInterval>(std::move(coefficients));
+  }
   return *precise_[chart];
 }
 
 const RationalPolynomial& AngleFunction::exact(int chart) const {
-  if (!exact_[chart]) exact_[chart] = trimmed(exactFormula_(chart));
+  if (!exact_[chart]) exact_[chart] = trimmed(evaluator_->exact(chart));
   return *exact_[chart];
 }
 
@@ -243,26 +272,24 @@ double AlgebraicAngle::radians() const {
 
 bool AlgebraicAngle::refineInDoubles() {
   if (!function_ || !(lower_ < upper_)) return false;
-  const double middle = 0.5 * (lower_ + upper_);
-  if (!(middle > lower_ && middle < upper_)) return false;
-  RoundingScope rounding;
   const Polynomial<Interval>& p = tight_ ? function_->tight(chart_) : function_->approximate(chart_);
+  const double width = upper_ - lower_;
+  RoundingScope rounding;
   const std::optional<Sign> atLower = certainSign(p.evaluate(Interval(lower_)));
   const std::optional<Sign> atUpper = certainSign(p.evaluate(Interval(upper_)));
-  const std::optional<Sign> atMiddle = certainSign(p.evaluate(Interval(middle)));
   // Bisect by sign only across a certain sign change: the enclosure holds one
   // distinct root, and if p changes sign over it that root is the only change. A
   // root of even multiplicity is left to the exact level.
-  if (!atLower || !atUpper || !atMiddle || *atMiddle == Sign::Zero || *atLower != -*atUpper ||
-      *atLower == Sign::Zero) {
-    return false;
+  if (!atLower || !atUpper || *atLower != -*atUpper || *atLower == Sign::Zero) return false;
+  for (const double fraction : detail::kSplitFractions) {
+    const double point = lower_ + fraction * width;  // rounded upward: still a double
+    if (!(point > lower_ && point < upper_)) continue;
+    const std::optional<Sign> atPoint = certainSign(p.evaluate(Interval(point)));
+    if (!atPoint || *atPoint == Sign::Zero) continue;
+    (*atPoint == *atLower ? lower_ : upper_) = point;
+    return true;
   }
-  if (*atMiddle == *atLower) {
-    lower_ = middle;
-  } else {
-    upper_ = middle;
-  }
-  return true;
+  return false;
 }
 
 bool AlgebraicAngle::useTightCoefficients() {
@@ -274,15 +301,26 @@ bool AlgebraicAngle::useTightCoefficients() {
 std::vector<AlgebraicAngle> AngleAlgebra::roots(const std::shared_ptr<const AngleFunction>& function,
                                                 PredicateKind kind) {
   std::vector<AlgebraicAngle> angles;
+  const auto addEnclosures = [&](int chart, const std::vector<Interval>& enclosures, bool tight) {
+    int index = 0;
+    for (const Interval& t : enclosures) {
+      angles.emplace_back(function, chart, t.lower(), t.upper(), index++);
+      if (tight) angles.back().useTightCoefficients();
+    }
+  };
   for (int chart = 0; chart < 2; ++chart) {
     if (const auto enclosures = chartRootsInDoubles(function->approximate(chart))) {
       statistics_.recordDecision(kind, kDoubleLevel);
-      int index = 0;
-      for (const Interval& t : *enclosures) angles.emplace_back(function, chart, t.lower(), t.upper(), index++);
+      addEnclosures(chart, *enclosures, false);
+      continue;
+    }
+    const EscalationTimer timer(statistics_, kind);
+    if (const auto enclosures = chartRootsInDoubles(function->tight(chart))) {
+      statistics_.recordDecision(kind, kTightLevel);
+      addEnclosures(chart, *enclosures, true);
       continue;
     }
     statistics_.recordDecision(kind, kExactLevel);
-    const EscalationTimer timer(statistics_, kind);
     const RationalPolynomial& exact = function->exact(chart);
     if (isZero(exact)) throw std::invalid_argument("the angle function vanishes identically");
     int index = 0;
@@ -314,7 +352,7 @@ Sign AngleAlgebra::signAt(const AngleFunction& function, const AlgebraicAngle& a
   const EscalationTimer timer(statistics_, PredicateKind::SignAtRoot);
   refined.useTightCoefficients();
   if (const auto sign = signInDoubles(function.tight(angle.chart()), refined)) {
-    return record(PredicateKind::SignAtRoot, kPreciseLevel, *sign);
+    return record(PredicateKind::SignAtRoot, kTightLevel, *sign);
   }
   const RationalPolynomial& exact = function.exact(angle.chart());
   if (angle.isRational()) return record(PredicateKind::SignAtRoot, kExactLevel, freespace::signAt(exact, angle.root().lo));
@@ -424,7 +462,7 @@ std::optional<int> AngleAlgebra::compareTightly(AlgebraicAngle& first, Algebraic
   if (!tightened) return std::nullopt;
   const EscalationTimer timer(statistics_, PredicateKind::RootOrder);
   const std::optional<int> order = compareInDoubles(first, second);
-  if (order) record(PredicateKind::RootOrder, kPreciseLevel, signOf(*order));
+  if (order) record(PredicateKind::RootOrder, kTightLevel, signOf(*order));
   return order;
 }
 

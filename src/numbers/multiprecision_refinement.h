@@ -12,6 +12,10 @@ namespace freespace::detail {
 /// narrows a root by about 2^-24 more, enough for near ties just past the last.
 constexpr int kBisectionsPerPrecision = 24;
 
+/// Where an enclosure of a root is split: in the middle, or off it when the sign
+/// there is not certain (a root closer to the middle than the arithmetic resolves).
+inline constexpr double kSplitFractions[] = {0.5, 0.375, 0.625};
+
 /// The smallest MPFI interval holding the rationals [low, high].
 template <unsigned Digits10>
 MultiprecisionInterval<Digits10> hull(const Rational& low, const Rational& high) {
@@ -107,26 +111,30 @@ class PreciseRoot {
     return root;
   }
 
-  /// Halves once; false when fixed, when no binary point lies strictly inside or when
-  /// the sign at the middle is not certain.
+  /// Narrows once at a binary point inside: the middle, or where the sign there is
+  /// not certain (the root within the coefficients' width of it) 3/8 or 5/8 of the
+  /// way. False when fixed, or when none of them is inside with a certain sign.
   bool bisect(const Polynomial<Number>& p) {
     if (fixed_) return false;
-    const Number middle(boost::multiprecision::lower(Number((low_ + high_) / 2)));
-    if (!(boost::multiprecision::upper(low_) < boost::multiprecision::lower(middle) &&
-          boost::multiprecision::upper(middle) < boost::multiprecision::lower(high_))) {
-      return false;
+    for (const double fraction : kSplitFractions) {
+      const Number point(boost::multiprecision::lower(Number(low_ + (high_ - low_) * fraction)));
+      if (!(boost::multiprecision::upper(low_) < boost::multiprecision::lower(point) &&
+            boost::multiprecision::upper(point) < boost::multiprecision::lower(high_))) {
+        continue;
+      }
+      const std::optional<Sign> sign = certainSign(Number(p.evaluate(point)));
+      if (!sign) continue;
+      if (*sign == Sign::Zero) {
+        low_ = high_ = point;
+        fixed_ = true;
+      } else if (*sign == atLow_) {
+        low_ = point;
+      } else {
+        high_ = point;
+      }
+      return true;
     }
-    const std::optional<Sign> sign = certainSign(Number(p.evaluate(middle)));
-    if (!sign) return false;
-    if (*sign == Sign::Zero) {
-      low_ = high_ = middle;
-      fixed_ = true;
-    } else if (*sign == atLow_) {
-      low_ = middle;
-    } else {
-      high_ = middle;
-    }
-    return true;
+    return false;
   }
 
   /// Certainly below the other root.

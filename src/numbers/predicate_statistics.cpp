@@ -25,6 +25,7 @@ const char* predicateKindName(PredicateKind kind) {
 
 std::string precisionLevelName(int level) {
   if (level == static_cast<int>(PrecisionLevel::DoubleInterval)) return "double";
+  if (level == static_cast<int>(PrecisionLevel::DoubleDouble)) return "double_double";
   if (level == static_cast<int>(PrecisionLevel::Exact)) return "exact";
   const unsigned digits = kMultiprecisionDigits[level - static_cast<int>(PrecisionLevel::Multiprecision)];
   return "mpfi" + std::to_string(boost::multiprecision::detail::digits10_2_2(digits));

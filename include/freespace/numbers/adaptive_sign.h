@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "freespace/numbers/double_double_interval.h"
 #include "freespace/numbers/interval.h"
 #include "freespace/numbers/multiprecision_interval.h"
 #include "freespace/numbers/predicate_statistics.h"
@@ -18,8 +19,8 @@ struct NumberType {
 };
 
 /// Evaluates the sign of a predicate at rising precision (DESIGN.md section 5):
-/// double intervals, then MPFI intervals doubling the precision at each level, then
-/// exact rationals. The first level whose interval excludes zero, or is exactly
+/// double intervals, double-double intervals, then MPFI intervals doubling the
+/// precision at each level, then exact rationals. The first level whose interval excludes zero, or is exactly
 /// zero, decides. An exact zero is a structural identity and is counted as one.
 ///
 /// Not thread safe: use one engine (and one PredicateStatistics) per thread and
@@ -34,6 +35,9 @@ class AdaptiveSignEngine {
       return record(kind, static_cast<int>(PrecisionLevel::DoubleInterval), *sign);
     }
     const EscalationTimer timer(statistics_, kind);
+    if (const std::optional<Sign> sign = doubleDoubleSign(predicate)) {
+      return record(kind, static_cast<int>(PrecisionLevel::DoubleDouble), *sign);
+    }
     int level = static_cast<int>(PrecisionLevel::Exact);
     std::optional<Sign> sign = multiprecisionSign<0>(predicate, level);
     if (!sign) sign = exactSign(Rational(predicate(NumberType<Rational>{})));
@@ -54,6 +58,12 @@ class AdaptiveSignEngine {
   static std::optional<Sign> doubleIntervalSign(const Predicate& predicate) {
     RoundingScope rounding;
     return certainSign(predicate(NumberType<Interval>{}));
+  }
+
+  template <class Predicate>
+  static std::optional<Sign> doubleDoubleSign(const Predicate& predicate) {
+    NearestRoundingScope rounding;
+    return certainSign(predicate(NumberType<DoubleDoubleInterval>{}));
   }
 
   template <int Step, class Predicate>

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "freespace/numbers/adaptive_sign.h"
+#include "freespace/numbers/double_double_interval.h"
 #include "freespace/numbers/exact_polynomial.h"
 #include "freespace/numbers/half_angle.h"
 #include "freespace/numbers/interval.h"
@@ -19,20 +20,14 @@
 
 namespace freespace {
 
-/// The polynomial with each coefficient rounded outward to double intervals.
-template <unsigned Digits10>
-Polynomial<Interval> enclosingDoubles(const Polynomial<MultiprecisionInterval<Digits10>>& p) {
-  std::vector<Interval> coefficients;
-  for (const auto& coefficient : p.coefficients()) coefficients.push_back(enclosingInterval(coefficient));
-  return Polynomial<Interval>(std::move(coefficients));
-}
-
 /// A function of the angle theta given in each chart (HalfAngle) by a polynomial in
 /// the tangent parameter t whose sign is the function's sign. It keeps double
 /// interval coefficients for filtering; the first time they are needed it computes
-/// tight ones (the formula evaluated in MPFI at about 108 bits, rounded outward to
-/// doubles: a few ulps wide instead of the tens that double interval arithmetic
-/// accumulates) and exact rational ones. Use from one thread.
+/// double-double ones (the formula evaluated in DoubleDoubleInterval, about 106
+/// bits), their rounding outward to doubles (tight coefficients: an ulp or two wide
+/// instead of the tens that double interval arithmetic accumulates), their MPFI
+/// enclosure for bisection past doubles, and exact rational ones. Use from one
+/// thread.
 class AngleFunction {
  public:
   /// Names a function up to a nonzero constant factor: two functions with the same
@@ -45,9 +40,7 @@ class AngleFunction {
   /// from double inputs; it is written once for every number type.
   template <class Formula>
   explicit AngleFunction(const Formula& formula, std::optional<RootKey> key = std::nullopt)
-      : exactFormula_([formula](int chart) { return formula(NumberType<Rational>{}, chart); }),
-        preciseFormula_([formula](int chart) { return formula(NumberType<PreciseInterval>{}, chart); }),
-        key_(key) {
+      : evaluator_(std::make_unique<EvaluatorOf<Formula>>(formula)), key_(key) {
     RoundingScope rounding;
     for (int chart = 0; chart < 2; ++chart) approximate_[chart] = formula(NumberType<Interval>{}, chart);
   }
@@ -58,7 +51,9 @@ class AngleFunction {
 
   const Polynomial<Interval>& approximate(int chart) const { return approximate_[chart]; }
   const Polynomial<Interval>& tight(int chart) const;
-  /// The chart's polynomial in MPFI at about 108 bits (whose rounding is `tight`).
+  /// The chart's polynomial in double-double intervals (whose rounding is `tight`).
+  const Polynomial<DoubleDoubleInterval>& doubleDouble(int chart) const;
+  /// The same in MPFI at about 108 bits, for bisection at that precision.
   const Polynomial<PreciseInterval>& precise(int chart) const;
   const RationalPolynomial& exact(int chart) const;
   const RationalPolynomial& squareFree(int chart) const;
@@ -68,10 +63,28 @@ class AngleFunction {
   const std::optional<RootKey>& key() const { return key_; }
 
  private:
+  /// The formula in the number types past double intervals, kept once.
+  struct Evaluator {
+    virtual ~Evaluator() = default;
+    virtual Polynomial<DoubleDoubleInterval> doubleDouble(int chart) const = 0;
+    virtual RationalPolynomial exact(int chart) const = 0;
+  };
+  template <class Formula>
+  struct EvaluatorOf final : Evaluator {
+    explicit EvaluatorOf(const Formula& formula) : formula(formula) {}
+    Polynomial<DoubleDoubleInterval> doubleDouble(int chart) const override {
+      NearestRoundingScope rounding;
+      return formula(NumberType<DoubleDoubleInterval>{}, chart);
+    }
+    RationalPolynomial exact(int chart) const override { return formula(NumberType<Rational>{}, chart); }
+    Formula formula;
+  };
+  struct ExactEvaluator;
+
   std::array<Polynomial<Interval>, 2> approximate_;
-  std::function<RationalPolynomial(int)> exactFormula_;
-  std::function<Polynomial<PreciseInterval>(int)> preciseFormula_;
+  std::unique_ptr<const Evaluator> evaluator_;
   std::optional<RootKey> key_;
+  mutable std::array<std::optional<Polynomial<DoubleDoubleInterval>>, 2> doubleDouble_;
   mutable std::array<std::optional<Polynomial<Interval>>, 2> tight_;
   mutable std::array<std::optional<Polynomial<PreciseInterval>>, 2> precise_;
   mutable std::array<std::optional<RationalPolynomial>, 2> exact_;

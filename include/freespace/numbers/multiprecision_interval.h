@@ -4,6 +4,7 @@
 
 #include <optional>
 
+#include "freespace/numbers/double_double_interval.h"
 #include "freespace/numbers/interval.h"
 #include "freespace/numbers/sign.h"
 
@@ -36,6 +37,11 @@ template <unsigned Digits10>
 Interval enclosingInterval(const MultiprecisionInterval<Digits10>& value) {
   const auto* bounds = value.backend().data();
   return Interval(mpfr_get_d(&bounds->left, MPFR_RNDD), mpfr_get_d(&bounds->right, MPFR_RNDU));
+}
+
+/// The MPFI interval holding a double-double interval (the sums round outward).
+inline PreciseInterval enclosingPreciseInterval(const DoubleDoubleInterval& value) {
+  return PreciseInterval(value.high()) + PreciseInterval(value.low()) + PreciseInterval(-value.radius(), value.radius());
 }
 
 }  // namespace freespace

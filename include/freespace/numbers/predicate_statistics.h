@@ -25,11 +25,17 @@ enum class PredicateKind : int {
 
 const char* predicateKindName(PredicateKind kind);
 
-/// Levels of the adaptive evaluation, cheapest first.
-enum class PrecisionLevel : int { DoubleInterval = 0, Multiprecision = 1, Exact = 1 + kMultiprecisionLevels };
-inline constexpr int kPrecisionLevelCount = 2 + kMultiprecisionLevels;
+/// Levels of the adaptive evaluation, cheapest first: double intervals, double-double
+/// intervals (about 106 bits), MPFI from about 108 bits up, exact rationals.
+enum class PrecisionLevel : int {
+  DoubleInterval = 0,
+  DoubleDouble = 1,
+  Multiprecision = 2,
+  Exact = 2 + kMultiprecisionLevels
+};
+inline constexpr int kPrecisionLevelCount = 3 + kMultiprecisionLevels;
 
-/// Name of level index i: "double", "mpfi107", ..., "exact".
+/// Name of level index i: "double", "double_double", "mpfi108", ..., "exact".
 std::string precisionLevelName(int level);
 
 /// Per predicate kind: how many signs each precision level decided, how many were

@@ -1,0 +1,174 @@
+// The double-double interval type against exact rational arithmetic: every result
+// must hold the exact result for any points of the operands, and on exact operands
+// be about 2^-100 wide relative to the result.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <functional>
+
+#include "freespace/numbers/double_double_interval.h"
+#include "freespace/numbers/rational.h"
+
+using namespace freespace;
+
+namespace {
+
+/// Doubles of mixed magnitudes and signs, exact small values and zero.
+double anyDouble() {
+  switch (*rc::gen::inRange(0, 4)) {
+    case 0: return 0.0;
+    case 1: return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(-20, 21)) / 8.0;
+    case 2: return std::ldexp(*rc::gen::resize(rc::kNominalSize, rc::gen::inRange(-1000000, 1000001)) / 3.0,
+                              *rc::gen::inRange(-60, 61));
+    default: return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(-1000000, 1000001)) * 1.0e-7 / 3.0;
+  }
+}
+
+/// A rational that is not a double-word: a double, a much smaller double and a third.
+Rational anyRational() {
+  return Rational(anyDouble()) + Rational(anyDouble()) * powerOfHalf(70) / 3;
+}
+
+Rational lowerOf(const DoubleDoubleInterval& x) { return Rational(x.high()) + Rational(x.low()) - Rational(x.radius()); }
+Rational upperOf(const DoubleDoubleInterval& x) { return Rational(x.high()) + Rational(x.low()) + Rational(x.radius()); }
+
+bool holds(const DoubleDoubleInterval& x, const Rational& value) { return lowerOf(x) <= value && value <= upperOf(x); }
+
+/// An operand: an exact rational's enclosure, widened by adding and subtracting
+/// other rationals' enclosures (which leaves the exact value alone and grows the
+/// radius), with the exact rational it encloses.
+struct Operand {
+  DoubleDoubleInterval value;
+  Rational exact;
+};
+
+/// Away from zero by at least 1/8, for divisors.
+Rational nonzeroRational() {
+  const Rational value = anyRational();
+  return value + (value < 0 ? Rational(-1, 8) : Rational(1, 8));
+}
+
+Operand anyOperand(bool nonzero = false) {
+  const Rational exact = nonzero ? nonzeroRational() : anyRational();
+  DoubleDoubleInterval value(exact);
+  NearestRoundingScope rounding;
+  for (int widen = *rc::gen::inRange(0, 3); widen > 0; --widen) {
+    const Rational other = anyRational();
+    value = value + DoubleDoubleInterval(other) - DoubleDoubleInterval(other);
+  }
+  return {value, exact};
+}
+
+/// A point of the operand's interval: an end or the exact value it was made from.
+Rational pointOf(const Operand& x) {
+  switch (*rc::gen::inRange(0, 3)) {
+    case 0: return lowerOf(x.value);
+    case 1: return upperOf(x.value);
+    default: return x.exact;
+  }
+}
+
+using Operation = std::function<DoubleDoubleInterval(const DoubleDoubleInterval&, const DoubleDoubleInterval&)>;
+using ExactOperation = std::function<Rational(const Rational&, const Rational&)>;
+
+void checkOperation(const Operation& operation, const ExactOperation& exactOperation, bool division) {
+  const Operand a = anyOperand(), b = anyOperand(division);
+  DoubleDoubleInterval result;
+  {
+    NearestRoundingScope rounding;
+    result = operation(a.value, b.value);
+  }
+  RC_ASSERT(holds(result, exactOperation(pointOf(a), pointOf(b))));
+  RC_ASSERT(holds(result, exactOperation(a.exact, b.exact)));
+}
+
+/// On operands that are exact doubles the result is exact to about 2^-100.
+void checkTightness(const Operation& operation, const ExactOperation& exactOperation, bool division) {
+  const double a = anyDouble(), b = division ? nonzeroRational().convert_to<double>() : anyDouble();
+  DoubleDoubleInterval result;
+  {
+    NearestRoundingScope rounding;
+    result = operation(a, b);
+  }
+  const Rational exact = exactOperation(Rational(a), Rational(b));
+  RC_ASSERT(holds(result, exact));
+  RC_ASSERT(Rational(result.radius()) <= abs(exact) * powerOfHalf(100) + powerOfHalf(990));
+}
+
+const Operation kSum = [](const DoubleDoubleInterval& a, const DoubleDoubleInterval& b) { return a + b; };
+const Operation kDifference = [](const DoubleDoubleInterval& a, const DoubleDoubleInterval& b) { return a - b; };
+const Operation kProduct = [](const DoubleDoubleInterval& a, const DoubleDoubleInterval& b) { return a * b; };
+const Operation kQuotient = [](const DoubleDoubleInterval& a, const DoubleDoubleInterval& b) { return a / b; };
+const ExactOperation kExactSum = [](const Rational& a, const Rational& b) -> Rational { return a + b; };
+const ExactOperation kExactDifference = [](const Rational& a, const Rational& b) -> Rational { return a - b; };
+const ExactOperation kExactProduct = [](const Rational& a, const Rational& b) -> Rational { return a * b; };
+const ExactOperation kExactQuotient = [](const Rational& a, const Rational& b) -> Rational { return a / b; };
+
+}  // namespace
+
+RC_GTEST_PROP(DoubleDoubleInterval, SumHoldsTheExactSum, ()) { checkOperation(kSum, kExactSum, false); }
+RC_GTEST_PROP(DoubleDoubleInterval, DifferenceHoldsTheExactDifference, ()) {
+  checkOperation(kDifference, kExactDifference, false);
+}
+RC_GTEST_PROP(DoubleDoubleInterval, ProductHoldsTheExactProduct, ()) { checkOperation(kProduct, kExactProduct, false); }
+RC_GTEST_PROP(DoubleDoubleInterval, QuotientHoldsTheExactQuotient, ()) {
+  checkOperation(kQuotient, kExactQuotient, true);
+}
+
+RC_GTEST_PROP(DoubleDoubleInterval, OperationsOnDoublesAreTight, ()) {
+  checkTightness(kSum, kExactSum, false);
+  checkTightness(kDifference, kExactDifference, false);
+  checkTightness(kProduct, kExactProduct, false);
+  checkTightness(kQuotient, kExactQuotient, true);
+}
+
+/// A chain of operations as in the patch formulas (cross products of differences,
+/// a quotient of heights): the exact result stays inside.
+RC_GTEST_PROP(DoubleDoubleInterval, ChainsHoldTheExactResult, ()) {
+  std::vector<Operand> values;
+  for (int i = 0; i < 4; ++i) values.push_back(anyOperand());
+  const std::vector<std::pair<Operation, ExactOperation>> operations{
+      {kSum, kExactSum}, {kDifference, kExactDifference}, {kProduct, kExactProduct}};
+  for (int step = 0; step < 12; ++step) {
+    const auto& [operation, exact] = operations[*rc::gen::inRange<std::size_t>(0, operations.size())];
+    const Operand& a = values[*rc::gen::inRange<std::size_t>(0, values.size())];
+    const Operand& b = values[*rc::gen::inRange<std::size_t>(0, values.size())];
+    NearestRoundingScope rounding;
+    values.push_back({operation(a.value, b.value), exact(a.exact, b.exact)});
+  }
+  for (const Operand& value : values) RC_ASSERT(holds(value.value, value.exact));
+}
+
+RC_GTEST_PROP(DoubleDoubleInterval, RationalsAreEnclosedTightly, ()) {
+  const Rational value = anyRational();
+  const DoubleDoubleInterval enclosure(value);
+  RC_ASSERT(holds(enclosure, value));
+  RC_ASSERT(Rational(enclosure.radius()) <= abs(value) * powerOfHalf(100) + powerOfHalf(990));
+  const Interval doubles = enclosingInterval(enclosure);
+  RC_ASSERT(Rational(doubles.lower()) <= value && value <= Rational(doubles.upper()));
+}
+
+TEST(DoubleDoubleInterval, DecidesSignsThatDoubleIntervalsCannot) {
+  NearestRoundingScope rounding;
+  // 0.1 * 3 - 0.3 in doubles is 2^-54 and in double intervals of unknown sign; the
+  // double-double value of the double products is exact.
+  EXPECT_EQ(certainSign(DoubleDoubleInterval(0.1) * 3.0 - DoubleDoubleInterval(0.3)), Sign::Positive);
+  // 1 + 2^-60 is no double; its square less one is about 2^-59.
+  const DoubleDoubleInterval x = DoubleDoubleInterval(1.0) + DoubleDoubleInterval(0x1p-60);
+  EXPECT_EQ(certainSign(x - 1.0), Sign::Positive);
+  EXPECT_EQ(certainSign(x * x - 1.0 - 0x1p-58), Sign::Negative);
+  EXPECT_EQ(certainSign(DoubleDoubleInterval(2.0) * 3.0 - 6.0), Sign::Zero);
+  const double huge = std::numeric_limits<double>::max();
+  EXPECT_EQ(certainSign(DoubleDoubleInterval(huge) * huge - DoubleDoubleInterval(huge) * huge), std::nullopt);
+  EXPECT_THROW(DoubleDoubleInterval(1.0) / (DoubleDoubleInterval(1.0) - 1.0), std::domain_error);
+}
+
+TEST(DoubleDoubleInterval, NearestRoundingScopeRestoresTheMode) {
+  RoundingScope upward;
+  {
+    NearestRoundingScope nearest;
+    EXPECT_EQ(std::fegetround(), FE_TONEAREST);
+  }
+  EXPECT_EQ(std::fegetround(), FE_UPWARD);
+}
