@@ -102,17 +102,26 @@ RationalPolynomial keyedPolynomial(const AngleFunction::RootKey& key, const Mesh
 
 RC_GTEST_PROP(PatchCurves, KeyedSpiralFacetFunctionsAreTheirKeysEdgeFacetFunctions, ()) {
   // EF keys (kind 0 or 1) name an EF function; the others name the SF function's
-  // own inputs.
+  // own inputs. A function that vanishes identically is zero by its formula.
   const std::unique_ptr<RandomScene> scene = randomTwoObstacleScene();
   RC_PRE(scene->hasDistinctHeights());
   const std::vector<PatchGeometry> patches = scene->allPatchGeometries();
-  int keyed = 0;
+  int keyed = 0, zero = 0;
   for (const PatchGeometry& line : patches) {
     for (const PatchGeometry& other : patches) {
       for (int k = 0; k < 2; ++k) {
         const auto function = spiralOnLine(line.line, other.ends[k], other.segment.ends[k]);
-        // Identically zero (a patch's line at its own end): never compared.
-        if (function->isIdenticallyZero()) continue;
+        if (function->isIdenticallyZero()) {
+          // A patch's line at its own end, say (or a key that names the zero
+          // function): the SF formula itself must vanish.
+          for (int chart = 0; chart < 2; ++chart) {
+            const RationalPolynomial formula = tangentPolynomial(
+                spiralFacetForm(lineOf<Rational>(line.line), spiralOf<Rational>(other.ends[k])), chart);
+            RC_ASSERT(isZero(trimmed(formula)));
+          }
+          zero++;
+          continue;
+        }
         const AngleFunction::RootKey& key = *function->key();
         if (key[0] > 1) continue;
         keyed++;
@@ -123,4 +132,5 @@ RC_GTEST_PROP(PatchCurves, KeyedSpiralFacetFunctionsAreTheirKeysEdgeFacetFunctio
     }
   }
   RC_TAG(keyed > 0 ? "keyed functions" : "no keyed function");
+  RC_TAG(zero > 0 ? "zero functions" : "no zero function");
 }
