@@ -418,3 +418,39 @@ RC_GTEST_PROP(AlgebraicAngle, FunctionsWithOneKeyShareTheirRootsByIndex, ()) {
   }
   RC_ASSERT(keyedStatistics.counts(PredicateKind::SignAtRoot).escalatedSeconds == escalated);
 }
+
+RC_GTEST_PROP(AlgebraicAngle, DoubleDoubleParametersHoldTheRootTightly, ()) {
+  // Products of two forms with arbitrary coefficients (quartics, as FFF): each
+  // simple root's parameter, refined in double-doubles, lies between two rationals
+  // where the exact polynomial has opposite signs, at most about 2^-78 apart.
+  const double scale = std::ldexp(1.0, uniform(-20, 21));
+  const Form a{scale * uniform(-1000, 1001) / 7.0, scale * uniform(-1000, 1001) / 3.0, scale * uniform(-500, 501) / 11.0};
+  const Form b{uniform(-1000, 1001) / 13.0, uniform(-1000, 1001) / 5.0, uniform(-500, 501) / 9.0};
+  const auto function = productOf({a, b});
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  int refined = 0;
+  for (const AlgebraicAngle& root : algebra.roots(function, PredicateKind::ThreePatch)) {
+    const std::optional<DoubleDoubleInterval> t = doubleDoubleParameter(root);
+    if (!t) continue;  // a double root, say
+    ++refined;
+    const Rational middle = Rational(t->high()) + Rational(t->low());
+    const Rational low = middle - Rational(t->radius()), high = middle + Rational(t->radius());
+    const RationalPolynomial& exact = function->exact(root.chart());
+    const Sign atLow = signAt(exact, low), atHigh = signAt(exact, high);
+    RC_ASSERT(atLow != Sign::Zero);
+    RC_ASSERT(atLow == -atHigh);
+    RC_ASSERT(Rational(root.lower()) <= low && high <= Rational(root.upper()));
+    RC_ASSERT(t->radius() <= 0x1p-78);
+  }
+  RC_TAG(refined > 0 ? "refined" : "none refined");
+}
+
+TEST(AlgebraicAngle, DoubleDoubleParametersOfRationalAnglesAreExact) {
+  const DoubleDoubleInterval half = *doubleDoubleParameter(AlgebraicAngle::rational(0, 0.5));
+  EXPECT_EQ(half.high(), 0.5);
+  EXPECT_EQ(half.radius(), 0.0);
+  const DoubleDoubleInterval third = *doubleDoubleParameter(AlgebraicAngle::rational(1, Rational(1, 3)));
+  EXPECT_LE(Rational(third.high()) + Rational(third.low()) - Rational(third.radius()), Rational(1, 3));
+  EXPECT_GE(Rational(third.high()) + Rational(third.low()) + Rational(third.radius()), Rational(1, 3));
+}

@@ -567,6 +567,37 @@ std::optional<AlgebraicAngle> betweenInDoubles(const AlgebraicAngle& from, const
 
 }  // namespace
 
+std::optional<DoubleDoubleInterval> doubleDoubleParameter(const AlgebraicAngle& angle) {
+  if (angle.isRational()) {
+    if (angle.lower() == angle.upper()) return DoubleDoubleInterval(angle.lower());
+    return DoubleDoubleInterval(angle.root().lo);
+  }
+  constexpr int kNewtonSteps = 6;
+  const Polynomial<DoubleDoubleInterval>& p = angle.function()->doubleDouble(angle.chart());
+  const Polynomial<DoubleDoubleInterval> slope = p.derivative();
+  NearestRoundingScope rounding;
+  const DoubleDoubleInterval lower(angle.lower()), upper(angle.upper());
+  DoubleDoubleInterval t = DoubleDoubleInterval(0.5 * angle.lower() + 0.5 * angle.upper());
+  for (int step = 0; step < kNewtonSteps; ++step) {
+    const DoubleDoubleInterval derivative = slope.evaluate(t);
+    const std::optional<Sign> derivativeSign = certainSign(derivative);
+    if (!derivativeSign || *derivativeSign == Sign::Zero) return std::nullopt;
+    t = (t - p.evaluate(t).midpoint() / derivative.midpoint()).midpoint();
+  }
+  // Certified: certain opposite signs at t - delta and t + delta, both inside the
+  // isolating enclosure, so the enclosure's one root lies between.
+  const auto below = [](const DoubleDoubleInterval& a, const DoubleDoubleInterval& b) {
+    return certainSign(b - a) == Sign::Positive;
+  };
+  for (double delta = 0x1p-100; delta <= 0x1p-80; delta *= 4) {
+    const DoubleDoubleInterval low = (t - delta).midpoint(), high = (t + delta).midpoint();
+    if (!below(lower, low) || !below(high, upper)) return std::nullopt;
+    const std::optional<Sign> atLow = certainSign(p.evaluate(low)), atHigh = certainSign(p.evaluate(high));
+    if (atLow && atHigh && *atLow != Sign::Zero && *atLow == -*atHigh) return t.widened(2 * delta);
+  }
+  return std::nullopt;
+}
+
 std::pair<Rational, Rational> exactCosSin(const AlgebraicAngle& rationalAngle) {
   const Rational t = rationalAngle.root().lo, w = 1 + t * t, chartSign(rationalAngle.chart() == 0 ? 1 : -1);
   return {chartSign * (1 - t * t) / w, chartSign * 2 * t / w};

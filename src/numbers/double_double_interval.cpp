@@ -95,6 +95,10 @@ DoubleDoubleInterval::DoubleDoubleInterval(const Rational& value) {
   radius_ = inflated(remainder * kRadiusScale) + (remainderExactly != 0 ? kTiny : 0);
 }
 
+DoubleDoubleInterval DoubleDoubleInterval::widened(double radius) const {
+  return {high_, low_, inflated(radius_ + radius)};
+}
+
 DoubleDoubleInterval operator+(const DoubleDoubleInterval& a, const DoubleDoubleInterval& b) {
   const DoubleWord z = sum({a.high_, a.low_}, {b.high_, b.low_});
   // The sum of two doubles is exact (TwoSum, then two exact Fast2Sums).

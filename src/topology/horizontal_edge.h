@@ -87,4 +87,13 @@ std::optional<EdgeCrossSections> crossSectionsInIntervals(const HorizontalEdge& 
                                                           const std::vector<PatchGeometry>& patches,
                                                           const std::vector<PatchCurve>& curves, AngleAlgebra& algebra);
 
+/// The same reading in double-double intervals at the edge's angle refined to about
+/// 2^-100: for edges whose points or slopes double intervals do not tell apart (a
+/// line nearly parallel to the edge crosses it far less precisely than it is given).
+std::optional<EdgeCrossSections> crossSectionsInDoubleDoubles(const HorizontalEdge& edge,
+                                                              const std::vector<const PatchSlab*>& slabs,
+                                                              const std::vector<PatchGeometry>& patches,
+                                                              const std::vector<PatchCurve>& curves,
+                                                              AngleAlgebra& algebra);
+
 }  // namespace freespace::gluing

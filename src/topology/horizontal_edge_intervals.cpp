@@ -8,16 +8,24 @@ namespace freespace::gluing {
 
 namespace {
 
-using Vector = std::array<Interval, 2>;
+template <class T>
+using Vector = std::array<T, 2>;
 
-Interval dot(const Vector& a, const Vector& b) { return a[0] * b[0] + a[1] * b[1]; }
+template <class T>
+T dot(const Vector<T>& a, const Vector<T>& b) {
+  return a[0] * b[0] + a[1] * b[1];
+}
+
+Interval toInterval(const Interval& value) { return value; }
+Interval toInterval(const DoubleDoubleInterval& value) { return enclosingInterval(value); }
 
 Interval hull(const Interval& a, const Interval& b) {
   return {std::min(a.lower(), b.lower()), std::max(a.upper(), b.upper())};
 }
 
 /// a / b, when b is certainly not zero.
-std::optional<Interval> quotient(const Interval& a, const Interval& b) {
+template <class T>
+std::optional<T> quotient(const T& a, const T& b) {
   const std::optional<Sign> sign = certainSign(b);
   if (!sign || *sign == Sign::Zero) return std::nullopt;
   return a / b;
@@ -25,15 +33,17 @@ std::optional<Interval> quotient(const Interval& a, const Interval& b) {
 
 /// A patch's line at the edge's angle and its first derivative in theta:
 ///   n = R a1 + a2, n' = R' a1;  w = k1 sin + k2 cos + k3, w' = k1 cos - k2 sin.
+template <class T>
 struct LineWithSlope {
-  Vector n, dn;
-  Interval w, dw;
+  Vector<T> n, dn;
+  T w, dw;
 };
 
-LineWithSlope lineWithSlope(const PatchGeometry& patch, const slices::IntervalSlice& slice) {
-  const Interval &cosine = slice.cosine, &sine = slice.sine;
-  const PatchLine<Interval> line = lineOf<Interval>(patch.line);
-  const LineAtAngle<Interval> at = lineAtAngle(line, cosine, sine);
+template <class Slice, class T = typename Slice::Number>
+LineWithSlope<T> lineWithSlope(const PatchGeometry& patch, const Slice& slice) {
+  const T &cosine = slice.cosine, &sine = slice.sine;
+  const PatchLine<T> line = lineOf<T>(patch.line);
+  const LineAtAngle<T> at = lineAtAngle(line, cosine, sine);
   return {{at.nx, at.ny},
           {-sine * line.a1x - cosine * line.a1y, cosine * line.a1x - sine * line.a1y},
           at.w,
@@ -59,40 +69,46 @@ std::optional<bool> certainlyBelow(const Interval& a, const Interval& b) {
 ///   sigma_i' = -(n_i' . d(m) + w_i') / (n_i . N) = A_i + m B_i,
 /// the slope of the ray of patch i in the cross-section at m (the turn of N itself
 /// changes all offsets alike to first order). The rays are ordered by these slopes.
-class IntervalEdge {
+///
+/// In the number type of a slice at the edge's angle: double intervals, or double-
+/// double intervals for edges whose named points or slopes are too close for those.
+template <class Slice>
+class EdgeAtAngle {
  public:
+  using T = typename Slice::Number;
+
   /// Needs the first side's normal to be certainly not zero (`valid`).
-  IntervalEdge(const HorizontalEdge& edge, const std::vector<PatchGeometry>& patches) : slice_(edge.angle) {
-    const LineWithSlope first = lineWithSlope(patches[edge.sides.front().patch], slice_);
+  EdgeAtAngle(const HorizontalEdge& edge, const std::vector<PatchGeometry>& patches, const Slice& slice)
+      : slice_(slice) {
+    const LineWithSlope<T> first = lineWithSlope(patches[edge.sides.front().patch], slice_);
     normal_ = first.n;
     squaredNorm_ = dot(normal_, normal_);
     across_ = {-normal_[1], normal_[0]};
-    valid_ = squaredNorm_.lower() > 0;
+    const std::optional<Sign> normSign = certainSign(squaredNorm_);
+    valid_ = normSign && *normSign == Sign::Positive;
     if (valid_) origin_ = {-first.w * normal_[0] / squaredNorm_, -first.w * normal_[1] / squaredNorm_};
   }
 
   bool valid() const { return valid_; }
 
-  Interval position(const Vector& p) const { return p[1] * normal_[0] - p[0] * normal_[1]; }
+  T position(const Vector<T>& p) const { return p[1] * normal_[0] - p[0] * normal_[1]; }
 
-  Interval positionOfEnd(const PatchGeometry& patch, int k) const {
-    return position(slice_.end(patch, k));
-  }
+  T positionOfEnd(const PatchGeometry& patch, int k) const { return position(slice_.end(patch, k)); }
 
   /// Where the line of a patch not on the edge crosses L: n . d(m) + w = 0.
-  std::optional<Interval> positionOfCrossing(const PatchGeometry& patch) const {
-    const LineWithSlope line = lineWithSlope(patch, slice_);
-    return quotient(-(dot(line.n, origin_) + line.w) * squaredNorm_, dot(line.n, across_));
+  std::optional<T> positionOfCrossing(const PatchGeometry& patch) const {
+    const LineWithSlope<T> line = lineWithSlope(patch, slice_);
+    return quotient<T>(-(dot(line.n, origin_) + line.w) * squaredNorm_, dot(line.n, across_));
   }
 
   struct Slope {
-    Interval a, b;  // sigma' = a + m b
+    T a, b;  // sigma' = a + m b
     int orientation;
   };
 
   std::optional<Slope> slopeOf(const PatchGeometry& patch) const {
-    const LineWithSlope line = lineWithSlope(patch, slice_);
-    const Interval alongNormal = dot(line.n, normal_);
+    const LineWithSlope<T> line = lineWithSlope(patch, slice_);
+    const T alongNormal = dot(line.n, normal_);
     const std::optional<Sign> orientation = certainSign(alongNormal);
     if (!orientation || *orientation == Sign::Zero) return std::nullopt;
     return Slope{-(dot(line.dn, origin_) + line.dw) / alongNormal,
@@ -100,17 +116,19 @@ class IntervalEdge {
   }
 
  private:
-  slices::IntervalSlice slice_;
-  Interval squaredNorm_;
-  Vector normal_, across_, origin_;
+  Slice slice_;
+  T squaredNorm_;
+  Vector<T> normal_, across_, origin_;
   bool valid_ = false;
 };
 
-/// A side of the edge read at the edge's angle.
-struct IntervalSide {
+/// A side of the edge read at the edge's angle, its ends' positions in double
+/// intervals.
+template <class Slice>
+struct SideAtAngle {
   EdgeSide side;
   const PatchSlab* slab;
-  IntervalEdge::Slope slope;
+  typename EdgeAtAngle<Slice>::Slope slope;
   Interval position0, position1;
   /// The named point of each of the slab's curves.
   std::vector<EdgePoint> crossings;
@@ -148,7 +166,8 @@ std::optional<std::vector<Interval>> orderedPositions(const std::map<EdgePoint, 
 
 /// The ray of a side over position m, if its segment reaches over m; nothing when
 /// the slab's curves are not in the order of their points along the segment.
-std::optional<std::optional<EdgeRay>> rayOver(const IntervalSide& side, double m,
+template <class Slice>
+std::optional<std::optional<EdgeRay>> rayOver(const SideAtAngle<Slice>& side, double m,
                                               const std::map<EdgePoint, NamedPoint>& named) {
   const std::optional<bool> end0Below = certainlyBelow(side.position0, Interval(m));
   const std::optional<bool> end1Below = certainlyBelow(side.position1, Interval(m));
@@ -167,19 +186,19 @@ std::optional<std::optional<EdgeRay>> rayOver(const IntervalSide& side, double m
       EdgeRay{side.side.below, side.slope.orientation, {side.side.patch, side.slab->faces[gap]}});
 }
 
-}  // namespace
-
-std::optional<EdgeCrossSections> crossSectionsInIntervals(const HorizontalEdge& edge,
-                                                          const std::vector<const PatchSlab*>& slabs,
-                                                          const std::vector<PatchGeometry>& patches,
-                                                          const std::vector<PatchCurve>& curves,
-                                                          AngleAlgebra& algebra) {
-  RoundingScope rounding;
-  const IntervalEdge at(edge, patches);
+/// The cross-sections read in the slice's number type.
+template <class Slice>
+std::optional<EdgeCrossSections> crossSectionsAt(const Slice& slice, const HorizontalEdge& edge,
+                                                 const std::vector<const PatchSlab*>& slabs,
+                                                 const std::vector<PatchGeometry>& patches,
+                                                 const std::vector<PatchCurve>& curves, AngleAlgebra& algebra) {
+  using T = typename Slice::Number;
+  const typename Slice::Rounding rounding;
+  const EdgeAtAngle<Slice> at(edge, patches, slice);
   if (!at.valid()) return std::nullopt;
   std::vector<std::uint32_t> onEdge;
   for (const EdgeSide& side : edge.sides) onEdge.push_back(side.patch);
-  std::vector<IntervalSide> sides;
+  std::vector<SideAtAngle<Slice>> sides;
   std::map<EdgePoint, NamedPoint> named;
   const auto name = [&named](const PointReading& reading, const Interval& position) {
     const auto [found, inserted] = named.try_emplace(reading.point, NamedPoint{position, reading});
@@ -187,25 +206,26 @@ std::optional<EdgeCrossSections> crossSectionsInIntervals(const HorizontalEdge& 
   };
   for (std::size_t i = 0; i < edge.sides.size(); ++i) {
     const PatchGeometry& patch = patches[edge.sides[i].patch];
-    const std::optional<IntervalEdge::Slope> slope = at.slopeOf(patch);
+    const auto slope = at.slopeOf(patch);
     if (!slope) return std::nullopt;
-    sides.push_back({edge.sides[i], slabs[i], *slope, at.positionOfEnd(patch, 0), at.positionOfEnd(patch, 1), {}});
+    sides.push_back({edge.sides[i], slabs[i], *slope, toInterval(at.positionOfEnd(patch, 0)),
+                     toInterval(at.positionOfEnd(patch, 1)), {}});
     name({spiralPointOf(patch, 0), edge.sides[i].patch, 0, 0}, sides.back().position0);
     name({spiralPointOf(patch, 1), edge.sides[i].patch, 1, 0}, sides.back().position1);
   }
-  for (IntervalSide& side : sides) {
+  for (SideAtAngle<Slice>& side : sides) {
     for (std::uint32_t curve : side.slab->curves) {
       const std::uint32_t other = curves[curve].other(side.side.patch);
       const EdgePoint point = curvePointOf(side.side.patch, other, onEdge);
       side.crossings.push_back(point);
       const auto otherSide =
-          std::find_if(sides.begin(), sides.end(), [&](const IntervalSide& s) { return s.side.patch == other; });
+          std::find_if(sides.begin(), sides.end(), [&](const SideAtAngle<Slice>& s) { return s.side.patch == other; });
       // A crossing line, or equal slopes: a_i + m b_i = a_j + m b_j.
-      const std::optional<Interval> position =
+      const std::optional<T> position =
           point[0] == kCrossingLine ? at.positionOfCrossing(patches[other])
-                                    : quotient(otherSide->slope.a - side.slope.a, side.slope.b - otherSide->slope.b);
+                                    : quotient<T>(otherSide->slope.a - side.slope.a, side.slope.b - otherSide->slope.b);
       if (!position) return std::nullopt;
-      name({point, side.side.patch, -1, other}, *position);
+      name({point, side.side.patch, -1, other}, toInterval(*position));
     }
   }
   const auto positions = orderedPositions(named, edge.angle, patches, algebra);
@@ -216,10 +236,10 @@ std::optional<EdgeCrossSections> crossSectionsInIntervals(const HorizontalEdge& 
     const double m = 0.5 * low + 0.5 * high;
     if (!(low < m && m < high)) return std::nullopt;
     std::vector<std::pair<Interval, EdgeRay>> rays;
-    for (const IntervalSide& side : sides) {
+    for (const SideAtAngle<Slice>& side : sides) {
       const auto ray = rayOver(side, m, named);
       if (!ray) return std::nullopt;
-      if (*ray) rays.emplace_back(side.slope.a + Interval(m) * side.slope.b, **ray);
+      if (*ray) rays.emplace_back(toInterval(side.slope.a + T(m) * side.slope.b), **ray);
     }
     // Up before down, each by decreasing slope.
     std::sort(rays.begin(), rays.end(), [](const auto& x, const auto& y) {
@@ -237,6 +257,31 @@ std::optional<EdgeCrossSections> crossSectionsInIntervals(const HorizontalEdge& 
     sections.push_back(std::move(counterclockwise));
   }
   return sections;
+}
+
+}  // namespace
+
+std::optional<EdgeCrossSections> crossSectionsInIntervals(const HorizontalEdge& edge,
+                                                          const std::vector<const PatchSlab*>& slabs,
+                                                          const std::vector<PatchGeometry>& patches,
+                                                          const std::vector<PatchCurve>& curves,
+                                                          AngleAlgebra& algebra) {
+  std::optional<slices::IntervalSlice> slice;
+  {
+    RoundingScope rounding;
+    slice.emplace(edge.angle);
+  }
+  return crossSectionsAt(*slice, edge, slabs, patches, curves, algebra);
+}
+
+std::optional<EdgeCrossSections> crossSectionsInDoubleDoubles(const HorizontalEdge& edge,
+                                                              const std::vector<const PatchSlab*>& slabs,
+                                                              const std::vector<PatchGeometry>& patches,
+                                                              const std::vector<PatchCurve>& curves,
+                                                              AngleAlgebra& algebra) {
+  const std::optional<slices::DoubleDoubleSlice> slice = slices::DoubleDoubleSlice::at(edge.angle);
+  if (!slice) return std::nullopt;
+  return crossSectionsAt(*slice, edge, slabs, patches, curves, algebra);
 }
 
 }  // namespace freespace::gluing

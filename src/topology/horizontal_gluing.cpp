@@ -332,9 +332,17 @@ SubFaceGluing glueAcrossHorizontalEdges(const std::vector<PatchGeometry>& patche
     cancellation.check();
     const std::vector<const PatchSlab*> slabs = slabsMeeting(edge, subdivisions, algebra);
     std::optional<EdgeCrossSections> sections;
-    if (reading == EdgeReading::Filtered) sections = gluing::crossSectionsInIntervals(edge, slabs, patches, curves, algebra);
+    PrecisionLevel level = PrecisionLevel::Exact;
+    if (reading == EdgeReading::Filtered) {
+      sections = gluing::crossSectionsInIntervals(edge, slabs, patches, curves, algebra);
+      level = PrecisionLevel::DoubleInterval;
+      if (!sections) {
+        sections = gluing::crossSectionsInDoubleDoubles(edge, slabs, patches, curves, algebra);
+        level = PrecisionLevel::DoubleDouble;
+      }
+    }
     algebra.statistics().recordDecision(PredicateKind::EdgeCrossSection,
-                                        static_cast<int>(sections ? PrecisionLevel::DoubleInterval : PrecisionLevel::Exact));
+                                        static_cast<int>(sections ? level : PrecisionLevel::Exact));
     glueAcross(edge, sections ? *sections : exact.read(edge, slabs), glues);
   }
   return glues.take();

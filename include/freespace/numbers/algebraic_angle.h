@@ -162,6 +162,14 @@ struct AngleSet {
 /// from its chart's parameter t (HalfAngle's formulas).
 std::pair<Rational, Rational> exactCosSin(const AlgebraicAngle& rationalAngle);
 
+/// The angle's tangent parameter t (in its chart) as a double-double interval of
+/// radius 2^-99 (up to 2^-79 for ill-conditioned roots): a rational angle's own
+/// value, or Newton steps on the function's double-double polynomial from its double
+/// enclosure, certified by certain opposite signs at both ends, inside the
+/// enclosure. Nothing when that fails (a root of even multiplicity, or one the
+/// coefficients do not resolve).
+std::optional<DoubleDoubleInterval> doubleDoubleParameter(const AlgebraicAngle& angle);
+
 /// Exact predicates on algebraic angles, filtered in double intervals with exact
 /// rational fallback and exact identity detection (equal roots compare equal; a
 /// function that vanishes at a root has sign exactly zero), counted in statistics.

@@ -36,6 +36,11 @@ class DoubleDoubleInterval {
   double low() const { return low_; }
   double radius() const { return radius_; }
 
+  /// The midpoint alone, as an exact number (radius zero).
+  DoubleDoubleInterval midpoint() const { return {high_, low_, 0}; }
+  /// The interval around this one's midpoint widened by `radius` more.
+  DoubleDoubleInterval widened(double radius) const;
+
   friend DoubleDoubleInterval operator+(const DoubleDoubleInterval& a, const DoubleDoubleInterval& b);
   friend DoubleDoubleInterval operator-(const DoubleDoubleInterval& a, const DoubleDoubleInterval& b);
   friend DoubleDoubleInterval operator-(const DoubleDoubleInterval& a) { return {-a.high_, -a.low_, a.radius_}; }

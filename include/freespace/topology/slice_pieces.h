@@ -55,6 +55,10 @@ inline std::pair<Rational, Rational> pieceOf(const Arrangement& arrangement, std
 /// inside a RoundingScope): a rational angle's cosine and sine enclosed, or those of
 /// an algebraic angle's enclosure.
 struct IntervalSlice {
+  using Number = Interval;
+  /// The rounding its arithmetic needs.
+  using Rounding = RoundingScope;
+
   Interval cosine, sine;
 
   explicit IntervalSlice(const AlgebraicAngle& angle) {
@@ -105,6 +109,30 @@ struct IntervalSlice {
     const std::optional<Interval> high = gap == slab.curves.size() ? Interval(1) : lambdaOf(slab.curves[gap]);
     if (!low || !high) return std::nullopt;
     return std::make_pair(*low, *high);
+  }
+};
+
+/// The slice at an angle in double-double intervals (use inside a
+/// NearestRoundingScope), for what double intervals leave open: the cosine and sine
+/// of the angle's parameter t refined to about 2^-100 (doubleDoubleParameter).
+struct DoubleDoubleSlice {
+  using Number = DoubleDoubleInterval;
+  using Rounding = NearestRoundingScope;
+
+  DoubleDoubleInterval cosine, sine;
+
+  /// Nothing when t cannot be refined.
+  static std::optional<DoubleDoubleSlice> at(const AlgebraicAngle& angle) {
+    const std::optional<DoubleDoubleInterval> t = doubleDoubleParameter(angle);
+    if (!t) return std::nullopt;
+    NearestRoundingScope rounding;
+    const DoubleDoubleInterval w = DoubleDoubleInterval(1.0) + *t * *t;
+    const DoubleDoubleInterval chartSign(angle.chart() == 0 ? 1.0 : -1.0);
+    return DoubleDoubleSlice{chartSign * (DoubleDoubleInterval(1.0) - *t * *t) / w, chartSign * (*t + *t) / w};
+  }
+
+  std::array<DoubleDoubleInterval, 2> end(const PatchGeometry& patch, int k) const {
+    return spiralPoint(spiralOf<DoubleDoubleInterval>(patch.ends[k]), cosine, sine);
   }
 };
 
