@@ -168,7 +168,7 @@ TEST(DoubleDoubleInterval, NearestRoundingScopeRestoresTheMode) {
   RoundingScope upward;
   {
     NearestRoundingScope nearest;
-    EXPECT_EQ(std::fegetround(), FE_TONEAREST);
+    EXPECT_EQ(detail::roundingMode(), FE_TONEAREST);
   }
-  EXPECT_EQ(std::fegetround(), FE_UPWARD);
+  EXPECT_EQ(detail::roundingMode(), FE_UPWARD);
 }

@@ -127,15 +127,15 @@ TEST(Interval, SignsAndSpecialValues) {
 }
 
 TEST(Interval, RoundingScopeRestoresTheMode) {
-  ASSERT_EQ(std::fegetround(), FE_TONEAREST);
+  ASSERT_EQ(detail::roundingMode(), FE_TONEAREST);
   {
     RoundingScope outer;
-    EXPECT_EQ(std::fegetround(), FE_UPWARD);
+    EXPECT_EQ(detail::roundingMode(), FE_UPWARD);
     {
       RoundingScope inner;
-      EXPECT_EQ(std::fegetround(), FE_UPWARD);
+      EXPECT_EQ(detail::roundingMode(), FE_UPWARD);
     }
-    EXPECT_EQ(std::fegetround(), FE_UPWARD);
+    EXPECT_EQ(detail::roundingMode(), FE_UPWARD);
   }
-  EXPECT_EQ(std::fegetround(), FE_TONEAREST);
+  EXPECT_EQ(detail::roundingMode(), FE_TONEAREST);
 }

@@ -71,11 +71,11 @@ std::optional<Sign> certainSign(const DoubleDoubleInterval& value);
 /// previous mode (Interval's upward rounding, say) on destruction.
 class NearestRoundingScope {
  public:
-  NearestRoundingScope() : previous_(std::fegetround()) {
-    if (previous_ != FE_TONEAREST) std::fesetround(FE_TONEAREST);
+  NearestRoundingScope() : previous_(detail::roundingMode()) {
+    if (previous_ != FE_TONEAREST) detail::setRoundingMode(FE_TONEAREST);
   }
   ~NearestRoundingScope() {
-    if (previous_ != FE_TONEAREST) std::fesetround(previous_);
+    if (previous_ != FE_TONEAREST) detail::setRoundingMode(previous_);
   }
   NearestRoundingScope(const NearestRoundingScope&) = delete;
   NearestRoundingScope& operator=(const NearestRoundingScope&) = delete;
