@@ -158,6 +158,29 @@ std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, con
   }, edgeFacet.value_or(spiralLineKey(line, endFeatures)));
 }
 
+namespace {
+
+/// An SF function with its roots (none when it vanishes identically).
+struct SideFunction {
+  std::shared_ptr<const AngleFunction> function;
+  bool zero = false;
+  std::vector<AlgebraicAngle> roots;
+};
+
+/// The line of patch `line` at end k of patch `owner`'s segment.
+SideFunction sideFunction(const PatchGeometry& line, const PatchGeometry& owner, int k, AngleAlgebra& algebra) {
+  SideFunction side{spiralOnLine(line.line, owner.ends[k], owner.segment.ends[k]), false, {}};
+  side.zero = side.function->isIdenticallyZero();
+  if (!side.zero) side.roots = algebra.roots(side.function, PredicateKind::SpiralFacet);
+  return side;
+}
+
+/// The curve of patches `first` (geometry a) and `second` (geometry b): the closure
+/// of the set of angles in both ranges where the two segments cross at a point
+/// inside both, i.e. each segment's ends lie strictly on opposite sides of the
+/// other's line (four SF functions), with the causes of its arcs' ends. Empty when
+/// the segments share an end (their lines then always meet at it) or their lines
+/// coincide. Throws std::logic_error if an arc end has no cause (a bug).
 PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t second, const PatchGeometry& b,
                       AngleAlgebra& algebra) {
   PatchCurve curve{first, second, {}, {}};
@@ -166,28 +189,38 @@ PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t
     return curve;
   }
   // The ends of a on b's line, then the ends of b on a's line.
-  const std::vector<std::shared_ptr<const AngleFunction>> sides{
-      spiralOnLine(b.line, a.ends[0], a.segment.ends[0]), spiralOnLine(b.line, a.ends[1], a.segment.ends[1]),
-      spiralOnLine(a.line, b.ends[0], b.segment.ends[0]), spiralOnLine(a.line, b.ends[1], b.segment.ends[1])};
-  for (const auto& side : sides) {
-    if (side->isIdenticallyZero()) return curve;
+  std::array<SideFunction, 4> sides;
+  for (int k = 0; k < 4; ++k) {
+    sides[k] = k < 2 ? sideFunction(b, a, k, algebra) : sideFunction(a, b, k - 2, algebra);
+    if (sides[k].zero) return curve;
   }
-  std::vector<AlgebraicAngle> rangeEnds;
-  appendArcEnds(a.patch.range, rangeEnds);
-  appendArcEnds(b.patch.range, rangeEnds);
-  const auto opposite = [&](const AlgebraicAngle& angle, std::size_t first) {
-    const Sign one = algebra.signAt(*sides[first], angle);
-    return one != Sign::Zero && algebra.signAt(*sides[first + 1], angle) == -one;
+  const auto inBothRanges = [&](const AlgebraicAngle& angle) {
+    return algebra.contains(a.patch.range, angle) && algebra.contains(b.patch.range, angle);
   };
-  curve.angles = algebra.closureWhere(sides, std::move(rangeEnds), [&](const AlgebraicAngle& angle) {
-    return algebra.contains(a.patch.range, angle) && algebra.contains(b.patch.range, angle) && opposite(angle, 0) &&
-           opposite(angle, 2);
-  }, PredicateKind::SpiralFacet);
+  // The property below can change only where a range ends or an SF function
+  // vanishes inside both ranges (elsewhere it is false on both sides).
+  std::vector<AlgebraicAngle> breakpoints;
+  appendArcEnds(a.patch.range, breakpoints);
+  appendArcEnds(b.patch.range, breakpoints);
+  for (const SideFunction& side : sides) {
+    for (const AlgebraicAngle& root : side.roots) {
+      if (inBothRanges(root)) breakpoints.push_back(root);
+    }
+  }
+  const auto opposite = [&](const AlgebraicAngle& angle, std::size_t first) {
+    const Sign one = algebra.signAt(*sides[first].function, angle);
+    return one != Sign::Zero && algebra.signAt(*sides[first + 1].function, angle) == -one;
+  };
+  curve.angles = algebra.closureOver(std::move(breakpoints), [&](const AlgebraicAngle& angle) {
+    return inBothRanges(angle) && opposite(angle, 0) && opposite(angle, 2);
+  });
   // Each arc end is where one of the four SF functions vanishes or a range ends:
   // the property above can change nowhere else.
   const auto endAt = [&](const AlgebraicAngle& angle) {
     CurveEnd end;
-    for (int k = 0; k < 4; ++k) end.endOnOtherLine[k / 2][k % 2] = algebra.signAt(*sides[k], angle) == Sign::Zero;
+    for (int k = 0; k < 4; ++k) {
+      end.endOnOtherLine[k / 2][k % 2] = algebra.signAt(*sides[k].function, angle) == Sign::Zero;
+    }
     end.rangeEnd = {isRangeEnd(a.patch.range, angle, algebra), isRangeEnd(b.patch.range, angle, algebra)};
     if (!end.any()) throw std::logic_error("patchCurve: an arc of a curve ends without a cause");
     return end;
@@ -195,6 +228,8 @@ PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t
   for (const AngleInterval& arc : curve.angles.arcs) curve.ends.push_back({endAt(arc.from), endAt(arc.to)});
   return curve;
 }
+
+}  // namespace
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> candidatePatchPairs(const std::vector<PatchGeometry>& patches) {
   const PatchBoxIndex index(patches);

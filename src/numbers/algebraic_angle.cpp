@@ -657,10 +657,15 @@ AngleSet AngleAlgebra::positiveSet(const std::vector<std::shared_ptr<const Angle
 AngleSet AngleAlgebra::closureWhere(const std::vector<std::shared_ptr<const AngleFunction>>& functions,
                                     std::vector<AlgebraicAngle> breakpoints,
                                     const std::function<bool(const AlgebraicAngle&)>& holds, PredicateKind kind) {
-  AngleSet set;
   for (const auto& function : functions) {
     for (const AlgebraicAngle& root : this->roots(function, kind)) breakpoints.push_back(root);
   }
+  return closureOver(std::move(breakpoints), holds);
+}
+
+AngleSet AngleAlgebra::closureOver(std::vector<AlgebraicAngle> breakpoints,
+                                   const std::function<bool(const AlgebraicAngle&)>& holds) {
+  AngleSet set;
   std::sort(breakpoints.begin(), breakpoints.end(), [this](const AlgebraicAngle& a, const AlgebraicAngle& b) {
     return compare(a, b) < 0;
   });

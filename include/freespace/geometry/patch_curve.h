@@ -53,20 +53,17 @@ struct PatchCurve {
 std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, const SpiralPoints& end,
                                                   const SegmentEnd& endFeatures);
 
-/// The curve of patches `first` (geometry a) and `second` (geometry b): the closure
-/// of the set of angles in both ranges where the two segments cross at a point
-/// inside both, i.e. each segment's ends lie strictly on opposite sides of the
-/// other's line (four SF functions), with the causes of its arcs' ends. Empty when
-/// the segments share an end (their lines then always meet at it) or their lines
-/// coincide. Throws std::logic_error if an arc end has no cause (a bug).
-PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t second, const PatchGeometry& b,
-                      AngleAlgebra& algebra);
-
 /// The pairs (i < j) of patches whose boxes (patchBoxes) overlap, each once: a
 /// superset of the pairs that cross.
 std::vector<std::pair<std::uint32_t, std::uint32_t>> candidatePatchPairs(const std::vector<PatchGeometry>& patches);
 
-/// Every curve: the candidate pairs whose crossing angles are not empty.
+/// Every curve: the candidate pairs whose crossing angles are not empty. The curve
+/// of two patches is the closure of the set of angles in both ranges where their
+/// segments cross at a point inside both, i.e. each segment's ends lie strictly on
+/// opposite sides of the other's line (four SF functions), with the causes of its
+/// arcs' ends; none when the segments share an end (their lines then always meet at
+/// it) or their lines coincide. Throws std::logic_error if an arc end has no cause
+/// (a bug).
 std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra,
                                     const Cancellation& cancellation = {});
 

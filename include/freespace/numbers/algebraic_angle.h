@@ -222,6 +222,9 @@ class AngleAlgebra {
                         std::vector<AlgebraicAngle> breakpoints,
                         const std::function<bool(const AlgebraicAngle&)>& holds, PredicateKind kind);
 
+  /// The same for a property that can change only at the `breakpoints`.
+  AngleSet closureOver(std::vector<AlgebraicAngle> breakpoints, const std::function<bool(const AlgebraicAngle&)>& holds);
+
  private:
   std::optional<int> compareInDoubles(AlgebraicAngle& a, AlgebraicAngle& b) const;
   std::optional<int> compareByKey(const AlgebraicAngle& a, const AlgebraicAngle& b);
