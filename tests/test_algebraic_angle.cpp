@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 #include <type_traits>
 
@@ -213,12 +214,15 @@ TEST(AlgebraicAngle, GenericQuarticsAreIsolatedInDoubles) {
   EXPECT_GT(roots, 400u);
 }
 
-TEST(AlgebraicAngle, NearTiesBeyondDoublesAreDecidedInMultiprecision) {
-  // alpha = 1/sqrt(2), the root of 2 t^2 - 1 in chart 0, against d, the double
-  // nearest to it: not equal, closer than doubles resolve. Exactly,
-  // sign(alpha - d) = sign(1/2 - d^2) since both are positive.
-  const double d = std::sqrt(0.5);
-  const Sign expected = exactSign(Rational(1, 2) - Rational(d) * Rational(d));
+namespace {
+
+/// alpha = 1/sqrt(2), the root of 2 t^2 - 1 in chart 0, against a rational
+/// d = high + low (a double-word) close to it: the sign of t - d at alpha and the
+/// order of alpha and d, with the level that decided each. Exactly,
+/// sign(alpha - d) = sign(1/2 - d^2) since both are positive.
+void checkNearTie(double high, double low, PrecisionLevel expectedLevel) {
+  const Rational d = Rational(high) + Rational(low);
+  const Sign expected = exactSign(Rational(1, 2) - d * d);
   ASSERT_NE(expected, Sign::Zero);
   PredicateStatistics statistics;
   AngleAlgebra algebra(statistics);
@@ -226,9 +230,9 @@ TEST(AlgebraicAngle, NearTiesBeyondDoublesAreDecidedInMultiprecision) {
     using T = typename decltype(type)::type;
     return Polynomial<T>({T(-1), T(0), T(2)});
   });
-  const auto minusD = std::make_shared<AngleFunction>([d](auto type, int) {
+  const auto minusD = std::make_shared<AngleFunction>([high, low](auto type, int) {
     using T = typename decltype(type)::type;
-    return Polynomial<T>({-T(d), T(1)});
+    return Polynomial<T>({-(T(high) + T(low)), T(1)});
   });
   const std::vector<AlgebraicAngle> roots = algebra.roots(halfSquare, PredicateKind::Other);
   ASSERT_EQ(roots.size(), 4u);  // +-1/sqrt(2) in each chart
@@ -236,13 +240,29 @@ TEST(AlgebraicAngle, NearTiesBeyondDoublesAreDecidedInMultiprecision) {
   ASSERT_EQ(alpha.chart(), 0);
   ASSERT_GT(alpha.lower(), 0);
   EXPECT_EQ(algebra.signAt(*minusD, alpha), expected);
-  const AlgebraicAngle atD = AlgebraicAngle::rational(HalfAngle{0, d});
-  EXPECT_EQ(algebra.compare(alpha, atD), static_cast<int>(expected));
-  // Tight coefficients (2 t^2 - 1 and t - d are exact in doubles) leave both open;
-  // the roots bisected in MPFI decide.
-  const auto multiprecision = static_cast<int>(PrecisionLevel::Multiprecision);
-  EXPECT_EQ(statistics.counts(PredicateKind::SignAtRoot).decided[multiprecision], 1u);
-  EXPECT_EQ(statistics.counts(PredicateKind::RootOrder).decided[multiprecision], 1u);
+  EXPECT_EQ(algebra.compare(alpha, AlgebraicAngle::rational(0, d)), static_cast<int>(expected));
+  // Decided at the expected level (any of the MPFI precisions for Multiprecision).
+  const int low = static_cast<int>(expectedLevel);
+  const int high = expectedLevel == PrecisionLevel::Multiprecision ? static_cast<int>(PrecisionLevel::Exact) : low + 1;
+  for (const PredicateKind kind : {PredicateKind::SignAtRoot, PredicateKind::RootOrder}) {
+    const auto& decided = statistics.counts(kind).decided;
+    EXPECT_EQ(std::accumulate(decided.begin() + low, decided.begin() + high, std::uint64_t{0}), 1u) << statistics.toText();
+  }
+}
+
+}  // namespace
+
+TEST(AlgebraicAngle, NearTiesBeyondDoublesAreDecidedInDoubleDoubles) {
+  // d the double nearest to alpha: closer than doubles resolve (about 2^-54 away).
+  checkNearTie(std::sqrt(0.5), 0.0, PrecisionLevel::DoubleDouble);
+}
+
+TEST(AlgebraicAngle, NearTiesBeyondDoubleDoublesAreDecidedInMultiprecision) {
+  // d the double-word nearest to alpha: about 2^-107 away, past double-doubles.
+  const double high = std::sqrt(0.5);
+  const Rational rest = Rational(1, 2) - Rational(high) * Rational(high);  // (alpha - high)(alpha + high)
+  const double low = (rest / (2 * Rational(high))).convert_to<double>();
+  checkNearTie(high, low, PrecisionLevel::Multiprecision);
 }
 
 TEST(AlgebraicAngle, RootsApartByAFewUlpsAreToldApartByTightCoefficients) {
@@ -275,9 +295,9 @@ TEST(AlgebraicAngle, RootsApartByAFewUlpsAreToldApartByTightCoefficients) {
   EXPECT_EQ(decided[static_cast<int>(PrecisionLevel::Exact)], 0u);
 }
 
-TEST(AlgebraicAngle, RootsOneUlpApartAreToldApartByPreciseBisection) {
+TEST(AlgebraicAngle, RootsOneUlpApartAreToldApartWithoutRationals) {
   // t - a and t - b with b the double after a: no double enclosure separates them,
-  // the roots bisected in 108-bit MPFI do, without exact coefficients (they throw).
+  // double-doubles do, without exact coefficients (they throw).
   const double a = 0.3, b = std::nextafter(a, 1.0);
   const auto rootAt = [](double value) {
     return std::make_shared<AngleFunction>([value](auto type, int) {

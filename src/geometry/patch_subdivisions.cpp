@@ -34,6 +34,24 @@ T crossingOrderValue(const PatchGeometry& patch, const PatchGeometry& g, const P
   return (g0 * h1 - h0 * g1) * g0 * h0;
 }
 
+/// lambda_g in double intervals at an angle given by enclosures of its cosine and
+/// sine (inside a RoundingScope); nothing when V_g(0) - V_g(1) may vanish.
+std::optional<Interval> crossingLambda(const PatchGeometry& patch, const PatchGeometry& g, const Interval& cosine,
+                                       const Interval& sine) {
+  const Interval v0 = lineAtEnd(patch, 0, g, cosine, sine), difference = v0 - lineAtEnd(patch, 1, g, cosine, sine);
+  const std::optional<Sign> sign = certainSign(difference);
+  if (!sign || *sign == Sign::Zero) return std::nullopt;
+  return v0 / difference;
+}
+
+/// sign(lambda_h - lambda_g) when the enclosures are apart; 0 when not known.
+int certainOrder(const std::optional<Interval>& g, const std::optional<Interval>& h) {
+  if (!g || !h) return 0;
+  if (g->upper() < h->lower()) return 1;
+  if (h->upper() < g->lower()) return -1;
+  return 0;
+}
+
 /// V_g(0) V_h(1) - V_h(0) V_g(1) (see crossingOrderValue) as an angle function:
 /// lambda_h - lambda_g = that / ((V_g(0) - V_g(1)) (V_h(0) - V_h(1))).
 AngleFunction crossingDifference(const PatchGeometry& patch, const PatchGeometry& g, const PatchGeometry& h) {
@@ -260,7 +278,10 @@ class PatchSweep {
     for (std::uint32_t curve : curvesOfPatch_) {
       if (algebra_.contains(curves_[curve].angles, sample)) slab.curves.push_back(curve);
     }
+    // Crossings apart in double intervals are ordered by them, the others exactly.
+    const std::unordered_map<std::uint32_t, std::optional<Interval>> lambda = lambdasAt(sample, slab.curves);
     std::sort(slab.curves.begin(), slab.curves.end(), [&](std::uint32_t a, std::uint32_t b) {
+      if (const int apart = certainOrder(lambda.at(a), lambda.at(b))) return apart > 0;
       const Sign order = crossingOrder(patches_[patch_], other(a), other(b), sample, algebra_);
       if (order == Sign::Zero) fail("two curves cross the segment at one point", sample, {a, b});
       return order == Sign::Positive;
@@ -270,6 +291,16 @@ class PatchSweep {
   }
 
   const PatchGeometry& other(std::uint32_t curve) const { return patches_[otherPatch(curve)]; }
+
+  /// lambda of each curve's other patch at the angle, in double intervals.
+  std::unordered_map<std::uint32_t, std::optional<Interval>> lambdasAt(const AlgebraicAngle& angle,
+                                                                      const std::vector<std::uint32_t>& curves) const {
+    std::unordered_map<std::uint32_t, std::optional<Interval>> lambda;
+    RoundingScope rounding;
+    const auto [cosine, sine] = cosSinEnclosure(angle);
+    for (std::uint32_t curve : curves) lambda[curve] = crossingLambda(patches_[patch_], other(curve), cosine, sine);
+    return lambda;
+  }
 
   std::uint32_t otherPatch(std::uint32_t curve) const { return curves_[curve].other(patch_); }
 
@@ -354,21 +385,37 @@ class PatchSweep {
         }
       }
     }
+    if (interior.empty()) return finishRanks(rank, interior, atEnd1);
+    // Every predicate below is at the event's angle: refined once.
+    const AlgebraicAngle at = group.angle.narrowed();
+    const std::unordered_map<std::uint32_t, std::optional<Interval>> lambda = lambdasAt(at, interior);
     std::unordered_map<std::uint32_t, Sign> denominator;
     for (std::uint32_t curve : interior) {
-      denominator[curve] = algebra_.signAt(endValueDifference(patches_[patch_], other(curve)), group.angle);
+      // A lambda in intervals has a denominator of certain sign, found again here.
+      denominator[curve] = algebra_.signAt(endValueDifference(patches_[patch_], other(curve)), at);
       if (denominator[curve] == Sign::Zero) fail("a curve's line is parallel to the segment", group.angle, {curve});
     }
     // sign(lambda_h - lambda_g) at the event's angle.
     const auto order = [&](std::uint32_t g, std::uint32_t h) {
       if (point[g][0] != kUnnamed && point[g] == point[h]) return 0;
-      const Sign difference = algebra_.signAt(crossingDifference(patches_[patch_], other(g), other(h)), group.angle);
+      if (const int apart = certainOrder(lambda.at(g), lambda.at(h))) return apart;
+      const Sign difference = algebra_.signAt(crossingDifference(patches_[patch_], other(g), other(h)), at);
       return static_cast<int>(difference) * static_cast<int>(denominator[g]) * static_cast<int>(denominator[h]);
     };
     std::sort(interior.begin(), interior.end(), [&](std::uint32_t g, std::uint32_t h) { return order(g, h) > 0; });
+    std::vector<int> distinctFromPrevious(interior.size(), 1);
+    for (std::size_t i = 1; i < interior.size(); ++i) distinctFromPrevious[i] = order(interior[i - 1], interior[i]) != 0;
+    return finishRanks(rank, interior, atEnd1, distinctFromPrevious);
+  }
+
+  /// Ranks 1, 2, ... for the sorted interior curves (a new rank where a curve's
+  /// point differs from the previous one's), one more for those at end 1.
+  static std::pair<std::unordered_map<std::uint32_t, int>, int> finishRanks(
+      std::unordered_map<std::uint32_t, int>& rank, const std::vector<std::uint32_t>& interior,
+      const std::vector<std::uint32_t>& atEnd1, const std::vector<int>& distinctFromPrevious = {}) {
     int next = 0;
     for (std::size_t i = 0; i < interior.size(); ++i) {
-      if (i == 0 || order(interior[i - 1], interior[i]) != 0) ++next;
+      if (i == 0 || distinctFromPrevious[i]) ++next;
       rank[interior[i]] = next;
     }
     for (std::uint32_t curve : atEnd1) rank[curve] = next + 1;

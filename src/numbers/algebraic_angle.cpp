@@ -122,6 +122,38 @@ bool vanishesAtRoot(const RationalPolynomial& p, const RationalPolynomial& squar
   return root.lo != root.hi && countDistinctRoots(sturmSequence(squareFreePart(common)), root.lo, root.hi) > 0;
 }
 
+/// The sign of the function at the angle from its double-double polynomial at the
+/// angle's parameter refined in double-doubles; nothing when not certain.
+std::optional<Sign> signInDoubleDoubles(const AngleFunction& function, const AlgebraicAngle& angle) {
+  const std::optional<DoubleDoubleInterval> t = doubleDoubleParameter(angle);
+  if (!t) return std::nullopt;
+  const Polynomial<DoubleDoubleInterval>& p = function.doubleDouble(angle.chart());
+  NearestRoundingScope rounding;
+  return certainSign(p.evaluate(*t));
+}
+
+/// Whether b - a is certainly positive.
+bool certainlyBelow(const DoubleDoubleInterval& a, const DoubleDoubleInterval& b) {
+  return certainSign(b - a) == Sign::Positive;
+}
+
+/// A rational angle between two angles of one chart, `from` below `to`, from their
+/// parameters refined in double-doubles: a double when one lies between, else a
+/// double-double.
+std::optional<AlgebraicAngle> betweenInDoubleDoubles(const AlgebraicAngle& from, const AlgebraicAngle& to) {
+  const std::optional<DoubleDoubleInterval> low = doubleDoubleParameter(from), high = doubleDoubleParameter(to);
+  if (!low || !high) return std::nullopt;
+  NearestRoundingScope rounding;
+  const DoubleDoubleInterval middle = ((*low + *high) * 0.5).midpoint();
+  for (const DoubleDoubleInterval& point : {DoubleDoubleInterval(middle.high()), middle}) {
+    if (certainlyBelow(*low, point) && certainlyBelow(point, *high)) {
+      if (point.low() == 0) return AlgebraicAngle::rational(from.chart(), point.high());
+      return AlgebraicAngle::rational(from.chart(), Rational(point.high()) + Rational(point.low()));
+    }
+  }
+  return std::nullopt;
+}
+
 /// The MPFI ladder for the sign of f at a root: the level that decided, or nothing.
 template <int Step = 0>
 std::optional<std::pair<Sign, int>> signAtRootOnLadder(const RationalPolynomial& f, const RationalPolynomial& squareFree,
@@ -292,6 +324,17 @@ bool AlgebraicAngle::refineInDoubles() {
   return false;
 }
 
+AlgebraicAngle AlgebraicAngle::narrowed() const {
+  constexpr double kNarrowEnough = 0x1p-40;
+  AlgebraicAngle copy = *this;
+  for (int pass = 0; pass < 2; ++pass) {
+    while (copy.refineInDoubles()) {
+    }
+    if (!(copy.upper_ - copy.lower_ > kNarrowEnough) || !copy.useTightCoefficients()) break;
+  }
+  return copy;
+}
+
 bool AlgebraicAngle::useTightCoefficients() {
   if (!function_ || tight_) return false;
   tight_ = true;
@@ -354,6 +397,9 @@ Sign AngleAlgebra::signAt(const AngleFunction& function, const AlgebraicAngle& a
   if (const auto sign = signInDoubles(function.tight(angle.chart()), refined)) {
     return record(PredicateKind::SignAtRoot, kTightLevel, *sign);
   }
+  if (const auto sign = signInDoubleDoubles(function, refined)) {
+    return record(PredicateKind::SignAtRoot, kTightLevel, *sign);
+  }
   const RationalPolynomial& exact = function.exact(angle.chart());
   if (angle.isRational()) return record(PredicateKind::SignAtRoot, kExactLevel, freespace::signAt(exact, angle.root().lo));
   const RationalPolynomial& squareFree = angle.function()->squareFree(angle.chart());
@@ -406,6 +452,7 @@ int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
   std::optional<int> order = compareInDoubles(first, second);
   if (order) record(PredicateKind::RootOrder, kDoubleLevel, signOf(*order));
   if (!order) order = compareTightly(first, second);
+  if (!order) order = compareInDoubleDoubles(first, second);
   if (!order) order = comparePrecisely(first, second);
   if (!order) order = compareEscalated(first, second);
   if (pair) knownOrders_.emplace(std::move(*pair), *order);
@@ -455,6 +502,16 @@ std::optional<int> AngleAlgebra::comparePrecisely(const AlgebraicAngle& first, c
   const int order = apart->first.below(apart->second) ? -1 : 1;
   record(PredicateKind::RootOrder, kPreciseLevel, signOf(order));
   return order;
+}
+
+std::optional<int> AngleAlgebra::compareInDoubleDoubles(const AlgebraicAngle& first, const AlgebraicAngle& second) {
+  const EscalationTimer timer(statistics_, PredicateKind::RootOrder);
+  const std::optional<DoubleDoubleInterval> a = doubleDoubleParameter(first), b = doubleDoubleParameter(second);
+  if (!a || !b || first.chart() != second.chart()) return std::nullopt;
+  NearestRoundingScope rounding;
+  if (certainlyBelow(*a, *b)) return static_cast<int>(record(PredicateKind::RootOrder, kTightLevel, Sign::Negative));
+  if (certainlyBelow(*b, *a)) return static_cast<int>(record(PredicateKind::RootOrder, kTightLevel, Sign::Positive));
+  return std::nullopt;
 }
 
 std::optional<int> AngleAlgebra::compareTightly(AlgebraicAngle& first, AlgebraicAngle& second) {
@@ -598,6 +655,23 @@ std::optional<DoubleDoubleInterval> doubleDoubleParameter(const AlgebraicAngle& 
   return std::nullopt;
 }
 
+std::pair<Interval, Interval> cosSinEnclosure(const AlgebraicAngle& angle) {
+  Interval cosine, sine;
+  if (angle.lower() == angle.upper()) {
+    HalfAngle{angle.chart(), angle.lower()}.cosSin(cosine, sine);
+  } else if (angle.isRational()) {
+    const auto [c, s] = exactCosSin(angle);
+    cosine = enclosingInterval(c);
+    sine = enclosingInterval(s);
+  } else {
+    const Interval t(angle.lower(), angle.upper()), w = Interval(1) + t * t;
+    const Interval chartSign(angle.chart() == 0 ? 1.0 : -1.0);
+    cosine = chartSign * (Interval(1) - t * t) / w;
+    sine = chartSign * (t + t) / w;
+  }
+  return {cosine, sine};
+}
+
 std::pair<Rational, Rational> exactCosSin(const AlgebraicAngle& rationalAngle) {
   const Rational t = rationalAngle.root().lo, w = 1 + t * t, chartSign(rationalAngle.chart() == 0 ? 1 : -1);
   return {chartSign * (1 - t * t) / w, chartSign * 2 * t / w};
@@ -613,6 +687,7 @@ AlgebraicAngle AngleAlgebra::rationalBetween(const AlgebraicAngle& from, const A
     if (auto inside = refineBothUntil(narrowFrom, narrowTo, between)) return *inside;
   }
   if (order < 0 && from.chart() == to.chart()) {
+    if (auto inside = betweenInDoubleDoubles(narrowFrom, narrowTo)) return *inside;
     if (auto inside = betweenPrecisely(narrowFrom, narrowTo)) return *inside;
   }
   // Going counterclockwise from `from`, `to` comes a full turn later when it

@@ -130,6 +130,10 @@ class AlgebraicAngle {
   /// From now on refines with the function's tight coefficients. Returns false when
   /// there is nothing to tighten (a rational angle, or already tight).
   bool useTightCoefficients();
+  /// A copy refined in doubles as far as they go (with tight coefficients when the
+  /// function's own leave it wider than 2^-40): for many predicates at one angle,
+  /// which then start from a narrow enclosure.
+  AlgebraicAngle narrowed() const;
 
  private:
   std::shared_ptr<const AngleFunction> function_;
@@ -161,6 +165,10 @@ struct AngleSet {
 /// The cosine and sine of a rational angle (AlgebraicAngle::isRational), exactly,
 /// from its chart's parameter t (HalfAngle's formulas).
 std::pair<Rational, Rational> exactCosSin(const AlgebraicAngle& rationalAngle);
+
+/// Double enclosures of the cosine and sine of an angle (inside a RoundingScope): a
+/// rational angle's own, or HalfAngle's formulas over its enclosure of t.
+std::pair<Interval, Interval> cosSinEnclosure(const AlgebraicAngle& angle);
 
 /// The angle's tangent parameter t (in its chart) as a double-double interval of
 /// radius 2^-99 (up to 2^-79 for ill-conditioned roots): a rational angle's own
@@ -230,6 +238,8 @@ class AngleAlgebra {
   std::optional<int> compareByKey(const AlgebraicAngle& a, const AlgebraicAngle& b);
   /// The order in double intervals once the functions' tight coefficients are used.
   std::optional<int> compareTightly(AlgebraicAngle& first, AlgebraicAngle& second);
+  /// The order of the angles' parameters refined in double-doubles, when apart.
+  std::optional<int> compareInDoubleDoubles(const AlgebraicAngle& first, const AlgebraicAngle& second);
   /// The order from the roots bisected in MPFI (the functions' precise polynomials),
   /// when their signs stay certain.
   std::optional<int> comparePrecisely(const AlgebraicAngle& first, const AlgebraicAngle& second);

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 #include "freespace/numbers/half_angle.h"
@@ -61,21 +62,7 @@ struct IntervalSlice {
 
   Interval cosine, sine;
 
-  explicit IntervalSlice(const AlgebraicAngle& angle) {
-    if (angle.lower() == angle.upper()) {
-      HalfAngle{angle.chart(), angle.lower()}.cosSin(cosine, sine);
-    } else if (angle.isRational()) {
-      const auto [c, s] = exactCosSin(angle);
-      cosine = enclosingInterval(c);
-      sine = enclosingInterval(s);
-    } else {
-      // HalfAngle's formulas over the interval of t.
-      const Interval t(angle.lower(), angle.upper()), w = Interval(1) + t * t;
-      const Interval chartSign(angle.chart() == 0 ? 1.0 : -1.0);
-      cosine = chartSign * (Interval(1) - t * t) / w;
-      sine = chartSign * (t + t) / w;
-    }
-  }
+  explicit IntervalSlice(const AlgebraicAngle& angle) { std::tie(cosine, sine) = cosSinEnclosure(angle); }
 
   std::array<Interval, 2> end(const PatchGeometry& patch, int k) const {
     return spiralPoint(spiralOf<Interval>(patch.ends[k]), cosine, sine);
