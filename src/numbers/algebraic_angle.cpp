@@ -100,6 +100,9 @@ std::optional<std::vector<Interval>> chartRootsInDoubles(const Polynomial<Interv
   return detail::isolateRootsInDoubles(p, -1, 1);
 }
 
+/// The width in t to which roots are refined when they are isolated.
+constexpr double kNarrowRoot = 0x1p-40;
+
 /// The angle's exact isolating interval in the form the exact functions require:
 /// an endpoint where the function vanishes (possible for enclosures found in
 /// doubles) becomes the exact root.
@@ -307,21 +310,29 @@ bool AlgebraicAngle::refineInDoubles() {
   const Polynomial<Interval>& p = tight_ ? function_->tight(chart_) : function_->approximate(chart_);
   const double width = upper_ - lower_;
   RoundingScope rounding;
-  const std::optional<Sign> atLower = certainSign(p.evaluate(Interval(lower_)));
-  const std::optional<Sign> atUpper = certainSign(p.evaluate(Interval(upper_)));
-  // Bisect by sign only across a certain sign change: the enclosure holds one
-  // distinct root, and if p changes sign over it that root is the only change. A
-  // root of even multiplicity is left to the exact level.
-  if (!atLower || !atUpper || *atLower != -*atUpper || *atLower == Sign::Zero) return false;
+  if (signAtLower_ == Sign::Zero) {
+    const std::optional<Sign> atLower = certainSign(p.evaluate(Interval(lower_)));
+    const std::optional<Sign> atUpper = certainSign(p.evaluate(Interval(upper_)));
+    // Bisect by sign only across a certain sign change: the enclosure holds one
+    // distinct root, and if p changes sign over it that root is the only change. A
+    // root of even multiplicity is left to the exact level.
+    if (!atLower || !atUpper || *atLower != -*atUpper || *atLower == Sign::Zero) return false;
+    signAtLower_ = *atLower;
+  }
   for (const double fraction : detail::kSplitFractions) {
     const double point = lower_ + fraction * width;  // rounded upward: still a double
     if (!(point > lower_ && point < upper_)) continue;
     const std::optional<Sign> atPoint = certainSign(p.evaluate(Interval(point)));
     if (!atPoint || *atPoint == Sign::Zero) continue;
-    (*atPoint == *atLower ? lower_ : upper_) = point;
+    (*atPoint == signAtLower_ ? lower_ : upper_) = point;
     return true;
   }
   return false;
+}
+
+void AlgebraicAngle::refineInDoublesTo(double width) {
+  while (upper_ - lower_ > width && refineInDoubles()) {
+  }
 }
 
 AlgebraicAngle AlgebraicAngle::narrowed() const {
@@ -344,11 +355,14 @@ bool AlgebraicAngle::useTightCoefficients() {
 std::vector<AlgebraicAngle> AngleAlgebra::roots(const std::shared_ptr<const AngleFunction>& function,
                                                 PredicateKind kind) {
   std::vector<AlgebraicAngle> angles;
+  // Enclosures from bisection (Descartes' rule) can be as wide as the chart: they
+  // are narrowed here once rather than by every comparison.
   const auto addEnclosures = [&](int chart, const std::vector<Interval>& enclosures, bool tight) {
     int index = 0;
     for (const Interval& t : enclosures) {
       angles.emplace_back(function, chart, t.lower(), t.upper(), index++);
       if (tight) angles.back().useTightCoefficients();
+      angles.back().refineInDoublesTo(kNarrowRoot);
     }
   };
   for (int chart = 0; chart < 2; ++chart) {

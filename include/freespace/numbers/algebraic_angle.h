@@ -123,10 +123,13 @@ class AlgebraicAngle {
   /// theta in radians, approximately (for output only).
   double radians() const;
 
-  /// Halves the double enclosure (and the exact interval) once, when the function's
-  /// sign at the midpoint is certain in double intervals. Returns false when no
+  /// Halves the double enclosure once (or splits it off the middle), when the
+  /// function's sign there is certain in double intervals. Returns false when no
   /// progress can be made in doubles.
   bool refineInDoubles();
+  /// Refines in doubles until the enclosure is at most `width` wide or no progress
+  /// can be made.
+  void refineInDoublesTo(double width);
   /// From now on refines with the function's tight coefficients. Returns false when
   /// there is nothing to tighten (a rational angle, or already tight).
   bool useTightCoefficients();
@@ -142,6 +145,9 @@ class AlgebraicAngle {
   double lower_, upper_;
   int index_ = -1;
   bool tight_ = false;
+  /// The function's sign at `lower_` once found certain (it never changes as the
+  /// enclosure narrows); Zero while unknown.
+  Sign signAtLower_ = Sign::Zero;
 };
 
 /// An arc of the circle, counterclockwise from `from` to `to` (both included).
