@@ -162,6 +162,10 @@ TEST(DoubleDoubleInterval, DecidesSignsThatDoubleIntervalsCannot) {
   const double huge = std::numeric_limits<double>::max();
   EXPECT_EQ(certainSign(DoubleDoubleInterval(huge) * huge - DoubleDoubleInterval(huge) * huge), std::nullopt);
   EXPECT_THROW(DoubleDoubleInterval(1.0) / (DoubleDoubleInterval(1.0) - 1.0), std::domain_error);
+  // A rational beyond doubles decides nothing.
+  const Rational beyond = boost::multiprecision::pow(boost::multiprecision::mpz_int(10), 400);
+  EXPECT_EQ(certainSign(DoubleDoubleInterval(beyond)), std::nullopt);
+  EXPECT_EQ(certainSign(DoubleDoubleInterval(Rational(-beyond)) * 2.0), std::nullopt);
 }
 
 TEST(DoubleDoubleInterval, NearestRoundingScopeRestoresTheMode) {

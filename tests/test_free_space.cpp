@@ -104,21 +104,27 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BundledFreeSpace,
 }  // namespace
 
 TEST(FreeSpaceConstruction, AnnouncesItsStagesAndStopsSoonAfterCancellation) {
-  const LoadedProblem problem = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/maze.cfg");
-  std::atomic<bool> stop{false};
+  // The tetrahedron in a floor plan of 256 rooms: seconds to build; stopped 100 ms
+  // into the curves.
+  const Scene scene = makeScene("tetra_floorplan_256");
+  std::atomic<bool> stop{false}, curvesStarted{false};
   std::vector<std::string> stages;
   FreeSpaceOptions options;
   options.cancellation = Cancellation(stop);
-  options.progress = [&](const std::string& stage) { stages.push_back(stage); };
+  options.progress = [&](const std::string& stage) {
+    stages.push_back(stage);
+    if (stage == "curves") curvesStarted = true;
+  };
   std::chrono::steady_clock::time_point asked;
   std::thread asker([&] {
-    std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+    while (!curvesStarted) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
     asked = std::chrono::steady_clock::now();
     stop = true;
   });
   bool cancelled = false;
   try {
-    const FreeSpace space(problem.robot, problem.world, options);  // about 20 s when not stopped
+    const FreeSpace space(scene.robot, scene.world, options);
   } catch (const Cancelled&) {
     cancelled = true;
   }

@@ -85,6 +85,12 @@ double magnitude(DoubleWord x) { return std::fabs(x.high) + std::fabs(x.low); }
 DoubleDoubleInterval::DoubleDoubleInterval(const Rational& value) {
   // convert_to<double> truncates toward zero: each part is off by less than an ulp.
   const double high = value.convert_to<double>();
+  if (!std::isfinite(high)) {
+    // Beyond doubles: an interval that decides nothing.
+    high_ = 0;
+    radius_ = std::numeric_limits<double>::infinity();
+    return;
+  }
   const Rational rest = value - Rational(high);
   const double low = rest.convert_to<double>();
   const Rational remainderExactly = abs(Rational(rest - Rational(low)));

@@ -30,13 +30,30 @@ std::string text(const Rational& value) { return value.str(); }
 
 /// A rational written by text(): canonical (lowest terms, positive denominator), so
 /// that no zero denominator or unreduced fraction reaches GMP.
+/// Digits with no leading zero (or "0" alone when `zero` allows it).
+bool plainDigits(const std::string& digits, bool zero) {
+  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) return false;
+  return digits[0] != '0' || (zero && digits == "0");
+}
+
+/// A rational written as saved: an integer, or a fraction in lowest terms with a
+/// denominator above 1; checked before GMP reads it (it must never see a malformed
+/// or unreduced number).
 Rational rationalOf(const std::string& value) {
-  if (value.empty() || value.find_first_not_of("-0123456789/") != std::string::npos) {
+  using boost::multiprecision::mpz_int;
+  const bool negative = !value.empty() && value[0] == '-';
+  const std::string magnitude = value.substr(negative ? 1 : 0);
+  const std::size_t slash = magnitude.find('/');
+  const std::string numeratorDigits = magnitude.substr(0, slash);
+  const std::string denominatorDigits = slash == std::string::npos ? "1" : magnitude.substr(slash + 1);
+  if (!plainDigits(numeratorDigits, !negative) || !plainDigits(denominatorDigits, false)) {
     throw std::out_of_range("a number");
   }
-  const Rational parsed(value);
-  if (boost::multiprecision::denominator(parsed) == 0 || parsed.str() != value) throw std::out_of_range("a number");
-  return parsed;
+  const mpz_int numerator(numeratorDigits), denominator(denominatorDigits);
+  if ((slash != std::string::npos && denominator == 1) || gcd(numerator, denominator) != 1) {
+    throw std::out_of_range("a number");
+  }
+  return Rational(negative ? mpz_int(-numerator) : numerator, denominator);
 }
 
 double finite(double value) {
