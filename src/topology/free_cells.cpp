@@ -33,13 +33,20 @@ class Nesting {
           AngleAlgebra& algebra)
       : arrangement_(arrangement), rays_(rays), sides_(sides), algebra_(algebra),
         members_(arrangement.shells.count()), angles_(arrangement.shells.count()),
-        rank_(arrangement.shells.count() + 1), parent_(arrangement.shells.count() + 1),
-        sets_(rank_.data(), parent_.data()) {
+        leftmost_(arrangement.shells.count()), rank_(arrangement.shells.count() + 1),
+        parent_(arrangement.shells.count() + 1), sets_(rank_.data(), parent_.data()) {
     for (std::size_t i = 0; i < parent_.size(); ++i) sets_.make_set(i);
+    std::vector<double> lowestX(arrangement.patches.size(), HUGE_VAL);
+    for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
+      for (const PatchBox& box : patchBoxes(arrangement.patches[patch])) lowestX[patch] = std::min(lowestX[patch], box.low[0]);
+    }
     for (std::uint32_t patch = 0; patch < arrangement.subdivisions.size(); ++patch) {
       for (std::uint32_t face = 0; face < arrangement.subdivisions[patch].faceCount; ++face) {
-        members_[arrangement.shells.shellOf({patch, face})].push_back({patch, face});
+        members_[arrangement.shells.shellOf({patch, face})].push_back({{patch, face}, lowestX[patch]});
       }
+    }
+    for (auto& members : members_) {
+      std::sort(members.begin(), members.end(), [](const Member& a, const Member& b) { return a.lowestX < b.lowestX; });
     }
   }
 
@@ -67,7 +74,7 @@ class Nesting {
   /// A rational angle where the shell has a slice: the sample of one of its
   /// sub-faces' slabs.
   AlgebraicAngle firstSample(std::uint32_t shell) const {
-    for (const SubFaceId& face : members_[shell]) {
+    for (const auto& [face, lowestX] : members_[shell]) {
       for (const PatchSlab& slab : arrangement_.subdivisions[face.patch].slabs) {
         if (std::find(slab.faces.begin(), slab.faces.end(), face.face) != slab.faces.end()) return slab.sample;
       }
@@ -77,7 +84,9 @@ class Nesting {
 
   /// The leftmost point of the shell's slice at a rational angle, if it has one:
   /// the ends of its sub-faces' pieces are first bounded in double intervals, and
-  /// only those that may be leftmost are computed exactly.
+  /// only those that may be leftmost are computed exactly. Sub-faces come by the
+  /// left end of their patches' boxes: none past the leftmost end found so far
+  /// need be looked at.
   std::optional<Point> leftmostAt(std::uint32_t shell, const AlgebraicAngle& angle) const {
     struct PieceEnd {
       SubFaceId face;
@@ -90,7 +99,8 @@ class Nesting {
     {
       RoundingScope rounding;
       const slices::IntervalSlice slice(angle);
-      for (const SubFaceId& face : members_[shell]) {
+      for (const auto& [face, lowestX] : members_[shell]) {
+        if (lowestX > leftmostX) break;
         if (!algebra_.contains(arrangement_.patches[face.patch].patch.range, angle)) continue;
         const PatchSlab* slab = slabAt(arrangement_.subdivisions[face.patch], angle, algebra_);
         if (!slab) throw std::logic_error("FreeCells: a shell's angle is an event of one of its patches");
@@ -124,14 +134,17 @@ class Nesting {
     return best;
   }
 
-  Leftmost leftmost(std::uint32_t shell) const {
-    std::optional<Leftmost> best;
-    for (const AlgebraicAngle& angle : angles_[shell]) {
+  /// The leftmost point over the shell's angles; each angle is looked at once, the
+  /// best so far kept as angles are added.
+  Leftmost leftmost(std::uint32_t shell) {
+    LeftmostSoFar& known = leftmost_[shell];
+    for (; known.angles < angles_[shell].size(); ++known.angles) {
+      const AlgebraicAngle& angle = angles_[shell][known.angles];
       const std::optional<Point> point = leftmostAt(shell, angle);
-      if (point && (!best || leftOf(*point, best->point))) best = Leftmost{angle, *point};
+      if (point && (!known.best || leftOf(*point, known.best->point))) known.best = Leftmost{angle, *point};
     }
-    if (!best) throw std::logic_error("FreeCells: a shell has no slice at its angles");
-    return *best;
+    if (!known.best) throw std::logic_error("FreeCells: a shell has no slice at its angles");
+    return *known.best;
   }
 
   /// Which side of a shell a point just outside it near its leftmost point lies on,
@@ -193,8 +206,20 @@ class Nesting {
   const SliceRays& rays_;
   const std::vector<ShellSide>& sides_;
   AngleAlgebra& algebra_;
-  std::vector<std::vector<SubFaceId>> members_;
+  /// A sub-face of a shell with the left end of its patch's boxes.
+  struct Member {
+    SubFaceId face;
+    double lowestX;
+  };
+  /// The leftmost point over a shell's first `angles` angles.
+  struct LeftmostSoFar {
+    std::size_t angles = 0;
+    std::optional<Leftmost> best;
+  };
+
+  std::vector<std::vector<Member>> members_;
   std::vector<std::vector<AlgebraicAngle>> angles_;
+  std::vector<LeftmostSoFar> leftmost_;
   std::vector<std::size_t> rank_, parent_;
   boost::disjoint_sets<std::size_t*, std::size_t*> sets_;
 };
