@@ -16,8 +16,7 @@ T dot(const Vector<T>& a, const Vector<T>& b) {
   return a[0] * b[0] + a[1] * b[1];
 }
 
-Interval toInterval(const Interval& value) { return value; }
-Interval toInterval(const DoubleDoubleInterval& value) { return enclosingInterval(value); }
+using slices::toInterval;
 
 Interval hull(const Interval& a, const Interval& b) {
   return {std::min(a.lower(), b.lower()), std::max(a.upper(), b.upper())};
@@ -266,12 +265,7 @@ std::optional<EdgeCrossSections> crossSectionsInIntervals(const HorizontalEdge& 
                                                           const std::vector<PatchGeometry>& patches,
                                                           const std::vector<PatchCurve>& curves,
                                                           AngleAlgebra& algebra) {
-  std::optional<slices::IntervalSlice> slice;
-  {
-    RoundingScope rounding;
-    slice.emplace(edge.angle);
-  }
-  return crossSectionsAt(*slice, edge, slabs, patches, curves, algebra);
+  return crossSectionsAt(*slices::IntervalSlice::at(edge.angle), edge, slabs, patches, curves, algebra);
 }
 
 std::optional<EdgeCrossSections> crossSectionsInDoubleDoubles(const HorizontalEdge& edge,

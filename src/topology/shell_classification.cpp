@@ -25,7 +25,10 @@ std::optional<SubFaceProbe> probeInSlab(const Arrangement& arrangement, const Sl
   const Rational scale = (1 + abs(middle[0]) + abs(middle[1])) / (abs(segment.nx) + abs(segment.ny));
   for (Rational distance = scale / 1024; distance > scale * kSmallest; distance /= 16) {
     const Point off{middle[0] + sign * distance * segment.nx, middle[1] + sign * distance * segment.ny};
-    const RayHit hit = rays.castTo(sample, off, middle);
+    // Toward the mirror point across the segment, so that the segment is met inside
+    // the ray (where double intervals can tell) rather than at its end.
+    const Point mirror{2 * middle[0] - off[0], 2 * middle[1] - off[1]};
+    const RayHit hit = rays.castTo(sample, off, mirror);
     if (hit.kind == RayHit::Kind::SubFace && hit.face == face && hit.fromPositiveSide == (sign > 0)) {
       return SubFaceProbe{{cosine, sine, off[0], off[1]}};
     }

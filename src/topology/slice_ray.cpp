@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <type_traits>
 
 #include "freespace/geometry/patch_box_index.h"
 #include "freespace/topology/slice_pieces.h"
@@ -34,38 +35,57 @@ struct IntervalMeeting {
   bool certain;
 };
 
-/// The ray and the angle in double intervals: a filter before exact crossings.
-struct IntervalRay : slices::IntervalSlice {
-  std::array<Interval, 2> from, direction;
+template <class T>
+T enclosing(const Rational& value) {
+  if constexpr (std::is_same_v<T, Interval>) {
+    return enclosingInterval(value);
+  } else {
+    return T(value);
+  }
+}
 
-  IntervalRay(const AlgebraicAngle& angle, const Point& start, const Point& step) : IntervalSlice(angle) {
+/// The ray and the angle in the interval number type of a slice (double intervals,
+/// or double-doubles where those leave the answer open): a filter before exact
+/// crossings. Its results come as double intervals.
+template <class Slice>
+struct RayIn : Slice {
+  using T = typename Slice::Number;
+  std::array<T, 2> from, direction;
+
+  RayIn(const Slice& slice, const Point& start, const Point& step) : Slice(slice) {
     for (int axis = 0; axis < 2; ++axis) {
-      from[axis] = enclosingInterval(start[axis]);
-      direction[axis] = enclosingInterval(step[axis]);
+      from[axis] = enclosing<T>(start[axis]);
+      direction[axis] = enclosing<T>(step[axis]);
     }
   }
 
   /// Where along the ray (distance) and along the segment (lambda) the ray meets the
-  /// patch's segment, in intervals; none when it certainly misses it (inside a
-  /// RoundingScope). `certain` when it certainly meets it at an inner point.
+  /// patch's segment; none when it certainly misses it. `certain` when it certainly
+  /// meets it at an inner point.
   std::optional<IntervalMeeting> meeting(std::uint32_t patch, const PatchGeometry& geometry, bool bounded) const {
-    const std::array<Interval, 2> end0 = end(geometry, 0), end1 = end(geometry, 1);
-    const Interval wx = end1[0] - end0[0], wy = end1[1] - end0[1];
-    const Interval ox = end0[0] - from[0], oy = end0[1] - from[1];
-    const Interval denominator = direction[0] * wy - direction[1] * wx;
+    const std::array<T, 2> end0 = this->end(geometry, 0), end1 = this->end(geometry, 1);
+    const T wx = end1[0] - end0[0], wy = end1[1] - end0[1];
+    const T ox = end0[0] - from[0], oy = end0[1] - from[1];
+    const T denominator = direction[0] * wy - direction[1] * wx;
     const std::optional<Sign> sign = certainSign(denominator);
     if (!sign || *sign == Sign::Zero) return IntervalMeeting{patch, Interval(0, HUGE_VAL), Interval(0, 1), false};
-    const Interval s = (ox * wy - oy * wx) / denominator;
-    const Interval lambda = (ox * direction[1] - oy * direction[0]) / denominator;
+    const Interval s = slices::toInterval((ox * wy - oy * wx) / denominator);
+    const Interval lambda = slices::toInterval((ox * direction[1] - oy * direction[0]) / denominator);
     if (s.upper() < 0 || (bounded && s.lower() > 1) || lambda.upper() < 0 || lambda.lower() > 1) return std::nullopt;
     const bool certain = s.lower() > 0 && (!bounded || s.upper() <= 1) && lambda.lower() > 0 && lambda.upper() < 1;
     return IntervalMeeting{patch, s, lambda, certain};
   }
 
-  /// The value of a patch's line at the start.
-  Interval lineAtStart(const PatchGeometry& patch) const {
-    const LineAtAngle<Interval> at = line(patch);
-    return at.nx * from[0] + at.ny * from[1] + at.w;
+  std::optional<Interval> lambdaOf(const PatchGeometry& segment, const PatchGeometry& other) const {
+    const std::optional<T> lambda = this->crossingLambda(segment, other);
+    if (!lambda) return std::nullopt;
+    return slices::toInterval(*lambda);
+  }
+
+  /// The side of a patch's line the start lies on, when certain.
+  std::optional<Sign> sideOfStart(const PatchGeometry& patch) const {
+    const LineAtAngle<T> at = this->line(patch);
+    return certainSign(at.nx * from[0] + at.ny * from[1] + at.w);
   }
 };
 
@@ -135,8 +155,11 @@ struct SliceRays::Impl {
   }
 
   RayHit cast(const AlgebraicAngle& angle, const Point& from, const Point& direction, bool bounded) const;
-  std::optional<RayHit> castInIntervals(const AlgebraicAngle& angle, const IntervalRay& ray,
+  template <class Slice>
+  std::optional<RayHit> castInIntervals(const AlgebraicAngle& angle, const RayIn<Slice>& ray,
                                         const std::vector<IntervalMeeting>& meetings) const;
+  std::optional<RayHit> castInDoubleDoubles(const AlgebraicAngle& angle, const Point& from, const Point& direction,
+                                            bool bounded, const std::vector<IntervalMeeting>& meetings) const;
   RayHit castExactly(const AlgebraicAngle& angle, const Point& from, const Point& direction, bool bounded,
                      std::vector<IntervalMeeting> meetings) const;
 };
@@ -162,7 +185,7 @@ RayHit SliceRays::Impl::cast(const AlgebraicAngle& rationalAngle, const Point& f
   std::optional<RayHit> hit;
   {
     RoundingScope rounding;
-    const IntervalRay ray(rationalAngle, from, direction);
+    const RayIn<slices::IntervalSlice> ray(slices::IntervalSlice(rationalAngle), from, direction);
     for (std::uint32_t patch : candidates(rationalAngle, from, direction, bounded)) {
       const std::optional<IntervalMeeting> meeting = ray.meeting(patch, arrangement.patches[patch], bounded);
       if (meeting && algebra.contains(arrangement.patches[patch].patch.range, rationalAngle)) {
@@ -172,12 +195,32 @@ RayHit SliceRays::Impl::cast(const AlgebraicAngle& rationalAngle, const Point& f
     if (meetings.empty()) return RayHit{};
     hit = castInIntervals(rationalAngle, ray, meetings);
   }
+  if (!hit) hit = castInDoubleDoubles(rationalAngle, from, direction, bounded, meetings);
   return hit ? *hit : castExactly(rationalAngle, from, direction, bounded, std::move(meetings));
+}
+
+/// The candidates met again in double-doubles (the segments' ends are often
+/// spirals of edges that barely climb, known in double intervals to a fraction of
+/// their length only).
+std::optional<RayHit> SliceRays::Impl::castInDoubleDoubles(const AlgebraicAngle& angle, const Point& from,
+                                                           const Point& direction, bool bounded,
+                                                           const std::vector<IntervalMeeting>& meetings) const {
+  const std::optional<slices::DoubleDoubleSlice> slice = slices::DoubleDoubleSlice::at(angle);
+  if (!slice) return std::nullopt;
+  const NearestRoundingScope rounding;
+  const RayIn<slices::DoubleDoubleSlice> ray(*slice, from, direction);
+  std::vector<IntervalMeeting> again;
+  for (const IntervalMeeting& meeting : meetings) {
+    if (auto found = ray.meeting(meeting.patch, arrangement.patches[meeting.patch], bounded)) again.push_back(*found);
+  }
+  if (again.empty()) return RayHit{};
+  return castInIntervals(angle, ray, again);
 }
 
 /// The hit when double intervals decide it: the nearest meeting is certain and
 /// certainly nearer than every other, and its sub-face and side are certain.
-std::optional<RayHit> SliceRays::Impl::castInIntervals(const AlgebraicAngle& angle, const IntervalRay& ray,
+template <class Slice>
+std::optional<RayHit> SliceRays::Impl::castInIntervals(const AlgebraicAngle& angle, const RayIn<Slice>& ray,
                                                        const std::vector<IntervalMeeting>& meetings) const {
   const auto nearest = std::min_element(meetings.begin(), meetings.end(), [](const auto& a, const auto& b) {
     return a.distance.upper() < b.distance.upper();
@@ -192,7 +235,7 @@ std::optional<RayHit> SliceRays::Impl::castInIntervals(const AlgebraicAngle& ang
   std::size_t gap = 0;
   for (std::uint32_t curve : slab->curves) {
     const std::optional<Interval> lambda =
-        ray.crossingLambda(patch, arrangement.patches[arrangement.curves[curve].other(nearest->patch)]);
+        ray.lambdaOf(patch, arrangement.patches[arrangement.curves[curve].other(nearest->patch)]);
     if (!lambda) return std::nullopt;
     if (lambda->upper() < nearest->lambda.lower()) {
       ++gap;
@@ -200,7 +243,7 @@ std::optional<RayHit> SliceRays::Impl::castInIntervals(const AlgebraicAngle& ang
       return std::nullopt;
     }
   }
-  const std::optional<Sign> side = certainSign(ray.lineAtStart(patch));
+  const std::optional<Sign> side = ray.sideOfStart(patch);
   if (!side || *side == Sign::Zero) return std::nullopt;
   RayHit hit;
   hit.kind = RayHit::Kind::SubFace;

@@ -52,75 +52,82 @@ inline std::pair<Rational, Rational> pieceOf(const Arrangement& arrangement, std
           gap == slab.curves.size() ? Rational(1) : lambdaOf(slab.curves[gap])};
 }
 
-/// The slice at an angle in double intervals, a filter before the exact one (use
-/// inside a RoundingScope): a rational angle's cosine and sine enclosed, or those of
-/// an algebraic angle's enclosure.
-struct IntervalSlice {
-  using Number = Interval;
-  /// The rounding its arithmetic needs.
-  using Rounding = RoundingScope;
+/// The slice at an angle in an interval number type T, a filter before the exact
+/// one: the angle's cosine and sine enclosed, and the patches' segments and lines
+/// there. Use its arithmetic inside a T::Rounding scope.
+template <class T>
+struct SliceIn {
+  using Number = T;
+  T cosine, sine;
 
-  Interval cosine, sine;
-
-  explicit IntervalSlice(const AlgebraicAngle& angle) { std::tie(cosine, sine) = cosSinEnclosure(angle); }
-
-  std::array<Interval, 2> end(const PatchGeometry& patch, int k) const {
-    return spiralPoint(spiralOf<Interval>(patch.ends[k]), cosine, sine);
+  std::array<T, 2> end(const PatchGeometry& patch, int k) const {
+    return spiralPoint(spiralOf<T>(patch.ends[k]), cosine, sine);
   }
 
-  LineAtAngle<Interval> line(const PatchGeometry& patch) const {
-    return lineAtAngle(lineOf<Interval>(patch.line), cosine, sine);
-  }
+  LineAtAngle<T> line(const PatchGeometry& patch) const { return lineAtAngle(lineOf<T>(patch.line), cosine, sine); }
 
   /// Where another patch's line crosses a patch's segment, as lambda; nothing when
   /// the segment may be parallel to it.
-  std::optional<Interval> crossingLambda(const PatchGeometry& segment, const PatchGeometry& other) const {
-    const LineAtAngle<Interval> at = line(other);
+  std::optional<T> crossingLambda(const PatchGeometry& segment, const PatchGeometry& other) const {
+    const LineAtAngle<T> at = line(other);
     const auto valueAt = [&](int k) {
-      const std::array<Interval, 2> p = end(segment, k);
+      const std::array<T, 2> p = end(segment, k);
       return at.nx * p[0] + at.ny * p[1] + at.w;
     };
-    const Interval v0 = valueAt(0), difference = v0 - valueAt(1);
+    const T v0 = valueAt(0), difference = v0 - valueAt(1);
     const std::optional<Sign> sign = certainSign(difference);
     if (!sign || *sign == Sign::Zero) return std::nullopt;
     return v0 / difference;
   }
 
   /// pieceOf in intervals; nothing when a crossing is uncertain.
-  std::optional<std::pair<Interval, Interval>> pieceOf(const Arrangement& arrangement, std::uint32_t patch,
-                                                      const PatchSlab& slab, std::size_t gap) const {
+  std::optional<std::pair<T, T>> pieceOf(const Arrangement& arrangement, std::uint32_t patch, const PatchSlab& slab,
+                                         std::size_t gap) const {
     const auto lambdaOf = [&](std::uint32_t curve) {
       return crossingLambda(arrangement.patches[patch], arrangement.patches[arrangement.curves[curve].other(patch)]);
     };
-    const std::optional<Interval> low = gap == 0 ? Interval(0) : lambdaOf(slab.curves[gap - 1]);
-    const std::optional<Interval> high = gap == slab.curves.size() ? Interval(1) : lambdaOf(slab.curves[gap]);
+    const std::optional<T> low = gap == 0 ? T(0) : lambdaOf(slab.curves[gap - 1]);
+    const std::optional<T> high = gap == slab.curves.size() ? T(1) : lambdaOf(slab.curves[gap]);
     if (!low || !high) return std::nullopt;
     return std::make_pair(*low, *high);
   }
 };
 
-/// The slice at an angle in double-double intervals (use inside a
-/// NearestRoundingScope), for what double intervals leave open: the cosine and sine
-/// of the angle's parameter t refined to about 2^-100 (doubleDoubleParameter).
-struct DoubleDoubleSlice {
-  using Number = DoubleDoubleInterval;
-  using Rounding = NearestRoundingScope;
+/// The slice in double intervals (inside a RoundingScope): a rational angle's cosine
+/// and sine enclosed, or those of an algebraic angle's enclosure.
+struct IntervalSlice : SliceIn<Interval> {
+  /// The rounding its arithmetic needs.
+  using Rounding = RoundingScope;
 
-  DoubleDoubleInterval cosine, sine;
+  explicit IntervalSlice(const AlgebraicAngle& angle) { std::tie(cosine, sine) = cosSinEnclosure(angle); }
+  static std::optional<IntervalSlice> at(const AlgebraicAngle& angle) {
+    const RoundingScope rounding;
+    return IntervalSlice(angle);
+  }
+};
+
+/// The slice in double-double intervals (inside a NearestRoundingScope), for what
+/// double intervals leave open: the cosine and sine of the angle's parameter t
+/// refined to about 2^-100 (doubleDoubleParameter).
+struct DoubleDoubleSlice : SliceIn<DoubleDoubleInterval> {
+  using Rounding = NearestRoundingScope;
 
   /// Nothing when t cannot be refined.
   static std::optional<DoubleDoubleSlice> at(const AlgebraicAngle& angle) {
     const std::optional<DoubleDoubleInterval> t = doubleDoubleParameter(angle);
     if (!t) return std::nullopt;
-    NearestRoundingScope rounding;
+    const NearestRoundingScope rounding;
     const DoubleDoubleInterval w = DoubleDoubleInterval(1.0) + *t * *t;
     const DoubleDoubleInterval chartSign(angle.chart() == 0 ? 1.0 : -1.0);
-    return DoubleDoubleSlice{chartSign * (DoubleDoubleInterval(1.0) - *t * *t) / w, chartSign * (*t + *t) / w};
-  }
-
-  std::array<DoubleDoubleInterval, 2> end(const PatchGeometry& patch, int k) const {
-    return spiralPoint(spiralOf<DoubleDoubleInterval>(patch.ends[k]), cosine, sine);
+    DoubleDoubleSlice slice;
+    slice.cosine = chartSign * (DoubleDoubleInterval(1.0) - *t * *t) / w;
+    slice.sine = chartSign * (*t + *t) / w;
+    return slice;
   }
 };
+
+/// The double interval holding a value of either slice's number type.
+inline Interval toInterval(const Interval& value) { return value; }
+inline Interval toInterval(const DoubleDoubleInterval& value) { return enclosingInterval(value); }
 
 }  // namespace freespace::slices
