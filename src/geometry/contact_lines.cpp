@@ -50,9 +50,32 @@ PatchLine<T> edgeEdgeLine(const ContactPoints& contact) {
           sign * (first.s - second.s), sign * (first.c - second.c), sign * (first.k - second.k)};
 }
 
+template <class T>
+PatchLine<T> computedLine(const ContactPoints& contact) {
+  switch (contact.kind) {
+    case ContactKind::VertexFacet: return vertexFacetLine<T>(contact);
+    case ContactKind::FacetVertex: return facetVertexLine<T>(contact);
+    case ContactKind::EdgeEdge: break;
+  }
+  return edgeEdgeLine<T>(contact);
+}
+
+/// The contact's points, without the cached line.
+ContactPoints pointsOfContact(const Contact& contact, const Mesh& robot, const MeshTopology& robotTopology,
+                              const Mesh& world, const MeshTopology& worldTopology);
+
 }  // namespace
 
 ContactPoints contactPoints(const Contact& contact, const Mesh& robot, const MeshTopology& robotTopology,
+                            const Mesh& world, const MeshTopology& worldTopology) {
+  ContactPoints points = pointsOfContact(contact, robot, robotTopology, world, worldTopology);
+  cacheApproximateLine(points);
+  return points;
+}
+
+namespace {
+
+ContactPoints pointsOfContact(const Contact& contact, const Mesh& robot, const MeshTopology& robotTopology,
                             const Mesh& world, const MeshTopology& worldTopology) {
   const auto pointsOf = [&contact](const Mesh& first, std::array<std::uint32_t, 2> firstVertices, const Mesh& second,
                                    std::array<std::uint32_t, 2> secondVertices) {
@@ -84,17 +107,22 @@ ContactPoints contactPoints(const Contact& contact, const Mesh& robot, const Mes
   return pointsOf(robot, {a.from, a.to}, world, {b.from, b.to});
 }
 
+}  // namespace
+
 template <class T>
 PatchLine<T> lineOf(const ContactPoints& contact) {
-  switch (contact.kind) {
-    case ContactKind::VertexFacet: return vertexFacetLine<T>(contact);
-    case ContactKind::FacetVertex: return facetVertexLine<T>(contact);
-    case ContactKind::EdgeEdge: break;
-  }
-  return edgeEdgeLine<T>(contact);
+  return computedLine<T>(contact);
 }
 
-template PatchLine<Interval> lineOf<Interval>(const ContactPoints&);
+template <>
+PatchLine<Interval> lineOf<Interval>(const ContactPoints& contact) {
+  return contact.approximateLine ? *contact.approximateLine : computedLine<Interval>(contact);
+}
+
+void cacheApproximateLine(ContactPoints& contact) {
+  const RoundingScope rounding;
+  contact.approximateLine = computedLine<Interval>(contact);
+}
 template PatchLine<Rational> lineOf<Rational>(const ContactPoints&);
 template PatchLine<DoubleDoubleInterval> lineOf<DoubleDoubleInterval>(const ContactPoints&);
 // The adaptive engine's ladder, for predicates that use patch lines.

@@ -495,6 +495,14 @@ Sign signAtRationalAngle(const AlgebraicAngle& rationalAngle, PredicateKind kind
       return *sign;
     }
   }
+  {
+    const auto [ddCosine, ddSine] = doubleDoubleCosSin(DoubleDoubleInterval(rationalAngle.root().lo), rationalAngle.chart());
+    const NearestRoundingScope rounding;
+    if (const std::optional<Sign> sign = certainSign(value(ddCosine, ddSine))) {
+      algebra.statistics().recordDecision(kind, static_cast<int>(PrecisionLevel::DoubleDouble));
+      return *sign;
+    }
+  }
   algebra.statistics().recordDecision(kind, static_cast<int>(PrecisionLevel::Exact));
   return exactSign(value(cosine, sine));
 }

@@ -669,6 +669,13 @@ std::optional<DoubleDoubleInterval> doubleDoubleParameter(const AlgebraicAngle& 
   return std::nullopt;
 }
 
+std::pair<DoubleDoubleInterval, DoubleDoubleInterval> doubleDoubleCosSin(const DoubleDoubleInterval& t, int chart) {
+  const NearestRoundingScope rounding;
+  const DoubleDoubleInterval w = DoubleDoubleInterval(1.0) + t * t;
+  const DoubleDoubleInterval chartSign(chart == 0 ? 1.0 : -1.0);
+  return {chartSign * (DoubleDoubleInterval(1.0) - t * t) / w, chartSign * (t + t) / w};
+}
+
 std::pair<Interval, Interval> cosSinEnclosure(const AlgebraicAngle& angle) {
   Interval cosine, sine;
   if (angle.lower() == angle.upper()) {

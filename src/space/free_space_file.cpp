@@ -215,6 +215,7 @@ PatchGeometry patchOf(const saved::Patch& stored, AngleTable& angles) {
     patch.line.vertices[i] = static_cast<std::uint32_t>(stored.lineTags[2 + i]);
     patch.line.points[i] = pointAt(stored.linePoints, i);
   }
+  cacheApproximateLine(patch.line);
   for (int k = 0; k < 2; ++k) {
     patch.ends[k].robotVertex = stored.spiralRobotVertex[k] != 0;
     for (int i = 0; i < 3; ++i) patch.ends[k].points[i] = pointAt(stored.spiralPoints, 3 * k + i);

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "freespace/geometry/mesh.h"
@@ -40,7 +41,14 @@ struct ContactPoints {
   std::array<Point3, 4> points;
   /// The points' vertex indices in their meshes.
   std::array<std::uint32_t, 4> vertices;
+  /// The line in double intervals once computed (cacheApproximateLine), which
+  /// lineOf<Interval> then returns instead of computing it again: it is asked for
+  /// at every filtered predicate on the patch.
+  std::optional<PatchLine<Interval>> approximateLine;
 };
+
+/// Computes and keeps the contact's line in double intervals.
+void cacheApproximateLine(ContactPoints& contact);
 
 ContactPoints contactPoints(const Contact& contact, const Mesh& robot, const MeshTopology& robotTopology,
                             const Mesh& world, const MeshTopology& worldTopology);
@@ -58,6 +66,8 @@ ContactPoints contactPoints(const Contact& contact, const Mesh& robot, const Mes
 ///     side, the environment on its positive side.
 template <class T>
 PatchLine<T> lineOf(const ContactPoints& contact);
+template <>
+PatchLine<Interval> lineOf<Interval>(const ContactPoints& contact);
 
 template <class T>
 PatchLine<T> contactLine(const Contact& contact, const Mesh& robot, const MeshTopology& robotTopology,

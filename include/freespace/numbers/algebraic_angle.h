@@ -184,6 +184,10 @@ std::pair<Interval, Interval> cosSinEnclosure(const AlgebraicAngle& angle);
 /// coefficients do not resolve).
 std::optional<DoubleDoubleInterval> doubleDoubleParameter(const AlgebraicAngle& angle);
 
+/// The cosine and sine of the angle with parameter t in a chart (HalfAngle's
+/// formulas), in double-double intervals.
+std::pair<DoubleDoubleInterval, DoubleDoubleInterval> doubleDoubleCosSin(const DoubleDoubleInterval& t, int chart);
+
 /// Exact predicates on algebraic angles, filtered in double intervals with exact
 /// rational fallback and exact identity detection (equal roots compare equal; a
 /// function that vanishes at a root has sign exactly zero), counted in statistics.

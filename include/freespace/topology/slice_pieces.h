@@ -116,12 +116,8 @@ struct DoubleDoubleSlice : SliceIn<DoubleDoubleInterval> {
   static std::optional<DoubleDoubleSlice> at(const AlgebraicAngle& angle) {
     const std::optional<DoubleDoubleInterval> t = doubleDoubleParameter(angle);
     if (!t) return std::nullopt;
-    const NearestRoundingScope rounding;
-    const DoubleDoubleInterval w = DoubleDoubleInterval(1.0) + *t * *t;
-    const DoubleDoubleInterval chartSign(angle.chart() == 0 ? 1.0 : -1.0);
     DoubleDoubleSlice slice;
-    slice.cosine = chartSign * (DoubleDoubleInterval(1.0) - *t * *t) / w;
-    slice.sine = chartSign * (*t + *t) / w;
+    std::tie(slice.cosine, slice.sine) = doubleDoubleCosSin(*t, angle.chart());
     return slice;
   }
 };
