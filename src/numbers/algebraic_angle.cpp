@@ -456,11 +456,10 @@ int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
   if (const std::optional<int> order = compareByKey(a, b)) return *order;
   // Orders of roots that needed refinement are remembered: sorts ask again.
   const bool remembered = !a.isRational() && !b.isRational() && a.index() >= 0 && b.index() >= 0;
-  std::optional<std::pair<RootId, RootId>> pair;
+  const RootPair pair{a.function().get(), b.function().get(), a.chart(), a.index(), b.chart(), b.index()};
   if (remembered) {
-    pair.emplace(RootId{a.function(), a.chart(), a.index()}, RootId{b.function(), b.chart(), b.index()});
-    const auto known = knownOrders_.find(*pair);
-    if (known != knownOrders_.end()) return known->second;
+    const auto known = knownOrders_.find(pair);
+    if (known != knownOrders_.end()) return known->second.order;
   }
   AlgebraicAngle first = a, second = b;
   std::optional<int> order = compareInDoubles(first, second);
@@ -469,8 +468,15 @@ int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
   if (!order) order = compareInDoubleDoubles(first, second);
   if (!order) order = comparePrecisely(first, second);
   if (!order) order = compareEscalated(first, second);
-  if (pair) knownOrders_.emplace(std::move(*pair), *order);
+  if (remembered) knownOrders_.emplace(pair, KnownOrder{*order, a.function(), b.function()});
   return *order;
+}
+
+std::size_t AngleAlgebra::RootPairHash::operator()(const RootPair& pair) const {
+  const std::size_t functions = std::hash<const void*>()(pair.first) * 31 + std::hash<const void*>()(pair.second);
+  const auto roots = static_cast<std::size_t>(((pair.firstChart * 64 + pair.firstIndex) * 2 + pair.secondChart) * 64 +
+                                              pair.secondIndex);
+  return functions * 1000003 + roots;
 }
 
 namespace {

@@ -11,29 +11,76 @@ namespace {
 
 using slices::Point;
 
-/// The smallest distance tried from a sub-face, relative to its size.
+/// The smallest distance tried from a sub-face, relative to its size: from the exact
+/// middle of its piece, and from one found in doubles.
 const Rational kSmallest = powerOfHalf(200);
+const Rational kSmallestInDoubles = powerOfHalf(36);
 
-std::optional<SubFaceProbe> probeInSlab(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
-                                        const PatchSlab& slab, std::size_t gap, ProbeSide side) {
-  const int sign = side == ProbeSide::Positive ? 1 : -1;
-  const AlgebraicAngle& sample = slab.sample;
-  const auto [cosine, sine] = exactCosSin(sample);
+/// The middle of a sub-face's piece of segment and the line's normal there, at the
+/// slab's sample angle.
+struct PieceMiddle {
+  Point middle;
+  Rational nx, ny;
+};
+
+/// The middle in doubles: as good as exact for probes well above the rounding (the
+/// ray back to the sub-face decides exactly whether a probe is valid).
+std::optional<PieceMiddle> middleInDoubles(const Arrangement& arrangement, SubFaceId face, const PatchSlab& slab,
+                                           std::size_t gap) {
+  const RoundingScope rounding;
+  const slices::IntervalSlice slice(slab.sample);
+  const PatchGeometry& patch = arrangement.patches[face.patch];
+  const auto piece = slice.pieceOf(arrangement, face.patch, slab, gap);
+  if (!piece || !(piece->first.upper() < piece->second.lower())) return std::nullopt;
+  const double lambda = 0.5 * piece->first.upper() + 0.5 * piece->second.lower();
+  const std::array<Interval, 2> end0 = slice.end(patch, 0), end1 = slice.end(patch, 1);
+  const LineAtAngle<Interval> line = slice.line(patch);
+  const auto middleOf = [](const Interval& x) { return 0.5 * x.lower() + 0.5 * x.upper(); };
+  PieceMiddle result;
+  for (int axis = 0; axis < 2; ++axis) {
+    result.middle[axis] = middleOf(end0[axis] + Interval(lambda) * (end1[axis] - end0[axis]));
+  }
+  result.nx = middleOf(line.nx);
+  result.ny = middleOf(line.ny);
+  if (result.nx == 0 && result.ny == 0) return std::nullopt;
+  return result;
+}
+
+PieceMiddle middleExactly(const Arrangement& arrangement, SubFaceId face, const PatchSlab& slab, std::size_t gap) {
+  const auto [cosine, sine] = exactCosSin(slab.sample);
   const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[face.patch], cosine, sine);
   const auto [low, high] = slices::pieceOf(arrangement, face.patch, slab, gap, segment, cosine, sine);
-  const Point middle = segment.at((low + high) / 2);
-  const Rational scale = (1 + abs(middle[0]) + abs(middle[1])) / (abs(segment.nx) + abs(segment.ny));
-  for (Rational distance = scale / 1024; distance > scale * kSmallest; distance /= 16) {
-    const Point off{middle[0] + sign * distance * segment.nx, middle[1] + sign * distance * segment.ny};
+  return {segment.at((low + high) / 2), segment.nx, segment.ny};
+}
+
+/// A probe off the middle along the normal, at distances shrinking from 2^-10 of the
+/// size to `smallest`, until the ray from it across the segment meets the sub-face
+/// first, from the probe's side.
+std::optional<SubFaceProbe> probeFrom(const PieceMiddle& at, const SliceRays& rays, SubFaceId face,
+                                      const PatchSlab& slab, ProbeSide side, const Rational& smallest) {
+  const int sign = side == ProbeSide::Positive ? 1 : -1;
+  const Point& middle = at.middle;
+  const Rational scale = (1 + abs(middle[0]) + abs(middle[1])) / (abs(at.nx) + abs(at.ny));
+  for (Rational distance = scale / 1024; distance > scale * smallest; distance /= 16) {
+    const Point off{middle[0] + sign * distance * at.nx, middle[1] + sign * distance * at.ny};
     // Toward the mirror point across the segment, so that the segment is met inside
     // the ray (where double intervals can tell) rather than at its end.
     const Point mirror{2 * middle[0] - off[0], 2 * middle[1] - off[1]};
-    const RayHit hit = rays.castTo(sample, off, mirror);
+    const RayHit hit = rays.castTo(slab.sample, off, mirror);
     if (hit.kind == RayHit::Kind::SubFace && hit.face == face && hit.fromPositiveSide == (sign > 0)) {
+      const auto [cosine, sine] = exactCosSin(slab.sample);
       return SubFaceProbe{{cosine, sine, off[0], off[1]}};
     }
   }
   return std::nullopt;
+}
+
+std::optional<SubFaceProbe> probeInSlab(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
+                                        const PatchSlab& slab, std::size_t gap, ProbeSide side) {
+  if (const std::optional<PieceMiddle> middle = middleInDoubles(arrangement, face, slab, gap)) {
+    if (auto probe = probeFrom(*middle, rays, face, slab, side, kSmallestInDoubles)) return probe;
+  }
+  return probeFrom(middleExactly(arrangement, face, slab, gap), rays, face, slab, side, kSmallest);
 }
 
 }  // namespace

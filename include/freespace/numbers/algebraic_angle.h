@@ -3,10 +3,10 @@
 #include <array>
 #include <cstdint>
 #include <functional>
-#include <map>
 #include <memory>
 #include <optional>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -256,21 +256,30 @@ class AngleAlgebra {
   int compareEscalated(const AlgebraicAngle& a, const AlgebraicAngle& b);
   Sign record(PredicateKind kind, int level, Sign sign);
 
-  /// A root of a function: the function (kept alive, so that its address stays
-  /// unique), the chart and the root's index there.
-  struct RootId {
-    std::shared_ptr<const AngleFunction> function;
-    int chart;
-    int index;
-    bool operator<(const RootId& other) const {
-      return std::tie(function, chart, index) < std::tie(other.function, other.chart, other.index);
+  /// Two roots, each by its function's address, chart and index there.
+  struct RootPair {
+    const AngleFunction* first;
+    const AngleFunction* second;
+    int firstChart, firstIndex, secondChart, secondIndex;
+    bool operator==(const RootPair& other) const {
+      return first == other.first && second == other.second && firstChart == other.firstChart &&
+             firstIndex == other.firstIndex && secondChart == other.secondChart && secondIndex == other.secondIndex;
     }
+  };
+  struct RootPairHash {
+    std::size_t operator()(const RootPair& pair) const;
+  };
+  /// An order found, with the two functions kept alive (so that their addresses
+  /// stay unique).
+  struct KnownOrder {
+    int order;
+    std::shared_ptr<const AngleFunction> first, second;
   };
 
   PredicateStatistics& statistics_;
   /// Orders of roots that doubles could not separate, decided once: the same pair
   /// of close roots is met again and again by a construction.
-  std::map<std::pair<RootId, RootId>, int> knownOrders_;
+  std::unordered_map<RootPair, KnownOrder, RootPairHash> knownOrders_;
 };
 
 }  // namespace freespace
