@@ -9,21 +9,12 @@
 
 #include "freespace/numbers/double_double_interval.h"
 #include "freespace/numbers/rational.h"
+#include "number_generators.h"
 
 using namespace freespace;
+using freespace::testing::anyDouble;
 
 namespace {
-
-/// Doubles of mixed magnitudes and signs, exact small values and zero.
-double anyDouble() {
-  switch (*rc::gen::inRange(0, 4)) {
-    case 0: return 0.0;
-    case 1: return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(-20, 21)) / 8.0;
-    case 2: return std::ldexp(*rc::gen::resize(rc::kNominalSize, rc::gen::inRange(-1000000, 1000001)) / 3.0,
-                              *rc::gen::inRange(-60, 61));
-    default: return *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(-1000000, 1000001)) * 1.0e-7 / 3.0;
-  }
-}
 
 /// A rational that is not a double-word: a double, a much smaller double and a third.
 Rational anyRational() {

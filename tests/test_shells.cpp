@@ -3,10 +3,14 @@
 // free space until it meets the boundary of the configuration's free cell, so the
 // first sub-face it meets must be met from its positive side and belong to a closed
 // shell (every side of it glued). A missing or wrong glue leaves such a shell open.
+// The shells of free cells are probed on both sides of every sub-face (free side
+// inward), and every curve and spiral edge of them is used by exactly two sides.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <random>
+#include <tuple>
 
 #include "bundled_scene.h"
 #include "freespace/problem/planar_problem.h"
@@ -156,6 +160,82 @@ TEST_P(BundledSceneShells, ShellsOfFreeCellsAreClosedWithTheFreeSideInward) {
   EXPECT_EQ(open, 0);
   EXPECT_EQ(blockedAbove, 0);
   EXPECT_EQ(freeBelow, 0);
+}
+
+/// The sub-face sides that meet along one edge of the arrangement at one angle:
+/// every shell bounding a free cell must hold none or exactly two of them (each edge
+/// of such a shell is used by exactly two of its sub-face sides: a closed surface
+/// without pinches).
+class EdgeUse {
+ public:
+  explicit EdgeUse(const FreeSpace& space) : space_(space) {}
+
+  void side(SubFaceId face) {
+    if (space_.cellOfSubFace(face)) shells_[space_.arrangement().shells.shellOf(face)]++;
+  }
+
+  /// Ends one edge: counts it, and counts it wrong if a shell held other than two.
+  void finish(int& edges, int& wrong) {
+    if (shells_.empty()) return;
+    ++edges;
+    wrong += std::any_of(shells_.begin(), shells_.end(), [](const auto& entry) { return entry.second != 2; });
+    shells_.clear();
+  }
+
+ private:
+  const FreeSpace& space_;
+  std::map<std::uint32_t, int> shells_;
+};
+
+/// At every slab sample of every patch: the four sides along each of its curves (the
+/// sub-faces below and above the crossing on the patch and on the curve's other
+/// patch), and the sides of every patch ending at each of its segment's spirals.
+TEST_P(BundledSceneShells, EveryEdgeOfAFreeCellsShellIsUsedByTwoSides) {
+  const LoadedProblem loaded = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + GetParam());
+  const FreeSpace space(loaded.robot, loaded.world);
+  const Arrangement& arrangement = space.arrangement();
+  AngleAlgebra& algebra = space.algebra();
+  std::map<std::tuple<bool, std::uint32_t, std::uint32_t, std::uint32_t>, std::vector<std::pair<std::uint32_t, int>>>
+      bySpiral;
+  for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
+    for (int k = 0; k < 2; ++k) {
+      const SegmentEnd& end = arrangement.patches[patch].segment.ends[k];
+      bySpiral[{end.robotVertex, end.vertex, end.edge[0], end.edge[1]}].push_back({patch, k});
+    }
+  }
+  EdgeUse use(space);
+  int curveEdges = 0, spiralEdges = 0, wrongCurves = 0, wrongSpirals = 0;
+  for (std::uint32_t f = 0; f < arrangement.patches.size(); ++f) {
+    for (const PatchSlab& slab : arrangement.subdivisions[f].slabs) {
+      for (std::size_t i = 0; i < slab.curves.size(); ++i) {
+        const std::uint32_t g = arrangement.curves[slab.curves[i]].other(f);
+        const PatchSlab* across = slabAt(arrangement.subdivisions[g], slab.sample, algebra);
+        ASSERT_NE(across, nullptr);
+        const std::size_t j = static_cast<std::size_t>(
+            std::find(across->curves.begin(), across->curves.end(), slab.curves[i]) - across->curves.begin());
+        ASSERT_LT(j, across->curves.size());
+        for (const SubFaceId face : {SubFaceId{f, slab.faces[i]}, SubFaceId{f, slab.faces[i + 1]},
+                                     SubFaceId{g, across->faces[j]}, SubFaceId{g, across->faces[j + 1]}}) {
+          use.side(face);
+        }
+        use.finish(curveEdges, wrongCurves);
+      }
+      for (const SegmentEnd& end : arrangement.patches[f].segment.ends) {
+        for (const auto& [patch, k] : bySpiral.at({end.robotVertex, end.vertex, end.edge[0], end.edge[1]})) {
+          if (!algebra.contains(arrangement.patches[patch].patch.range, slab.sample)) continue;
+          // No slab there: the sample is an event of that patch.
+          const PatchSlab* at = slabAt(arrangement.subdivisions[patch], slab.sample, algebra);
+          if (at) use.side({patch, k == 0 ? at->faces.front() : at->faces.back()});
+        }
+        use.finish(spiralEdges, wrongSpirals);
+      }
+    }
+  }
+  std::cout << GetParam() << ": " << curveEdges << " curve edges and " << spiralEdges
+            << " spiral edges of free cells' shells looked at\n";
+  EXPECT_GT(curveEdges + spiralEdges, 0);
+  EXPECT_EQ(wrongCurves, 0);
+  EXPECT_EQ(wrongSpirals, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledSceneShells,

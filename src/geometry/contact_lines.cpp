@@ -79,7 +79,7 @@ ContactPoints pointsOfContact(const Contact& contact, const Mesh& robot, const M
                             const Mesh& world, const MeshTopology& worldTopology) {
   const auto pointsOf = [&contact](const Mesh& first, std::array<std::uint32_t, 2> firstVertices, const Mesh& second,
                                    std::array<std::uint32_t, 2> secondVertices) {
-    ContactPoints points{contact.kind, contact.side, {}, {}};
+    ContactPoints points{contact.kind, contact.side, {}, {}, std::nullopt};
     for (int i = 0; i < 2; ++i) {
       points.vertices[i] = firstVertices[i];
       points.points[i] = first.vertices()[firstVertices[i]];
@@ -95,7 +95,8 @@ ContactPoints pointsOfContact(const Contact& contact, const Mesh& robot, const M
                          contact.side,
                          {vertexMesh.vertices()[vertex], facetMesh.vertices()[t[0]], facetMesh.vertices()[t[1]],
                           facetMesh.vertices()[t[2]]},
-                         {vertex, t[0], t[1], t[2]}};
+                         {vertex, t[0], t[1], t[2]},
+                         std::nullopt};
   };
   switch (contact.kind) {
     case ContactKind::VertexFacet: return vertexAndFacet(robot, contact.robot, world, contact.world);

@@ -67,21 +67,8 @@ Interval enclosingInterval(const DoubleDoubleInterval& value);
 /// Certain sign, or nothing when the interval holds zero without being exactly zero.
 std::optional<Sign> certainSign(const DoubleDoubleInterval& value);
 
-/// Sets the FPU to round to nearest, as DoubleDoubleInterval needs, and restores the
-/// previous mode (Interval's upward rounding, say) on destruction.
-class NearestRoundingScope {
- public:
-  NearestRoundingScope() : previous_(detail::roundingMode()) {
-    if (previous_ != FE_TONEAREST) detail::setRoundingMode(FE_TONEAREST);
-  }
-  ~NearestRoundingScope() {
-    if (previous_ != FE_TONEAREST) detail::setRoundingMode(previous_);
-  }
-  NearestRoundingScope(const NearestRoundingScope&) = delete;
-  NearestRoundingScope& operator=(const NearestRoundingScope&) = delete;
-
- private:
-  int previous_;
-};
+/// Rounding to nearest, as DoubleDoubleInterval needs (inside Interval's upward
+/// rounding, say).
+using NearestRoundingScope = ScopedRounding<FE_TONEAREST>;
 
 }  // namespace freespace

@@ -117,23 +117,27 @@ class Interval {
   double upper_ = 0;
 };
 
-/// Sets the FPU to round upward, as Interval needs, and restores the previous mode
-/// on destruction; nested scopes cost only a mode read. Keep scopes tight: ordinary
-/// double code inside one rounds upward.
-class RoundingScope {
+/// Sets the rounding of double arithmetic to `Mode` and restores the previous mode
+/// on destruction; nested scopes cost only a mode read.
+template <int Mode>
+class ScopedRounding {
  public:
-  RoundingScope() : previous_(detail::roundingMode()) {
-    if (previous_ != FE_UPWARD) detail::setRoundingMode(FE_UPWARD);
+  ScopedRounding() : previous_(detail::roundingMode()) {
+    if (previous_ != Mode) detail::setRoundingMode(Mode);
   }
-  ~RoundingScope() {
-    if (previous_ != FE_UPWARD) detail::setRoundingMode(previous_);
+  ~ScopedRounding() {
+    if (previous_ != Mode) detail::setRoundingMode(previous_);
   }
-  RoundingScope(const RoundingScope&) = delete;
-  RoundingScope& operator=(const RoundingScope&) = delete;
+  ScopedRounding(const ScopedRounding&) = delete;
+  ScopedRounding& operator=(const ScopedRounding&) = delete;
 
  private:
   int previous_;
 };
+
+/// Rounding upward, as Interval needs. Keep scopes tight: ordinary double code inside
+/// one rounds upward.
+using RoundingScope = ScopedRounding<FE_UPWARD>;
 
 /// Certain sign of an interval, or nothing when it contains zero without being
 /// exactly zero (or is NaN).
