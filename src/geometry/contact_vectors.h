@@ -70,11 +70,6 @@ TrigLinear<T> rotatedDot(const Vector3T<T>& a, const Vector3T<T>& b) {
   return {a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y, a.z * b.z};
 }
 
-template <class T>
-TrigLinear<T> negated(const TrigLinear<T>& form) {
-  return {-form.s, -form.c, -form.k};
-}
-
 /// The RootKey of an EF function (DESIGN.md section 4): (R (x - y)) . n for a robot
 /// vertex pair (x, y) and the normal n of a plane through three environment
 /// vertices, or (R m) . (x - y) for an environment pair and a robot plane.

@@ -9,7 +9,6 @@ namespace freespace {
 namespace {
 
 using detail::edgeVector;
-using detail::negated;
 using detail::rotatedDot;
 using detail::triangleNormal;
 
@@ -49,20 +48,20 @@ std::pair<double, double> heightRange(const Mesh& mesh, const MeshEdge& edge) {
   return {std::min(a, b), std::max(a, b)};
 }
 
-/// One of the four conditions: sign * (R m) . v with m a robot face normal and v
-/// the environment edge, or sign * (R u) . n with u the robot edge and n an
+/// One of the four conditions, up to its sign: (R m) . v with m a robot face normal
+/// and v the environment edge, or (R u) . n with u the robot edge and n an
 /// environment face normal. Coordinates are copied: the function outlives the
 /// meshes in the patches' angles.
 std::shared_ptr<const AngleFunction> wedgeCondition(const std::array<Point3, 2>& robotEdge,
                                                     const std::array<Point3, 2>& worldEdge, bool robotNormal,
-                                                    const detail::Corners& face, int sign, AngleFunction::RootKey key) {
-  return std::make_shared<AngleFunction>([robotEdge, worldEdge, robotNormal, face, sign](auto type, int chart) {
+                                                    const detail::Corners& face, AngleFunction::RootKey key) {
+  return std::make_shared<AngleFunction>([robotEdge, worldEdge, robotNormal, face](auto type, int chart) {
     using T = typename decltype(type)::type;
     const auto u = detail::difference(detail::pointOf<T>(robotEdge[1]), detail::pointOf<T>(robotEdge[0]));
     const auto v = detail::difference(detail::pointOf<T>(worldEdge[1]), detail::pointOf<T>(worldEdge[0]));
     const TrigLinear<T> form =
         robotNormal ? rotatedDot(detail::normalOf<T>(face), v) : rotatedDot(u, detail::normalOf<T>(face));
-    return tangentPolynomial(sign > 0 ? form : negated(form), chart);
+    return tangentPolynomial(form, chart);
   }, key);
 }
 
@@ -95,14 +94,17 @@ std::vector<Patch> edgeEdgePatches(const Mesh& robot, const MeshTopology& robotT
           detail::edgeFacetKey(false, worldEdge.from, worldEdge.to, robot.triangles()[a.faces[1]]),
           detail::edgeFacetKey(true, robotEdge.from, robotEdge.to, world.triangles()[b.faces[0]]),
           detail::edgeFacetKey(true, robotEdge.from, robotEdge.to, world.triangles()[b.faces[1]])};
-      for (int side : {1, -1}) {
-        const std::vector<std::shared_ptr<const AngleFunction>> conditions{
-            wedgeCondition(robotEnds, worldEnds, true, faces[0], side, keys[0]),
-            wedgeCondition(robotEnds, worldEnds, true, faces[1], -side, keys[1]),
-            wedgeCondition(robotEnds, worldEnds, false, faces[2], side, keys[2]),
-            wedgeCondition(robotEnds, worldEnds, false, faces[3], -side, keys[3])};
-        AngleSet range = algebra.positiveSet(conditions, PredicateKind::EdgeFacet);
-        if (!range.empty()) patches.push_back({Contact{ContactKind::EdgeEdge, a.edge, b.edge, side}, std::move(range)});
+      // Side +1 needs the signs (+, -, +, -), side -1 the opposite ones.
+      const std::vector<std::shared_ptr<const AngleFunction>> conditions{
+          wedgeCondition(robotEnds, worldEnds, true, faces[0], keys[0]),
+          wedgeCondition(robotEnds, worldEnds, true, faces[1], keys[1]),
+          wedgeCondition(robotEnds, worldEnds, false, faces[2], keys[2]),
+          wedgeCondition(robotEnds, worldEnds, false, faces[3], keys[3])};
+      std::array<AngleSet, 2> ranges = algebra.signPatternSets(
+          conditions, {Sign::Positive, Sign::Negative, Sign::Positive, Sign::Negative}, PredicateKind::EdgeFacet);
+      for (int which = 0; which < 2; ++which) {
+        if (ranges[which].empty()) continue;
+        patches.push_back({Contact{ContactKind::EdgeEdge, a.edge, b.edge, which == 0 ? 1 : -1}, std::move(ranges[which])});
       }
     }
   }

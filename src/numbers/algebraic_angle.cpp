@@ -746,14 +746,29 @@ AlgebraicAngle AngleAlgebra::rationalNextTo(const AlgebraicAngle& angle, const A
 
 AngleSet AngleAlgebra::positiveSet(const std::vector<std::shared_ptr<const AngleFunction>>& functions,
                                    PredicateKind kind) {
-  // A function that vanishes identically is positive nowhere.
+  return signPatternSets(functions, std::vector<Sign>(functions.size(), Sign::Positive), kind)[0];
+}
+
+std::array<AngleSet, 2> AngleAlgebra::signPatternSets(const std::vector<std::shared_ptr<const AngleFunction>>& functions,
+                                                      const std::vector<Sign>& pattern, PredicateKind kind) {
+  // A function that vanishes identically has no sign anywhere.
   for (const auto& function : functions) {
     if (function->isIdenticallyZero()) return {};
   }
-  return closureWhere(functions, {}, [&](const AlgebraicAngle& angle) {
-    return std::all_of(functions.begin(), functions.end(),
-                       [&](const auto& function) { return signAt(*function, angle) == Sign::Positive; });
-  }, kind);
+  std::vector<AlgebraicAngle> breakpoints;
+  for (const auto& function : functions) {
+    for (const AlgebraicAngle& root : this->roots(function, kind)) breakpoints.push_back(root);
+  }
+  const std::vector<AngleSet> sets = closuresOver(std::move(breakpoints), 2, [&](const AlgebraicAngle& angle) {
+    bool same = true, opposite = true;
+    for (std::size_t k = 0; k < functions.size() && (same || opposite); ++k) {
+      const Sign sign = signAt(*functions[k], angle);
+      same = same && sign == pattern[k];
+      opposite = opposite && sign == -pattern[k];
+    }
+    return (same ? 1u : 0u) | (opposite ? 2u : 0u);
+  });
+  return {sets[0], sets[1]};
 }
 
 AngleSet AngleAlgebra::closureWhere(const std::vector<std::shared_ptr<const AngleFunction>>& functions,
@@ -767,32 +782,21 @@ AngleSet AngleAlgebra::closureWhere(const std::vector<std::shared_ptr<const Angl
 
 AngleSet AngleAlgebra::closureOver(std::vector<AlgebraicAngle> breakpoints,
                                    const std::function<bool(const AlgebraicAngle&)>& holds) {
+  return closuresOver(std::move(breakpoints), 1, [&](const AlgebraicAngle& angle) { return holds(angle) ? 1u : 0u; })[0];
+}
+
+namespace {
+
+/// The closed arcs over the gaps between sorted breakpoints (gap i from breakpoint i
+/// to i + 1, the last around to the first) where a property holds: runs of true
+/// gaps, each started after a gap that is not.
+AngleSet setOfGaps(const std::vector<AlgebraicAngle>& breakpoints, const std::vector<bool>& trueGap) {
   AngleSet set;
-  std::sort(breakpoints.begin(), breakpoints.end(), [this](const AlgebraicAngle& a, const AlgebraicAngle& b) {
-    return compare(a, b) < 0;
-  });
-  breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end(),
-                                [this](const AlgebraicAngle& a, const AlgebraicAngle& b) { return compare(a, b) == 0; }),
-                    breakpoints.end());
-  if (breakpoints.empty()) {
-    set.fullCircle = holds(AlgebraicAngle::rational(0, 0.0));
-    return set;
-  }
-  // Gap i runs from breakpoint i to breakpoint i + 1 (the last one around to the
-  // first); the property is constant inside a gap, so one sample decides it.
   const std::size_t count = breakpoints.size();
-  std::vector<bool> trueGap(count);
-  for (std::size_t i = 0; i < count; ++i) {
-    const AlgebraicAngle& next = breakpoints[(i + 1) % count];
-    const AlgebraicAngle sample = count == 1 ? angleAtPosition(exactPosition(breakpoints[0]).u.lo + 2)
-                                             : rationalBetween(breakpoints[i], next);
-    trueGap[i] = holds(sample);
-  }
   if (std::all_of(trueGap.begin(), trueGap.end(), [](bool value) { return value; })) {
     set.fullCircle = true;
     return set;
   }
-  // Closed arcs are the runs of true gaps, started after a gap that is not.
   const std::size_t first =
       static_cast<std::size_t>(std::find(trueGap.begin(), trueGap.end(), false) - trueGap.begin());
   for (std::size_t step = 1; step <= count; ++step) {
@@ -808,10 +812,42 @@ AngleSet AngleAlgebra::closureOver(std::vector<AlgebraicAngle> breakpoints,
       set.arcs.push_back({breakpoints[gap], breakpoints[(gap + 1) % count], wrapsHere});
     }
   }
-  std::sort(set.arcs.begin(), set.arcs.end(), [this](const AngleInterval& a, const AngleInterval& b) {
-    return compare(a.from, b.from) < 0;
-  });
   return set;
+}
+
+}  // namespace
+
+std::vector<AngleSet> AngleAlgebra::closuresOver(std::vector<AlgebraicAngle> breakpoints, std::size_t count,
+                                                 const std::function<std::uint32_t(const AlgebraicAngle&)>& holding) {
+  std::sort(breakpoints.begin(), breakpoints.end(), [this](const AlgebraicAngle& a, const AlgebraicAngle& b) {
+    return compare(a, b) < 0;
+  });
+  breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end(),
+                                [this](const AlgebraicAngle& a, const AlgebraicAngle& b) { return compare(a, b) == 0; }),
+                    breakpoints.end());
+  std::vector<AngleSet> sets(count);
+  if (breakpoints.empty()) {
+    const std::uint32_t bits = holding(AlgebraicAngle::rational(0, 0.0));
+    for (std::size_t property = 0; property < count; ++property) sets[property].fullCircle = (bits >> property) & 1u;
+    return sets;
+  }
+  // The properties are constant inside a gap, so one sample decides them.
+  const std::size_t gaps = breakpoints.size();
+  std::vector<std::uint32_t> bitsOfGap(gaps);
+  for (std::size_t i = 0; i < gaps; ++i) {
+    const AlgebraicAngle& next = breakpoints[(i + 1) % gaps];
+    const AlgebraicAngle sample = gaps == 1 ? angleAtPosition(exactPosition(breakpoints[0]).u.lo + 2)
+                                            : rationalBetween(breakpoints[i], next);
+    bitsOfGap[i] = holding(sample);
+  }
+  for (std::size_t property = 0; property < count; ++property) {
+    std::vector<bool> trueGap(gaps);
+    for (std::size_t i = 0; i < gaps; ++i) trueGap[i] = (bitsOfGap[i] >> property) & 1u;
+    sets[property] = setOfGaps(breakpoints, trueGap);
+    std::sort(sets[property].arcs.begin(), sets[property].arcs.end(),
+              [this](const AngleInterval& a, const AngleInterval& b) { return compare(a.from, b.from) < 0; });
+  }
+  return sets;
 }
 
 Sign AngleAlgebra::record(PredicateKind kind, int level, Sign sign) {

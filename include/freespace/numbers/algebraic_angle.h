@@ -243,6 +243,17 @@ class AngleAlgebra {
   /// The same for a property that can change only at the `breakpoints`.
   AngleSet closureOver(std::vector<AlgebraicAngle> breakpoints, const std::function<bool(const AlgebraicAngle&)>& holds);
 
+  /// The same for `count` properties at once (bit i of `holding` for property i),
+  /// sampled once per gap between breakpoints.
+  std::vector<AngleSet> closuresOver(std::vector<AlgebraicAngle> breakpoints, std::size_t count,
+                                     const std::function<std::uint32_t(const AlgebraicAngle&)>& holding);
+
+  /// The closures of the set where every function has the sign `pattern` gives it
+  /// (Positive or Negative), and of the set where every one has the opposite sign:
+  /// both from one set of roots (empty when a function vanishes identically).
+  std::array<AngleSet, 2> signPatternSets(const std::vector<std::shared_ptr<const AngleFunction>>& functions,
+                                          const std::vector<Sign>& pattern, PredicateKind kind);
+
  private:
   std::optional<int> compareInDoubles(AlgebraicAngle& a, AlgebraicAngle& b) const;
   std::optional<int> compareByKey(const AlgebraicAngle& a, const AlgebraicAngle& b);
