@@ -10,13 +10,16 @@
 #include <algorithm>
 #include <map>
 #include <random>
+#include <set>
 #include <tuple>
 
 #include "bundled_scene.h"
+#include "test_meshes.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/space/free_space.h"
 #include "freespace/collision/exact_collision_checker.h"
 #include "freespace/topology/shell_classification.h"
+#include "freespace/topology/shell_euler_characteristic.h"
 
 using namespace freespace;
 using namespace freespace::testing;
@@ -238,7 +241,69 @@ TEST_P(BundledSceneShells, EveryEdgeOfAFreeCellsShellIsUsedByTwoSides) {
   EXPECT_EQ(wrongSpirals, 0);
 }
 
+/// The shells bounding each free cell.
+std::map<std::uint32_t, std::set<std::uint32_t>> shellsOfCells(const FreeSpace& space) {
+  const Arrangement& arrangement = space.arrangement();
+  std::map<std::uint32_t, std::set<std::uint32_t>> shells;
+  for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
+    for (std::uint32_t face = 0; face < arrangement.subdivisions[patch].faceCount; ++face) {
+      if (const auto cell = space.cellOfSubFace({patch, face})) {
+        shells[*cell].insert(arrangement.shells.shellOf({patch, face}));
+      }
+    }
+  }
+  return shells;
+}
+
+/// Every shell bounding a free cell is a closed orientable surface: an even Euler
+/// characteristic, at most 2 (a sphere; 0 for a torus, a cell that wraps around theta).
+TEST_P(BundledSceneShells, ShellsOfFreeCellsHaveEvenEulerCharacteristicsAtMostTwo) {
+  const LoadedProblem loaded = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + GetParam());
+  const FreeSpace space(loaded.robot, loaded.world);
+  const std::vector<long> chi = shellEulerCharacteristics(space.arrangement(), space.algebra());
+  ASSERT_EQ(chi.size(), space.arrangement().shells.count());
+  std::set<std::uint32_t> freeShells;
+  for (const auto& [cell, shells] : shellsOfCells(space)) freeShells.insert(shells.begin(), shells.end());
+  std::map<long, int> byCharacteristic;
+  for (std::uint32_t shell : freeShells) byCharacteristic[chi[shell]]++;
+  std::cout << GetParam() << ": " << freeShells.size() << " shells of free cells by Euler characteristic:";
+  for (const auto& [value, count] : byCharacteristic) std::cout << " " << value << " x" << count;
+  std::cout << "\n";
+  EXPECT_FALSE(freeShells.empty());
+  for (std::uint32_t shell : freeShells) {
+    EXPECT_EQ(chi[shell] % 2, 0) << "shell " << shell;
+    EXPECT_LE(chi[shell], 2) << "shell " << shell;
+  }
+}
+
+/// A bar in a room too narrow to turn it across: two cells inside (the bar along the
+/// room one way or the other, turning less than a quarter turn), each a ball bounded
+/// by a sphere (2); outside the walls the unbounded cell, whose boundary is a torus
+/// (0: the obstacle's outline times the circle of angles).
+TEST(ShellEulerCharacteristic, ABarThatCannotTurnInARoomMakesTwoBallsInsideAndATorusOutside) {
+  const Mesh robot = boxMesh({-2, -0.25, 0}, {2, 0.25, 1});
+  const Mesh world = Mesh::fromSoup(joinSoups({boxSoup({-2.75, -2, 0}, {-2.25, 2, 2}), boxSoup({2.25, -2, 0}, {2.75, 2, 2}),
+                                               boxSoup({-2.2, -2, 0}, {2.2, -1.5, 2}), boxSoup({-2.2, 1.5, 0}, {2.2, 2, 2})}),
+                                    "room");
+  const FreeSpace space(robot, world);
+  const Location along = space.locate({0, 0, 0}), reversed = space.locate({0, 0, M_PI}),
+                 outside = space.locate({10, 0, 0.3});
+  ASSERT_TRUE(along.free && reversed.free && outside.free);
+  ASSERT_NE(along.cell, reversed.cell);
+  ASSERT_EQ(space.cellCount(), 3u);
+  const std::vector<long> chi = shellEulerCharacteristics(space.arrangement(), space.algebra());
+  std::map<std::uint32_t, std::vector<long>> chiOfCell;
+  for (const auto& [cell, shells] : shellsOfCells(space)) {
+    for (std::uint32_t shell : shells) chiOfCell[cell].push_back(chi[shell]);
+  }
+  EXPECT_EQ(chiOfCell[along.cell], std::vector<long>{2});
+  EXPECT_EQ(chiOfCell[reversed.cell], std::vector<long>{2});
+  EXPECT_EQ(chiOfCell[outside.cell], std::vector<long>{0});
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledSceneShells,
-                         ::testing::Values("cage.cfg", "keyhole.cfg", "keyhole_narrow.cfg", "turn_around.cfg", "table.cfg"));
+                         ::testing::Values("cage.cfg", "keyhole.cfg", "keyhole_narrow.cfg", "turn_around.cfg", "table.cfg",
+                                           "table_tall.cfg", "overhang.cfg", "room_door.cfg", "room_door_dae.cfg",
+                                           "random_polyhedra.cfg", "tetra_floorplan.cfg", "maze.cfg"));
 
 }  // namespace

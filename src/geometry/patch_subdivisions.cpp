@@ -211,6 +211,8 @@ class PatchSweep {
     return finish();
   }
 
+  const std::vector<PatchEventSlice>& eventSlices() const { return eventSlices_; }
+
  private:
   /// Sorts events counterclockwise from `origin` and merges equal angles.
   std::vector<EventGroup> groupFrom(const AlgebraicAngle& origin, std::vector<PatchEvent> events) {
@@ -332,6 +334,7 @@ class PatchSweep {
   void joinAtPoints(std::size_t left, std::size_t right, const EventGroup& group) {
     const PatchSlab &l = subdivision_.slabs[left], &r = subdivision_.slabs[right];
     const auto [rank, last] = ranksAt(group, l.curves, r.curves);
+    record(left, right, group.angle, rank, last);
     // Each slab's curves must meet the event's angle in their order, and the curves
     // not at the event in the same order on both sides (else an event is missing).
     for (const std::vector<std::uint32_t>* curves : {&l.curves, &r.curves}) {
@@ -359,6 +362,14 @@ class PatchSweep {
         ++i, ++j;
       }
     }
+  }
+
+  void record(std::size_t left, std::size_t right, const AlgebraicAngle& angle,
+              const std::unordered_map<std::uint32_t, int>& rank, int last) {
+    PatchEventSlice slice{angle, left, right, {}, {}, last};
+    for (std::uint32_t curve : subdivision_.slabs[left].curves) slice.ranksBefore.push_back(rank.at(curve));
+    for (std::uint32_t curve : subdivision_.slabs[right].curves) slice.ranksAfter.push_back(rank.at(curve));
+    eventSlices_.push_back(std::move(slice));
   }
 
   /// The ranks along the segment, at the group's angle, of the crossings of the
@@ -471,6 +482,7 @@ class PatchSweep {
   std::vector<PatchEvent> events_;
   UnionFind trapezoids_;
   PatchSubdivision subdivision_;
+  std::vector<PatchEventSlice> eventSlices_;
 };
 
 /// The sign of value(cosine, sine) at a rational angle: adaptively when its t is a
@@ -523,11 +535,12 @@ Sign sideOfEnd(const PatchGeometry& patch, int k, const PatchGeometry& other, co
   });
 }
 
-std::vector<PatchSubdivision> patchSubdivisions(const std::vector<PatchGeometry>& patches,
-                                                const std::vector<PatchCurve>& curves,
-                                                const std::vector<PatchVertex>& vertices,
-                                                const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra,
-                                                const Cancellation& cancellation) {
+namespace {
+
+/// The sweeps of all patches, with their curves, vertices and overlaps added.
+std::vector<PatchSweep> sweepsOf(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
+                                 const std::vector<PatchVertex>& vertices, const std::vector<PatchOverlap>& overlaps,
+                                 AngleAlgebra& algebra) {
   std::vector<PatchSweep> sweeps;
   sweeps.reserve(patches.size());
   for (std::uint32_t patch = 0; patch < patches.size(); ++patch) sweeps.emplace_back(patch, patches, curves, algebra);
@@ -541,6 +554,17 @@ std::vector<PatchSubdivision> patchSubdivisions(const std::vector<PatchGeometry>
   for (const PatchOverlap& overlap : overlaps) {
     for (std::uint32_t patch : overlap.patches) sweeps[patch].addOverlap(overlap);
   }
+  return sweeps;
+}
+
+}  // namespace
+
+std::vector<PatchSubdivision> patchSubdivisions(const std::vector<PatchGeometry>& patches,
+                                                const std::vector<PatchCurve>& curves,
+                                                const std::vector<PatchVertex>& vertices,
+                                                const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra,
+                                                const Cancellation& cancellation) {
+  std::vector<PatchSweep> sweeps = sweepsOf(patches, curves, vertices, overlaps, algebra);
   std::vector<PatchSubdivision> subdivisions;
   subdivisions.reserve(patches.size());
   for (PatchSweep& sweep : sweeps) {
@@ -548,6 +572,19 @@ std::vector<PatchSubdivision> patchSubdivisions(const std::vector<PatchGeometry>
     subdivisions.push_back(sweep.run());
   }
   return subdivisions;
+}
+
+std::vector<std::vector<PatchEventSlice>> patchEventSlices(const std::vector<PatchGeometry>& patches,
+                                                           const std::vector<PatchCurve>& curves,
+                                                           const std::vector<PatchVertex>& vertices,
+                                                           const std::vector<PatchOverlap>& overlaps,
+                                                           AngleAlgebra& algebra) {
+  std::vector<std::vector<PatchEventSlice>> slices;
+  for (PatchSweep& sweep : sweepsOf(patches, curves, vertices, overlaps, algebra)) {
+    sweep.run();
+    slices.push_back(sweep.eventSlices());
+  }
+  return slices;
 }
 
 }  // namespace freespace

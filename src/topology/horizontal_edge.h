@@ -96,4 +96,26 @@ std::optional<EdgeCrossSections> crossSectionsInDoubleDoubles(const HorizontalEd
                                                               const std::vector<PatchCurve>& curves,
                                                               AngleAlgebra& algebra);
 
+/// An edge read exactly: the named points along it in order, each with the names of
+/// the points merged into it (onePointOfEdge), and the rays over each piece between
+/// two consecutive points.
+struct EdgeRead {
+  std::vector<std::vector<EdgePoint>> points;
+  EdgeCrossSections pieces;
+};
+
+/// A horizontal edge, the slab of each of its sides meeting it, and its exact
+/// reading.
+struct EdgeSlice {
+  HorizontalEdge edge;
+  std::vector<const PatchSlab*> slabs;
+  EdgeRead reading;
+};
+
+/// Every horizontal edge read exactly (for checks of the arrangement's topology).
+std::vector<EdgeSlice> horizontalEdgeSlices(const std::vector<PatchGeometry>& patches,
+                                            const std::vector<PatchCurve>& curves,
+                                            const std::vector<PatchOverlap>& overlaps,
+                                            const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra);
+
 }  // namespace freespace::gluing

@@ -91,6 +91,8 @@ struct OffsetRay {
 struct NamedPosition {
   EdgePoint point;
   Rational low, high;
+  /// The points merged into this one (onePointOfEdge), itself first.
+  std::vector<EdgePoint> names;
 };
 
 /// Reads the cross-sections of an edge exactly, at rational angles next to it.
@@ -100,18 +102,19 @@ class ExactEdgeReader {
                   AngleAlgebra& algebra)
       : patches_(patches), curves_(curves), algebra_(algebra) {}
 
-  EdgeCrossSections read(const HorizontalEdge& edge, const std::vector<const PatchSlab*>& slabs) {
+  gluing::EdgeRead read(const HorizontalEdge& edge, const std::vector<const PatchSlab*>& slabs) {
     onEdge_.clear();
     for (const EdgeSide& side : edge.sides) onEdge_.push_back(side.patch);
     const std::array<std::optional<AlgebraicAngle>, 2> bounds = boundsOf(edge, slabs);
     for (int bits = kBits; bits <= 4 * kBits; bits *= 2) {
       const std::vector<SideAtAngle> sides = sidesNextTo(edge, slabs, bounds, bits);
       if (const std::optional<std::vector<NamedPosition>> points = namedPositions(sides, edge.angle)) {
-        EdgeCrossSections sections;
-        for (std::size_t i = 0; i + 1 < points->size(); ++i) {
-          sections.push_back(raysAt(((*points)[i].high + (*points)[i + 1].low) / 2, sides));
+        gluing::EdgeRead reading;
+        for (std::size_t i = 0; i < points->size(); ++i) {
+          reading.points.push_back((*points)[i].names);
+          if (i > 0) reading.pieces.push_back(raysAt(((*points)[i - 1].high + (*points)[i].low) / 2, sides));
         }
-        return sections;
+        return reading;
       }
     }
     throw std::logic_error("glueAcrossHorizontalEdges: points of an edge not apart");
@@ -223,7 +226,7 @@ class ExactEdgeReader {
       found->second.second = std::max(found->second.second, reading.at);
     }
     std::vector<NamedPosition> byLow;
-    for (const auto& [point, extent] : range) byLow.push_back({point, extent.first, extent.second});
+    for (const auto& [point, extent] : range) byLow.push_back({point, extent.first, extent.second, {point}});
     std::sort(byLow.begin(), byLow.end(), [](const NamedPosition& a, const NamedPosition& b) { return a.low < b.low; });
     // Overlapping ranges are one point of the edge or the order is not known yet;
     // consecutive points apart at the near angles may be one point of the edge too.
@@ -232,6 +235,7 @@ class ExactEdgeReader {
       const bool overlapping = !points.empty() && next.low <= points.back().high;
       if (!points.empty() && onePointOfEdge(*first[points.back().point], *first[next.point], edge, patches_, algebra_)) {
         points.back().high = std::max(points.back().high, next.high);
+        points.back().names.push_back(next.point);
         continue;
       }
       if (overlapping) return std::nullopt;
@@ -319,6 +323,20 @@ bool onePointOfEdge(const PointReading& a, const PointReading& b, const Algebrai
   return false;
 }
 
+std::vector<EdgeSlice> horizontalEdgeSlices(const std::vector<PatchGeometry>& patches,
+                                            const std::vector<PatchCurve>& curves,
+                                            const std::vector<PatchOverlap>& overlaps,
+                                            const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
+  std::vector<EdgeSlice> slices;
+  ExactEdgeReader exact(patches, curves, algebra);
+  for (HorizontalEdge& edge : horizontalEdges(patches, overlaps, algebra)) {
+    std::vector<const PatchSlab*> slabs = slabsMeeting(edge, subdivisions, algebra);
+    EdgeRead reading = exact.read(edge, slabs);
+    slices.push_back({std::move(edge), std::move(slabs), std::move(reading)});
+  }
+  return slices;
+}
+
 }  // namespace gluing
 
 SubFaceGluing glueAcrossHorizontalEdges(const std::vector<PatchGeometry>& patches,
@@ -343,7 +361,7 @@ SubFaceGluing glueAcrossHorizontalEdges(const std::vector<PatchGeometry>& patche
     }
     algebra.statistics().recordDecision(PredicateKind::EdgeCrossSection,
                                         static_cast<int>(sections ? level : PrecisionLevel::Exact));
-    glueAcross(edge, sections ? *sections : exact.read(edge, slabs), glues);
+    glueAcross(edge, sections ? *sections : exact.read(edge, slabs).pieces, glues);
   }
   return glues.take();
 }

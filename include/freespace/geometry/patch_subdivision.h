@@ -63,4 +63,28 @@ std::vector<PatchSubdivision> patchSubdivisions(const std::vector<PatchGeometry>
                                                 const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra,
                                                 const Cancellation& cancellation = {});
 
+/// The segment of a patch at one of its events inside its range where its slabs
+/// join at points (not at an overlap's cut, nor at its range's ends: those lie on
+/// horizontal edges): the ranks along the segment there, as patchSubdivisions finds
+/// them (0 for end 0 and the curves reaching it, 1, 2, ... for the distinct interior
+/// points, `endRank` for end 1 and the curves reaching it), of the curves of the slab
+/// before the event and of the slab after it (indices into the subdivision's slabs).
+struct PatchEventSlice {
+  AlgebraicAngle angle;
+  std::size_t before = 0;
+  std::size_t after = 0;
+  std::vector<int> ranksBefore;  // one per curve of slab `before`, in its order
+  std::vector<int> ranksAfter;
+  int endRank = 0;
+};
+
+/// The slices at the events of every patch (for checks of the arrangement's
+/// topology): the subdivision is run again, and its slabs are those of
+/// patchSubdivisions.
+std::vector<std::vector<PatchEventSlice>> patchEventSlices(const std::vector<PatchGeometry>& patches,
+                                                           const std::vector<PatchCurve>& curves,
+                                                           const std::vector<PatchVertex>& vertices,
+                                                           const std::vector<PatchOverlap>& overlaps,
+                                                           AngleAlgebra& algebra);
+
 }  // namespace freespace
