@@ -4,7 +4,8 @@
 // first sub-face it meets must be met from its positive side and belong to a closed
 // shell (every side of it glued). A missing or wrong glue leaves such a shell open.
 // The shells of free cells are probed on both sides of every sub-face (free side
-// inward), and every curve and spiral edge of them is used by exactly two sides.
+// inward), every curve, spiral and horizontal edge of them is used by exactly two
+// sides, and their Euler characteristics are those of closed orientable surfaces.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 
 #include "bundled_scene.h"
 #include "test_meshes.h"
+#include "topology/horizontal_edge.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/space/free_space.h"
 #include "freespace/collision/exact_collision_checker.h"
@@ -192,7 +194,8 @@ class EdgeUse {
 
 /// At every slab sample of every patch: the four sides along each of its curves (the
 /// sub-faces below and above the crossing on the patch and on the curve's other
-/// patch), and the sides of every patch ending at each of its segment's spirals.
+/// patch), and the sides of every patch ending at each of its segment's spirals; and
+/// the rays over every piece of every horizontal edge (read exactly).
 TEST_P(BundledSceneShells, EveryEdgeOfAFreeCellsShellIsUsedByTwoSides) {
   const LoadedProblem loaded = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + GetParam());
   const FreeSpace space(loaded.robot, loaded.world);
@@ -234,9 +237,18 @@ TEST_P(BundledSceneShells, EveryEdgeOfAFreeCellsShellIsUsedByTwoSides) {
       }
     }
   }
-  std::cout << GetParam() << ": " << curveEdges << " curve edges and " << spiralEdges
-            << " spiral edges of free cells' shells looked at\n";
+  int horizontalEdges = 0, wrongHorizontal = 0;
+  for (const gluing::EdgeSlice& edge : gluing::horizontalEdgeSlices(
+           arrangement.patches, arrangement.curves, arrangement.overlaps, arrangement.subdivisions, algebra)) {
+    for (const std::vector<gluing::EdgeRay>& piece : edge.reading.pieces) {
+      for (const gluing::EdgeRay& ray : piece) use.side(ray.face);
+      use.finish(horizontalEdges, wrongHorizontal);
+    }
+  }
+  std::cout << GetParam() << ": " << curveEdges << " curve edges, " << spiralEdges << " spiral edges and "
+            << horizontalEdges << " pieces of horizontal edges of free cells' shells looked at\n";
   EXPECT_GT(curveEdges + spiralEdges, 0);
+  EXPECT_EQ(wrongHorizontal, 0);
   EXPECT_EQ(wrongCurves, 0);
   EXPECT_EQ(wrongSpirals, 0);
 }
