@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "benchmark_arguments.h"
 #include "freespace/io/output_file.h"
 #include "freespace/scenes/scene_generator.h"
 #include "freespace/space/free_space.h"
@@ -105,24 +106,42 @@ Mesh mixedHeightFloorPlan(unsigned rooms) {
   return makeCheckedMesh(makeFloorPlan(layout, 1).walls, "floor plan");
 }
 
-}  // namespace
+/// A scene named on the command line, read before the runs start.
+struct NamedScene {
+  std::string name;
+  Mesh robot, world;
+};
 
-int main(int argc, char** argv) {
+NamedScene namedScene(const std::string& name) {
+  if (name.size() > 4 && name.substr(name.size() - 4) == ".cfg") {
+    benchmarks::requireFiles({name});
+    LoadedProblem problem = loadProblem(name);
+    return {name.substr(name.find_last_of('/') + 1), std::move(problem.robot), std::move(problem.world)};
+  }
+  Scene scene = makeScene(name);
+  return {scene.name, std::move(scene.robot), std::move(scene.world)};
+}
+
+constexpr const char* kUsage =
+    "bench_construction [--rooms MAX] [--mixed-rooms MAX] [--robots ROOMS] [--plot FILE.svg] [SCENE ...]";
+
+int run(int argc, char** argv) {
   unsigned maxRooms = 16, maxMixedRooms = 0, robotsRooms = 0;
   std::string plot;
-  std::vector<std::string> extra;
+  std::vector<NamedScene> extra;
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
     if (argument == "--rooms" && i + 1 < argc) {
-      maxRooms = static_cast<unsigned>(std::stoul(argv[++i]));
+      maxRooms = benchmarks::wholeNumber(argument, argv[++i]);
     } else if (argument == "--mixed-rooms" && i + 1 < argc) {
-      maxMixedRooms = static_cast<unsigned>(std::stoul(argv[++i]));
+      maxMixedRooms = benchmarks::wholeNumber(argument, argv[++i]);
     } else if (argument == "--robots" && i + 1 < argc) {
-      robotsRooms = static_cast<unsigned>(std::stoul(argv[++i]));
+      robotsRooms = benchmarks::wholeNumber(argument, argv[++i]);
     } else if (argument == "--plot" && i + 1 < argc) {
       plot = argv[++i];
     } else {
-      extra.push_back(argument);
+      benchmarks::rejectOption(argument, kUsage);
+      extra.push_back(namedScene(argument));
     }
   }
   std::vector<Row> rows;
@@ -143,15 +162,13 @@ int main(int argc, char** argv) {
       rows.push_back(measure("fishbone" + std::to_string(teeth) + suffix, makeFishboneRobot(teeth), world));
     }
   }
-  for (const std::string& name : extra) {
-    if (name.size() > 4 && name.substr(name.size() - 4) == ".cfg") {
-      const LoadedProblem problem = loadProblem(name);
-      rows.push_back(measure(name.substr(name.find_last_of('/') + 1), problem.robot, problem.world));
-    } else {
-      const Scene scene = makeScene(name);
-      rows.push_back(measure(scene.name, scene.robot, scene.world));
-    }
-  }
+  for (const NamedScene& scene : extra) rows.push_back(measure(scene.name, scene.robot, scene.world));
   if (!plot.empty()) writeFile(plot, true, [&](std::ostream& out) { writePlot(rows, out); });
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return benchmarks::reportingErrors("bench_construction", [&] { return run(argc, argv); });
 }

@@ -9,12 +9,12 @@
 // every benchmarks/problems/*.cfg)
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <iostream>
 #include <random>
 #include <set>
 #include <string>
 
+#include "benchmark_arguments.h"
 #include "freespace/collision/exact_collision_checker.h"
 #include "freespace/space/free_space.h"
 
@@ -68,25 +68,27 @@ void measure(const std::string& cfg, int samples) {
             << " us, collision test " << 1e6 * collisionSeconds / samples << " us per configuration" << std::endl;
 }
 
-}  // namespace
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
   int samples = 100000;
   std::vector<std::string> problems;
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
     if (argument == "--samples" && i + 1 < argc) {
-      samples = std::stoi(argv[++i]);
+      samples = static_cast<int>(benchmarks::wholeNumber(argument, argv[++i]));
     } else {
+      benchmarks::rejectOption(argument, "bench_locate [--samples N] [PROBLEM.cfg ...]");
       problems.push_back(argument);
     }
   }
-  if (problems.empty()) {
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems")) {
-      if (entry.path().extension() == ".cfg") problems.push_back(entry.path().string());
-    }
-    std::sort(problems.begin(), problems.end());
-  }
+  if (problems.empty()) problems = benchmarks::bundledProblems();
+  benchmarks::requireFiles(problems);
   for (const std::string& problem : problems) measure(problem, samples);
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return benchmarks::reportingErrors("bench_locate", [&] { return run(argc, argv); });
 }

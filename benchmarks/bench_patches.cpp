@@ -7,10 +7,10 @@
 //
 // Usage: bench_patches [PROBLEM.cfg ...]   (default: every benchmarks/problems/*.cfg)
 #include <chrono>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 
+#include "benchmark_arguments.h"
 #include "freespace/geometry/patch.h"
 #include "freespace/geometry/patch_curve.h"
 #include "freespace/geometry/patch_subdivision.h"
@@ -110,16 +110,18 @@ void measure(const std::string& cfg) {
             << statistics.toText();
 }
 
+
+int run(int argc, char** argv) {
+  std::vector<std::string> problems(argv + 1, argv + argc);
+  for (const std::string& argument : problems) benchmarks::rejectOption(argument, "bench_patches [PROBLEM.cfg ...]");
+  if (problems.empty()) problems = benchmarks::bundledProblems();
+  benchmarks::requireFiles(problems);
+  for (const std::string& problem : problems) measure(problem);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<std::string> problems(argv + 1, argv + argc);
-  if (problems.empty()) {
-    for (const auto& entry : std::filesystem::directory_iterator(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems")) {
-      if (entry.path().extension() == ".cfg") problems.push_back(entry.path().string());
-    }
-    std::sort(problems.begin(), problems.end());
-  }
-  for (const std::string& problem : problems) measure(problem);
-  return 0;
+  return benchmarks::reportingErrors("bench_patches", [&] { return run(argc, argv); });
 }
