@@ -108,19 +108,35 @@ int certainSignOver(const TrigLinear<Interval>& form, const Interval& cosine, co
   return sign ? static_cast<int>(*sign) : 0;
 }
 
+/// Whether one segment's ends lie strictly on one side of the other's line at every
+/// angle whose cosine and sine lie in the given intervals.
+bool apartOver(const IntervalPatch& a, const IntervalPatch& b, const Interval& cosine, const Interval& sine) {
+  const auto oneSide = [&](const PatchLine<Interval>& line, const std::array<Spiral<Interval>, 2>& ends) {
+    const int first = certainSignOver(spiralFacetForm(line, ends[0]), cosine, sine);
+    return first != 0 && first == certainSignOver(spiralFacetForm(line, ends[1]), cosine, sine);
+  };
+  return oneSide(b.line, a.ends) || oneSide(a.line, b.ends);
+}
+
+/// Halvings of a common range of angles where the segments are not found apart over
+/// it: the enclosures over narrower ranges are tighter.
+constexpr int kRangeHalvings = 4;
+
+bool mayCrossOver(const IntervalPatch& a, const IntervalPatch& b, double from, double to, int halvings) {
+  const auto [cosine, sine] = detail::cosSinOver(from, to);
+  if (apartOver(a, b, cosine, sine)) return false;
+  if (halvings == 0) return true;
+  const double middle = from + 0.5 * (to - from);
+  return mayCrossOver(a, b, from, middle, halvings - 1) || mayCrossOver(a, b, middle, to, halvings - 1);
+}
+
 /// False when, at every common angle of the two ranges, both ends of one segment lie
 /// strictly on one side of the other's line: then the segments never cross
 /// (decided in double intervals; true when unsure).
 bool mayCross(const IntervalPatch& a, const IntervalPatch& b) {
   RoundingScope rounding;
-  const auto oneSide = [](const PatchLine<Interval>& line, const std::array<Spiral<Interval>, 2>& ends,
-                          const Interval& cosine, const Interval& sine) {
-    const int first = certainSignOver(spiralFacetForm(line, ends[0]), cosine, sine);
-    return first != 0 && first == certainSignOver(spiralFacetForm(line, ends[1]), cosine, sine);
-  };
   for (const auto& [from, to] : detail::overlap(a.angles, b.angles)) {
-    const auto [cosine, sine] = detail::cosSinOver(from, to);
-    if (!oneSide(b.line, a.ends, cosine, sine) && !oneSide(a.line, b.ends, cosine, sine)) return true;
+    if (mayCrossOver(a, b, from, to, kRangeHalvings)) return true;
   }
   return false;
 }
