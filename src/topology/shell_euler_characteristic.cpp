@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "horizontal_edge.h"
+#include "slab_end_order.h"
 
 namespace freespace {
 
@@ -104,14 +105,14 @@ class EulerSweep {
         events_(patchEventSlices(arrangement.patches, arrangement.curves, arrangement.vertices, arrangement.overlaps,
                                  algebra)),
         edges_(gluing::horizontalEdgeSlices(arrangement.patches, arrangement.curves, arrangement.overlaps,
-                                            arrangement.subdivisions, algebra)) {}
+                                            arrangement.subdivisions, algebra)),
+        order_(allPatches(arrangement), arrangement.subdivisions, algebra) {}
 
   std::vector<long> run() {
     std::vector<long> chi(arrangement_.shells.count(), 0);
-    collectAngles();
-    if (angles_.empty()) return chi;  // no events: every shell is a slice times the circle
+    if (order_.angles().empty()) return chi;  // no events: every shell is a slice times the circle
     placeItems();
-    for (std::size_t k = 0; k < angles_.size(); ++k) {
+    for (std::size_t k = 0; k < order_.angles().size(); ++k) {
       SliceGraph atAngle, afterAngle;
       std::set<std::uint32_t> withEvent;
       for (const auto& [patch, slice] : eventsAt_[k]) {
@@ -139,50 +140,20 @@ class EulerSweep {
   }
 
  private:
-  /// Theta: every angle where a slab begins or ends, in counterclockwise order.
-  void collectAngles() {
-    for (const PatchSubdivision& subdivision : arrangement_.subdivisions) {
-      for (const PatchSlab& slab : subdivision.slabs) {
-        if (eventless(slab)) continue;
-        angles_.push_back(slab.from);
-        angles_.push_back(slab.to);
-      }
-    }
-    const auto less = [this](const AlgebraicAngle& a, const AlgebraicAngle& b) { return algebra_.compare(a, b) < 0; };
-    std::sort(angles_.begin(), angles_.end(), less);
-    angles_.erase(std::unique(angles_.begin(), angles_.end(),
-                              [this](const AlgebraicAngle& a, const AlgebraicAngle& b) {
-                                return algebra_.compare(a, b) == 0;
-                              }),
-                  angles_.end());
+  static std::vector<std::uint32_t> allPatches(const Arrangement& arrangement) {
+    std::vector<std::uint32_t> patches(arrangement.patches.size());
+    for (std::uint32_t patch = 0; patch < patches.size(); ++patch) patches[patch] = patch;
+    return patches;
   }
 
-  bool eventless(const PatchSlab& slab) {
-    return algebra_.compare(slab.from, slab.to) == 0 && algebra_.compare(slab.from, slab.sample) == 0;
-  }
+  std::size_t indexOf(const AlgebraicAngle& angle) const { return order_.indexOf(angle, algebra_); }
 
-  std::size_t indexOf(const AlgebraicAngle& angle) {
-    const auto found = std::lower_bound(angles_.begin(), angles_.end(), angle, [this](const AlgebraicAngle& a, const AlgebraicAngle& b) {
-      return algebra_.compare(a, b) < 0;
-    });
-    if (found == angles_.end() || algebra_.compare(*found, angle) != 0) {
-      throw std::logic_error("shellEulerCharacteristics: an event's angle is no slab's end");
-    }
-    return static_cast<std::size_t>(found - angles_.begin());
-  }
-
-  /// The angles of Theta each slab runs between (none for a whole circle without
-  /// events), the angles at which patches have event slices and horizontal edges
-  /// lie, and the patches ending at each spiral.
+  /// The angles at which patches have event slices and horizontal edges lie, and the
+  /// patches ending at each spiral.
   void placeItems() {
-    eventsAt_.assign(angles_.size(), {});
-    edgesAt_.assign(angles_.size(), {});
+    eventsAt_.assign(order_.angles().size(), {});
+    edgesAt_.assign(order_.angles().size(), {});
     for (std::uint32_t patch = 0; patch < arrangement_.subdivisions.size(); ++patch) {
-      std::vector<std::optional<std::pair<std::size_t, std::size_t>>>& ends = slabEnds_.emplace_back();
-      for (const PatchSlab& slab : arrangement_.subdivisions[patch].slabs) {
-        ends.push_back(eventless(slab) ? std::nullopt
-                                       : std::optional(std::make_pair(indexOf(slab.from), indexOf(slab.to))));
-      }
       for (const PatchEventSlice& slice : events_[patch]) eventsAt_[indexOf(slice.angle)].emplace_back(patch, &slice);
       for (int k = 0; k < 2; ++k) patchesAtSpiral_[spiralAtom(arrangement_.patches[patch], k)].push_back(patch);
     }
@@ -191,20 +162,6 @@ class EulerSweep {
 
   std::uint32_t slabIndex(std::uint32_t patch, const PatchSlab& slab) const {
     return static_cast<std::uint32_t>(&slab - arrangement_.subdivisions[patch].slabs.data());
-  }
-
-  /// The slab of a patch holding angle k of Theta inside, if any.
-  std::optional<std::uint32_t> slabHolding(std::uint32_t patch, std::size_t k) const {
-    const std::size_t n = angles_.size();
-    for (std::uint32_t index = 0; index < slabEnds_[patch].size(); ++index) {
-      const auto& ends = slabEnds_[patch][index];
-      if (!ends) return index;
-      const auto [from, to] = *ends;
-      // A slab from an event back to it holds every other angle.
-      const std::size_t steps = from == to ? n : (to + n - from) % n;
-      if ((k + n - from) % n != 0 && (k + n - from) % n < steps) return index;
-    }
-    return std::nullopt;
   }
 
   /// The patches (other than those with an event or edge at angle k) whose slabs
@@ -220,7 +177,7 @@ class EulerSweep {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> holding;
     for (std::uint32_t patch : patches) {
       if (withEvent.count(patch)) continue;
-      if (const std::optional<std::uint32_t> slab = slabHolding(patch, k)) holding.emplace_back(patch, *slab);
+      if (const std::optional<std::uint32_t> slab = order_.slabHoldingAngle(patch, k)) holding.emplace_back(patch, *slab);
     }
     return holding;
   }
@@ -331,8 +288,8 @@ class EulerSweep {
   AngleAlgebra& algebra_;
   std::vector<std::vector<PatchEventSlice>> events_;
   std::vector<gluing::EdgeSlice> edges_;
-  std::vector<AlgebraicAngle> angles_;
-  std::vector<std::vector<std::optional<std::pair<std::size_t, std::size_t>>>> slabEnds_;
+  /// Theta: every angle where a slab begins or ends.
+  gluing::SlabEndOrder order_;
   std::vector<std::vector<std::pair<std::uint32_t, const PatchEventSlice*>>> eventsAt_;
   std::vector<std::vector<std::size_t>> edgesAt_;
   std::map<AtomKey, std::vector<std::uint32_t>> patchesAtSpiral_;

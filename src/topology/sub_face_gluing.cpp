@@ -7,10 +7,13 @@
 #include <tuple>
 
 #include "gluing_parts.h"
+#include "slab_end_order.h"
 
 namespace freespace {
 
 namespace {
+
+using gluing::SlabEndOrder;
 
 using gluing::GlueList;
 using gluing::SlabCursor;
@@ -101,29 +104,15 @@ void sortCounterclockwise(std::vector<Spoke>& spokes, const std::vector<PatchGeo
   for (std::size_t i = 0; i < spokes.size(); ++i) spokes[i] = exact[i].second;
 }
 
-/// One rational angle inside each interval between consecutive slab ends of the
-/// patches around a spiral: the spokes around it and their slabs are the same over
-/// each such interval.
-std::vector<AlgebraicAngle> samplesAround(const std::vector<std::pair<std::uint32_t, int>>& around,
-                                          const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra) {
-  std::vector<AlgebraicAngle> ends;
-  for (const auto& [patch, unusedEnd] : around) {
-    for (const PatchSlab& slab : subdivisions[patch].slabs) {
-      if (algebra.compare(slab.from, slab.sample) == 0) continue;  // a circle without events
-      ends.push_back(slab.from);
-      ends.push_back(slab.to);
-    }
-  }
-  std::sort(ends.begin(), ends.end(), [&](const AlgebraicAngle& a, const AlgebraicAngle& b) {
-    return algebra.compare(a, b) < 0;
-  });
-  ends.erase(std::unique(ends.begin(), ends.end(),
-                         [&](const AlgebraicAngle& a, const AlgebraicAngle& b) { return algebra.compare(a, b) == 0; }),
-             ends.end());
-  if (ends.empty()) return {AlgebraicAngle::rational(0, 0.0)};
-  if (ends.size() == 1) return {AlgebraicAngle::rational(1 - ends[0].chart(), 0.0)};
+/// One rational angle inside each open arc between consecutive angles of a sorted
+/// list of distinct angles (from each to the next, the last around to the first).
+std::vector<AlgebraicAngle> samplesBetween(const std::vector<AlgebraicAngle>& angles, AngleAlgebra& algebra) {
+  if (angles.empty()) return {AlgebraicAngle::rational(0, 0.0)};
+  if (angles.size() == 1) return {AlgebraicAngle::rational(1 - angles[0].chart(), 0.0)};
   std::vector<AlgebraicAngle> samples;
-  for (std::size_t i = 0; i < ends.size(); ++i) samples.push_back(algebra.rationalBetween(ends[i], ends[(i + 1) % ends.size()]));
+  for (std::size_t i = 0; i < angles.size(); ++i) {
+    samples.push_back(algebra.rationalBetween(angles[i], angles[(i + 1) % angles.size()]));
+  }
   return samples;
 }
 
@@ -166,16 +155,23 @@ SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
     }
   }
   GlueList glues;
-  SlabCursor cursor(subdivisions, algebra);
   for (const auto& [spiral, around] : bySpiral) {
     cancellation.check();
-    for (const AlgebraicAngle& sample : samplesAround(around, subdivisions, algebra)) {
+    // Over each arc between consecutive slab ends of the patches around the spiral,
+    // the spokes and their slabs stay the same: one sample decides the arc.
+    std::vector<std::uint32_t> aroundPatches;
+    for (const auto& [patch, unusedEnd] : around) aroundPatches.push_back(patch);
+    const SlabEndOrder order(aroundPatches, subdivisions, algebra);
+    const std::vector<AlgebraicAngle> samples = samplesBetween(order.angles(), algebra);
+    for (std::size_t gap = 0; gap < samples.size(); ++gap) {
+      const AlgebraicAngle& sample = samples[gap];
       std::vector<Spoke> spokes;
-      for (const auto& [patch, k] : around) {
-        if (!algebra.contains(patches[patch].patch.range, sample)) continue;
-        const PatchSlab* at = cursor.at(patch, sample);
-        if (!at) throw std::logic_error("glueAroundSpirals: an active patch has no slab at a sample");
-        spokes.push_back({patch, k, k == 0 ? at->faces.front() : at->faces.back()});
+      for (std::size_t i = 0; i < around.size(); ++i) {
+        const auto [patch, k] = around[i];
+        const std::optional<std::uint32_t> slab = order.slabOverGap(i, gap);
+        if (!slab) continue;  // outside the patch's range
+        const PatchSlab& at = subdivisions[patch].slabs[*slab];
+        spokes.push_back({patch, k, k == 0 ? at.faces.front() : at.faces.back()});
       }
       sortCounterclockwise(spokes, patches, sample);
       // The sector counterclockwise after a spoke: its positive side (right of end

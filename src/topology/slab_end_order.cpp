@@ -1,0 +1,83 @@
+#include "slab_end_order.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace freespace::gluing {
+
+namespace {
+
+/// A slab end to be sorted: its angle, whose end it is, and where it goes.
+struct TaggedEnd {
+  const AlgebraicAngle* angle;
+  std::size_t patch;
+  std::size_t slab;
+  bool to;
+};
+
+bool eventless(const PatchSlab& slab, AngleAlgebra& algebra) {
+  return algebra.compare(slab.from, slab.to) == 0 && algebra.compare(slab.from, slab.sample) == 0;
+}
+
+}  // namespace
+
+SlabEndOrder::SlabEndOrder(const std::vector<std::uint32_t>& patches, const std::vector<PatchSubdivision>& subdivisions,
+                           AngleAlgebra& algebra) {
+  std::vector<TaggedEnd> tagged;
+  for (std::size_t i = 0; i < patches.size(); ++i) {
+    const std::vector<PatchSlab>& slabs = subdivisions[patches[i]].slabs;
+    ends_.emplace_back(slabs.size());
+    for (std::size_t s = 0; s < slabs.size(); ++s) {
+      if (eventless(slabs[s], algebra)) continue;
+      tagged.push_back({&slabs[s].from, i, s, false});
+      tagged.push_back({&slabs[s].to, i, s, true});
+    }
+  }
+  std::sort(tagged.begin(), tagged.end(),
+            [&](const TaggedEnd& a, const TaggedEnd& b) { return algebra.compare(*a.angle, *b.angle) < 0; });
+  for (const TaggedEnd& end : tagged) {
+    if (angles_.empty() || algebra.compare(angles_.back(), *end.angle) != 0) angles_.push_back(*end.angle);
+    auto& slabEnds = ends_[end.patch][end.slab];
+    if (!slabEnds) slabEnds.emplace(0, 0);
+    (end.to ? slabEnds->second : slabEnds->first) = angles_.size() - 1;
+  }
+}
+
+std::size_t SlabEndOrder::indexOf(const AlgebraicAngle& angle, AngleAlgebra& algebra) const {
+  const auto found = std::lower_bound(angles_.begin(), angles_.end(), angle,
+                                      [&](const AlgebraicAngle& a, const AlgebraicAngle& b) {
+                                        return algebra.compare(a, b) < 0;
+                                      });
+  if (found == angles_.end() || algebra.compare(*found, angle) != 0) {
+    throw std::logic_error("SlabEndOrder: an angle is no slab's end");
+  }
+  return static_cast<std::size_t>(found - angles_.begin());
+}
+
+template <class Holds>
+std::optional<std::uint32_t> SlabEndOrder::firstSlab(std::size_t i, const Holds& holds) const {
+  const std::size_t n = angles_.size();
+  for (std::uint32_t slab = 0; slab < ends_[i].size(); ++slab) {
+    const auto& ends = ends_[i][slab];
+    if (!ends) return slab;  // a whole circle without events holds everything
+    const auto [from, to] = *ends;
+    // A slab from an event back to it spans every arc.
+    if (holds(from, from == to ? n : (to + n - from) % n)) return slab;
+  }
+  return std::nullopt;
+}
+
+std::optional<std::uint32_t> SlabEndOrder::slabOverGap(std::size_t i, std::size_t gap) const {
+  const std::size_t n = angles_.size();
+  return firstSlab(i, [&](std::size_t from, std::size_t arcs) { return (gap + n - from) % n < arcs; });
+}
+
+std::optional<std::uint32_t> SlabEndOrder::slabHoldingAngle(std::size_t i, std::size_t k) const {
+  const std::size_t n = angles_.size();
+  return firstSlab(i, [&](std::size_t from, std::size_t arcs) {
+    const std::size_t step = (k + n - from) % n;
+    return step != 0 && step < arcs;
+  });
+}
+
+}  // namespace freespace::gluing
