@@ -228,6 +228,18 @@ const Polynomial<DoubleDoubleInterval>& AngleFunction::doubleDouble(int chart) c
   return *doubleDouble_[chart];
 }
 
+const DoubleDoubleInterval* AngleFunction::rememberedRoot(int chart, int index) const {
+  const auto& roots = doubleDoubleRoots_[chart];
+  if (index < 0 || static_cast<std::size_t>(index) >= roots.size() || !roots[index]) return nullptr;
+  return &*roots[index];
+}
+
+void AngleFunction::rememberRoot(int chart, int index, const DoubleDoubleInterval& root) const {
+  auto& roots = doubleDoubleRoots_[chart];
+  if (static_cast<std::size_t>(index) >= roots.size()) roots.resize(index + 1);
+  roots[index] = root;
+}
+
 const Polynomial<Interval>& AngleFunction::tight(int chart) const {
   if (!tight_[chart]) {
     std::vector<Interval> coefficients;
@@ -642,13 +654,9 @@ std::optional<AlgebraicAngle> betweenInDoubles(const AlgebraicAngle& from, const
   return std::nullopt;
 }
 
-}  // namespace
-
-std::optional<DoubleDoubleInterval> doubleDoubleParameter(const AlgebraicAngle& angle) {
-  if (angle.isRational()) {
-    if (angle.lower() == angle.upper()) return DoubleDoubleInterval(angle.lower());
-    return DoubleDoubleInterval(angle.root().lo);
-  }
+/// Newton's iteration in double-doubles from the middle of the angle's enclosure,
+/// certified by a sign change around the result inside the enclosure.
+std::optional<DoubleDoubleInterval> newtonInDoubleDoubles(const AlgebraicAngle& angle) {
   constexpr int kNewtonSteps = 6;
   const Polynomial<DoubleDoubleInterval>& p = angle.function()->doubleDouble(angle.chart());
   const Polynomial<DoubleDoubleInterval> slope = p.derivative();
@@ -673,6 +681,22 @@ std::optional<DoubleDoubleInterval> doubleDoubleParameter(const AlgebraicAngle& 
     if (atLow && atHigh && *atLow != Sign::Zero && *atLow == -*atHigh) return t.widened(2 * delta);
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<DoubleDoubleInterval> doubleDoubleParameter(const AlgebraicAngle& angle) {
+  if (angle.isRational()) {
+    if (angle.lower() == angle.upper()) return DoubleDoubleInterval(angle.lower());
+    return DoubleDoubleInterval(angle.root().lo);
+  }
+  const AngleFunction& function = *angle.function();
+  if (angle.index() >= 0) {
+    if (const DoubleDoubleInterval* known = function.rememberedRoot(angle.chart(), angle.index())) return *known;
+  }
+  std::optional<DoubleDoubleInterval> root = newtonInDoubleDoubles(angle);
+  if (root && angle.index() >= 0) function.rememberRoot(angle.chart(), angle.index(), *root);
+  return root;
 }
 
 std::pair<DoubleDoubleInterval, DoubleDoubleInterval> doubleDoubleCosSin(const DoubleDoubleInterval& t, int chart) {

@@ -62,6 +62,11 @@ class AngleFunction {
   bool isIdenticallyZero() const;
   const std::optional<RootKey>& key() const { return key_; }
 
+  /// The certified double-double enclosure of the chart's root with the given index
+  /// (its place among the chart's roots), once one was found (rememberRoot).
+  const DoubleDoubleInterval* rememberedRoot(int chart, int index) const;
+  void rememberRoot(int chart, int index, const DoubleDoubleInterval& root) const;
+
  private:
   /// The formula in the number types past double intervals, kept once.
   struct Evaluator {
@@ -89,6 +94,7 @@ class AngleFunction {
   mutable std::array<std::optional<Polynomial<PreciseInterval>>, 2> precise_;
   mutable std::array<std::optional<RationalPolynomial>, 2> exact_;
   mutable std::array<std::optional<RationalPolynomial>, 2> squareFree_;
+  mutable std::array<std::vector<std::optional<DoubleDoubleInterval>>, 2> doubleDoubleRoots_;
 };
 
 /// An angle that is a root of an AngleFunction (or a rational angle, a HalfAngle):
