@@ -146,9 +146,10 @@ InvolvedBlock involvedBlock(const std::vector<std::uint32_t>& order, const std::
 /// Subdivides one patch from its curves, vertices and overlaps.
 class PatchSweep {
  public:
+  /// With `recordEvents`, keeps the slices at the events (eventSlices).
   PatchSweep(std::uint32_t patch, const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
-             AngleAlgebra& algebra)
-      : patch_(patch), patches_(patches), curves_(curves), algebra_(algebra) {}
+             AngleAlgebra& algebra, bool recordEvents)
+      : patch_(patch), patches_(patches), curves_(curves), algebra_(algebra), recordEvents_(recordEvents) {}
 
   void addCurve(std::uint32_t curve) {
     curvesOfPatch_.push_back(curve);
@@ -334,7 +335,7 @@ class PatchSweep {
   void joinAtPoints(std::size_t left, std::size_t right, const EventGroup& group) {
     const PatchSlab &l = subdivision_.slabs[left], &r = subdivision_.slabs[right];
     const auto [rank, last] = ranksAt(group, l.curves, r.curves);
-    record(left, right, group.angle, rank, last);
+    if (recordEvents_) record(left, right, group.angle, rank, last);
     // Each slab's curves must meet the event's angle in their order, and the curves
     // not at the event in the same order on both sides (else an event is missing).
     for (const std::vector<std::uint32_t>* curves : {&l.curves, &r.curves}) {
@@ -477,6 +478,7 @@ class PatchSweep {
   const std::vector<PatchGeometry>& patches_;
   const std::vector<PatchCurve>& curves_;
   AngleAlgebra& algebra_;
+  bool recordEvents_;
   std::vector<std::uint32_t> curvesOfPatch_;
   std::unordered_map<std::uint32_t, std::uint32_t> curveWith_;
   std::vector<PatchEvent> events_;
@@ -540,10 +542,12 @@ namespace {
 /// The sweeps of all patches, with their curves, vertices and overlaps added.
 std::vector<PatchSweep> sweepsOf(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
                                  const std::vector<PatchVertex>& vertices, const std::vector<PatchOverlap>& overlaps,
-                                 AngleAlgebra& algebra) {
+                                 AngleAlgebra& algebra, bool recordEvents) {
   std::vector<PatchSweep> sweeps;
   sweeps.reserve(patches.size());
-  for (std::uint32_t patch = 0; patch < patches.size(); ++patch) sweeps.emplace_back(patch, patches, curves, algebra);
+  for (std::uint32_t patch = 0; patch < patches.size(); ++patch) {
+    sweeps.emplace_back(patch, patches, curves, algebra, recordEvents);
+  }
   for (std::uint32_t curve = 0; curve < curves.size(); ++curve) {
     sweeps[curves[curve].first].addCurve(curve);
     sweeps[curves[curve].second].addCurve(curve);
@@ -564,7 +568,7 @@ std::vector<PatchSubdivision> patchSubdivisions(const std::vector<PatchGeometry>
                                                 const std::vector<PatchVertex>& vertices,
                                                 const std::vector<PatchOverlap>& overlaps, AngleAlgebra& algebra,
                                                 const Cancellation& cancellation) {
-  std::vector<PatchSweep> sweeps = sweepsOf(patches, curves, vertices, overlaps, algebra);
+  std::vector<PatchSweep> sweeps = sweepsOf(patches, curves, vertices, overlaps, algebra, false);
   std::vector<PatchSubdivision> subdivisions;
   subdivisions.reserve(patches.size());
   for (PatchSweep& sweep : sweeps) {
@@ -580,7 +584,7 @@ std::vector<std::vector<PatchEventSlice>> patchEventSlices(const std::vector<Pat
                                                            const std::vector<PatchOverlap>& overlaps,
                                                            AngleAlgebra& algebra) {
   std::vector<std::vector<PatchEventSlice>> slices;
-  for (PatchSweep& sweep : sweepsOf(patches, curves, vertices, overlaps, algebra)) {
+  for (PatchSweep& sweep : sweepsOf(patches, curves, vertices, overlaps, algebra, true)) {
     sweep.run();
     slices.push_back(sweep.eventSlices());
   }
