@@ -1,6 +1,7 @@
 #include "freespace/geometry/patch_subdivision.h"
 
 #include <algorithm>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -407,12 +408,23 @@ class PatchSweep {
       denominator[curve] = algebra_.signAt(endValueDifference(patches_[patch_], other(curve)), at);
       if (denominator[curve] == Sign::Zero) fail("a curve's line is parallel to the segment", group.angle, {curve});
     }
+    // Exact orders are kept: the sort and the check for equal points below ask for
+    // the same pairs again.
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> exactOrder;
     // sign(lambda_h - lambda_g) at the event's angle.
     const auto order = [&](std::uint32_t g, std::uint32_t h) {
       if (point[g][0] != kUnnamed && point[g] == point[h]) return 0;
       if (const int apart = certainOrder(lambda.at(g), lambda.at(h))) return apart;
-      const Sign difference = algebra_.signAt(crossingDifference(patches_[patch_], other(g), other(h)), at);
-      return static_cast<int>(difference) * static_cast<int>(denominator[g]) * static_cast<int>(denominator[h]);
+      // order(h, g) is -order(g, h): the crossing difference changes sign.
+      const bool swapped = h < g;
+      const auto [known, inserted] = exactOrder.try_emplace(swapped ? std::make_pair(h, g) : std::make_pair(g, h), 0);
+      if (inserted) {
+        const auto [first, second] = known->first;
+        const Sign difference = algebra_.signAt(crossingDifference(patches_[patch_], other(first), other(second)), at);
+        known->second = static_cast<int>(difference) * static_cast<int>(denominator[first]) *
+                        static_cast<int>(denominator[second]);
+      }
+      return swapped ? -known->second : known->second;
     };
     std::sort(interior.begin(), interior.end(), [&](std::uint32_t g, std::uint32_t h) { return order(g, h) > 0; });
     std::vector<int> distinctFromPrevious(interior.size(), 1);
