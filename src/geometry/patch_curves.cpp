@@ -194,16 +194,12 @@ SideFunction sideFunction(const PatchGeometry& line, const PatchGeometry& owner,
 /// The curve of patches `first` (geometry a) and `second` (geometry b): the closure
 /// of the set of angles in both ranges where the two segments cross at a point
 /// inside both, i.e. each segment's ends lie strictly on opposite sides of the
-/// other's line (four SF functions), with the causes of its arcs' ends. Empty when
-/// the segments share an end (their lines then always meet at it) or their lines
-/// coincide. Throws std::logic_error if an arc end has no cause (a bug).
+/// other's line (four SF functions), with the causes of its arcs' ends; for
+/// segments that share no end. Empty when their lines coincide. Throws
+/// std::logic_error if an arc end has no cause (a bug).
 PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t second, const PatchGeometry& b,
                       AngleAlgebra& algebra) {
   PatchCurve curve{first, second, {}, {}};
-  if (shareAnEnd(a.segment, b.segment)) {
-    AdaptiveSignEngine(algebra.statistics()).knownIdentity(PredicateKind::SpiralFacet);
-    return curve;
-  }
   // The ends of a on b's line, then the ends of b on a's line.
   std::array<SideFunction, 4> sides;
   const auto inBothRanges = [&](const AlgebraicAngle& angle) {
@@ -285,6 +281,11 @@ std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches, A
   std::vector<PatchCurve> curves;
   for (const auto& [first, second] : candidatePatchPairs(patches)) {
     cancellation.check();
+    // Segments sharing an end: their lines always meet there (an identity).
+    if (shareAnEnd(patches[first].segment, patches[second].segment)) {
+      AdaptiveSignEngine(algebra.statistics()).knownIdentity(PredicateKind::SpiralFacet);
+      continue;
+    }
     if (!mayCross(approximate[first], approximate[second])) continue;
     PatchCurve curve = patchCurve(first, patches[first], second, patches[second], algebra);
     if (!curve.angles.empty()) curves.push_back(std::move(curve));
