@@ -7,16 +7,19 @@
 // time of each stage, the counts (patches, curves, vertices, sub-faces, shells, free
 // cells), the peak memory and the share of predicates decided in double intervals;
 // with --plot FILE.svg also draws the total time against the output size (vertices
-// plus sub-faces).
+// plus sub-faces); with --euler also prints the Euler characteristics of the shells of
+// free cells (a check of the topology, not timed with the construction).
 //
 // Usage: bench_construction [--rooms MAX] [--mixed-rooms MAX] [--robots ROOMS]
-//                           [--plot FILE.svg] [SCENE ...]
+//                           [--plot FILE.svg] [--euler] [SCENE ...]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -24,6 +27,7 @@
 #include "freespace/io/output_file.h"
 #include "freespace/scenes/scene_generator.h"
 #include "freespace/space/free_space.h"
+#include "freespace/topology/shell_euler_characteristic.h"
 
 using namespace freespace;
 
@@ -35,7 +39,27 @@ struct Row {
   double seconds;
 };
 
-Row measure(const std::string& name, const Mesh& robot, const Mesh& world) {
+/// The Euler characteristics of the shells of free cells (each should be even and at
+/// most 2: closed orientable surfaces), as "value x count" pairs, and the time taken.
+void printShellCharacteristics(const FreeSpace& space) {
+  const auto start = std::chrono::steady_clock::now();
+  const Arrangement& arrangement = space.arrangement();
+  const std::vector<long> chi = shellEulerCharacteristics(arrangement, space.algebra());
+  std::set<std::uint32_t> freeShells;
+  for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
+    for (std::uint32_t face = 0; face < arrangement.subdivisions[patch].faceCount; ++face) {
+      if (space.cellOfSubFace({patch, face})) freeShells.insert(arrangement.shells.shellOf({patch, face}));
+    }
+  }
+  std::map<long, int> byCharacteristic;
+  for (std::uint32_t shell : freeShells) byCharacteristic[chi[shell]]++;
+  std::cout << "  shells of free cells by Euler characteristic:";
+  for (const auto& [value, count] : byCharacteristic) std::cout << " " << value << " x" << count;
+  std::cout << " (" << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s)"
+            << std::endl;
+}
+
+Row measure(const std::string& name, const Mesh& robot, const Mesh& world, bool checkShells) {
   const auto start = std::chrono::steady_clock::now();
   const FreeSpace space(robot, world);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -49,6 +73,7 @@ Row measure(const std::string& name, const Mesh& robot, const Mesh& world) {
             << arrangement.vertices.size() << " vertices, " << subFaces << " sub-faces, " << space.shellCount()
             << " shells, " << space.cellCount() << " free cells; peak " << peakMemoryMegabytes() << " MB; double intervals "
             << 100 * space.statistics().doubleIntervalFraction() << "%" << std::endl;
+  if (checkShells) printShellCharacteristics(space);
   return {name, robot.triangles().size(), world.triangles().size(), arrangement.vertices.size() + subFaces, seconds};
 }
 
@@ -123,11 +148,12 @@ NamedScene namedScene(const std::string& name) {
 }
 
 constexpr const char* kUsage =
-    "bench_construction [--rooms MAX] [--mixed-rooms MAX] [--robots ROOMS] [--plot FILE.svg] [SCENE ...]";
+    "bench_construction [--rooms MAX] [--mixed-rooms MAX] [--robots ROOMS] [--plot FILE.svg] [--euler] [SCENE ...]";
 
 int run(int argc, char** argv) {
   unsigned maxRooms = 16, maxMixedRooms = 0, robotsRooms = 0;
   std::string plot;
+  bool checkShells = false;
   std::vector<NamedScene> extra;
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
@@ -139,12 +165,17 @@ int run(int argc, char** argv) {
       robotsRooms = benchmarks::wholeNumber(argument, argv[++i]);
     } else if (argument == "--plot" && i + 1 < argc) {
       plot = argv[++i];
+    } else if (argument == "--euler") {
+      checkShells = true;
     } else {
       benchmarks::rejectOption(argument, kUsage);
       extra.push_back(namedScene(argument));
     }
   }
   std::vector<Row> rows;
+  const auto measure = [&](const std::string& name, const Mesh& robot, const Mesh& world) {
+    return ::measure(name, robot, world, checkShells);
+  };
   for (unsigned rooms = 1; rooms <= maxRooms; rooms *= 2) {
     const Scene scene = makeScene("tetra_floorplan_" + std::to_string(rooms));
     rows.push_back(measure(scene.name, scene.robot, scene.world));
