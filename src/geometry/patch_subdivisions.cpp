@@ -217,15 +217,22 @@ class PatchSweep {
 
  private:
   /// Sorts events counterclockwise from `origin` and merges equal angles.
-  std::vector<EventGroup> groupFrom(const AlgebraicAngle& origin, std::vector<PatchEvent> events) {
-    const auto beforeOrigin = [&](const AlgebraicAngle& angle) { return algebra_.compare(angle, origin) < 0; };
-    std::sort(events.begin(), events.end(), [&](const PatchEvent& a, const PatchEvent& b) {
-      const bool wrapsA = beforeOrigin(a.angle), wrapsB = beforeOrigin(b.angle);
-      if (wrapsA != wrapsB) return wrapsB;
-      return algebra_.compare(a.angle, b.angle) < 0;
+  std::vector<EventGroup> groupFrom(const AlgebraicAngle& origin, const std::vector<PatchEvent>& events) {
+    // Events before the origin come a turn later; each is compared with it once, and
+    // indices are sorted rather than the events.
+    std::vector<bool> wraps(events.size());
+    std::vector<std::size_t> order(events.size());
+    for (std::size_t i = 0; i < events.size(); ++i) {
+      wraps[i] = algebra_.compare(events[i].angle, origin) < 0;
+      order[i] = i;
+    }
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      if (wraps[a] != wraps[b]) return static_cast<bool>(wraps[b]);
+      return algebra_.compare(events[a].angle, events[b].angle) < 0;
     });
     std::vector<EventGroup> groups;
-    for (const PatchEvent& event : events) {
+    for (std::size_t index : order) {
+      const PatchEvent& event = events[index];
       if (groups.empty() || algebra_.compare(groups.back().angle, event.angle) != 0) {
         groups.push_back({event.angle, {}, {}, {}, false, {}});
       }
@@ -247,7 +254,7 @@ class PatchSweep {
     for (const PatchEvent& event : events_) {
       if (algebra_.contains(arc, event.angle)) inside.push_back(event);
     }
-    const std::vector<EventGroup> groups = groupFrom(arc.from, std::move(inside));
+    const std::vector<EventGroup> groups = groupFrom(arc.from, inside);
     const std::size_t first = subdivision_.slabs.size();
     for (std::size_t k = 0; k + 1 < groups.size(); ++k) {
       addSlab(groups[k].angle, groups[k + 1].angle, algebra_.rationalBetween(groups[k].angle, groups[k + 1].angle));
