@@ -439,10 +439,28 @@ RC_GTEST_PROP(AlgebraicAngle, FunctionsWithOneKeyShareTheirRootsByIndex, ()) {
   RC_ASSERT(keyedStatistics.counts(PredicateKind::SignAtRoot).escalatedSeconds == escalated);
 }
 
+/// Whether the root's double-double parameter, if it has one, holds the root: the
+/// exact polynomial has opposite signs at the ends of its part inside the root's
+/// isolating enclosure; and its radius is at most `maxRadius`. Returns whether it had
+/// one.
+bool checkDoubleDoubleParameter(const AngleFunction& function, const AlgebraicAngle& root, double maxRadius) {
+  const std::optional<DoubleDoubleInterval> t = doubleDoubleParameter(root);
+  if (!t) return false;  // a double root, say
+  const Rational middle = Rational(t->high()) + Rational(t->low());
+  const Rational low = std::max(middle - Rational(t->radius()), Rational(root.lower()));
+  const Rational high = std::min(middle + Rational(t->radius()), Rational(root.upper()));
+  RC_ASSERT(low < high);
+  const RationalPolynomial& exact = function.exact(root.chart());
+  const Sign atLow = signAt(exact, low), atHigh = signAt(exact, high);
+  RC_ASSERT(atLow != Sign::Zero);
+  RC_ASSERT(atLow == -atHigh);
+  RC_ASSERT(t->radius() <= maxRadius);
+  return true;
+}
+
 RC_GTEST_PROP(AlgebraicAngle, DoubleDoubleParametersHoldTheRootTightly, ()) {
   // Products of two forms with arbitrary coefficients (quartics, as FFF): each
-  // simple root's parameter, refined in double-doubles, lies between two rationals
-  // where the exact polynomial has opposite signs, at most about 2^-78 apart.
+  // simple root's parameter, refined in double-doubles to about 2^-78.
   const double scale = std::ldexp(1.0, uniform(-20, 21));
   const Form a{scale * uniform(-1000, 1001) / 7.0, scale * uniform(-1000, 1001) / 3.0, scale * uniform(-500, 501) / 11.0};
   const Form b{uniform(-1000, 1001) / 13.0, uniform(-1000, 1001) / 5.0, uniform(-500, 501) / 9.0};
@@ -451,19 +469,27 @@ RC_GTEST_PROP(AlgebraicAngle, DoubleDoubleParametersHoldTheRootTightly, ()) {
   AngleAlgebra algebra(statistics);
   int refined = 0;
   for (const AlgebraicAngle& root : algebra.roots(function, PredicateKind::ThreePatch)) {
-    const std::optional<DoubleDoubleInterval> t = doubleDoubleParameter(root);
-    if (!t) continue;  // a double root, say
-    ++refined;
-    const Rational middle = Rational(t->high()) + Rational(t->low());
-    const Rational low = middle - Rational(t->radius()), high = middle + Rational(t->radius());
-    const RationalPolynomial& exact = function->exact(root.chart());
-    const Sign atLow = signAt(exact, low), atHigh = signAt(exact, high);
-    RC_ASSERT(atLow != Sign::Zero);
-    RC_ASSERT(atLow == -atHigh);
-    RC_ASSERT(Rational(root.lower()) <= low && high <= Rational(root.upper()));
-    RC_ASSERT(t->radius() <= 0x1p-78);
+    refined += checkDoubleDoubleParameter(*function, root, 0x1p-78);
   }
   RC_TAG(refined > 0 ? "refined" : "none refined");
+}
+
+RC_GTEST_PROP(AlgebraicAngle, DoubleDoubleParametersHoldRootsWithANeighbourVeryNear, ()) {
+  // A form times the same form moved by 2^-k (k from 30 to 60) of its constant: roots
+  // in pairs, as close as doubles resolve, where Newton's iteration from the middle
+  // of an enclosure may not settle and the parameter comes from bisection, as narrow
+  // as the product's double-double values allow (never wider than the enclosure).
+  const Form a{uniform(-1000, 1001) / 7.0, uniform(-1000, 1001) / 3.0, uniform(-500, 501) / 11.0};
+  const Form b{a.k1, a.k2, a.k3 + std::ldexp(std::fabs(a.k3) + 1, -uniform(30, 61))};
+  const auto function = productOf({a, b});
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  int refined = 0, roots = 0;
+  for (const AlgebraicAngle& root : algebra.roots(function, PredicateKind::ThreePatch)) {
+    ++roots;
+    refined += checkDoubleDoubleParameter(*function, root, 0.5 * (root.upper() - root.lower()) * (1 + 0x1p-40));
+  }
+  RC_TAG(refined == roots ? "all refined" : "some not refined");
 }
 
 TEST(AlgebraicAngle, DoubleDoubleParametersOfRationalAnglesAreExact) {

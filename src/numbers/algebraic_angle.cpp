@@ -683,6 +683,31 @@ std::optional<DoubleDoubleInterval> newtonInDoubleDoubles(const AlgebraicAngle& 
   return std::nullopt;
 }
 
+/// Bisection in double-doubles of the angle's enclosure, for roots where Newton's
+/// iteration cannot run (the derivative's sign is not certain: another root lies
+/// near): halves while the sign at the middle is certain, to about 2^-100 at most.
+std::optional<DoubleDoubleInterval> bisectInDoubleDoubles(const AlgebraicAngle& angle) {
+  constexpr int kBisections = 120;
+  constexpr double kWidth = 0x1p-100;
+  const Polynomial<DoubleDoubleInterval>& p = angle.function()->doubleDouble(angle.chart());
+  NearestRoundingScope rounding;
+  DoubleDoubleInterval low(angle.lower()), high(angle.upper());
+  const std::optional<Sign> atLow = certainSign(p.evaluate(low)), atHigh = certainSign(p.evaluate(high));
+  if (!atLow || !atHigh || *atLow == Sign::Zero || *atLow != -*atHigh) return std::nullopt;
+  for (int step = 0; step < kBisections; ++step) {
+    const DoubleDoubleInterval width = high - low;
+    if (width.high() + width.radius() <= kWidth) break;
+    const DoubleDoubleInterval middle = ((low + high) * DoubleDoubleInterval(0.5)).midpoint();
+    const std::optional<Sign> sign = certainSign(p.evaluate(middle));
+    if (!sign) break;
+    if (*sign == Sign::Zero) return middle;
+    (*sign == *atLow ? low : high) = middle;
+  }
+  // The root lies in [low, high]: their middle, widened by half their distance.
+  const DoubleDoubleInterval width = high - low;
+  return ((low + high) * DoubleDoubleInterval(0.5)).widened(0.5 * (std::fabs(width.high()) + std::fabs(width.low()) + width.radius()));
+}
+
 }  // namespace
 
 std::optional<DoubleDoubleInterval> doubleDoubleParameter(const AlgebraicAngle& angle) {
@@ -695,6 +720,7 @@ std::optional<DoubleDoubleInterval> doubleDoubleParameter(const AlgebraicAngle& 
     if (const DoubleDoubleInterval* known = function.rememberedRoot(angle.chart(), angle.index())) return *known;
   }
   std::optional<DoubleDoubleInterval> root = newtonInDoubleDoubles(angle);
+  if (!root) root = bisectInDoubleDoubles(angle);
   if (root && angle.index() >= 0) function.rememberRoot(angle.chart(), angle.index(), *root);
   return root;
 }
