@@ -75,25 +75,35 @@ std::optional<SubFaceProbe> probeFrom(const PieceMiddle& at, const SliceRays& ra
   return std::nullopt;
 }
 
+/// Where probes are looked for: from middles found in doubles only (cheap, and
+/// enough for most sub-faces), or from those and then from exact middles.
+enum class ProbeSearch { InDoubles, Everywhere };
+
 std::optional<SubFaceProbe> probeInSlab(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
-                                        const PatchSlab& slab, std::size_t gap, ProbeSide side) {
+                                        const PatchSlab& slab, std::size_t gap, ProbeSide side, ProbeSearch search) {
   if (const std::optional<PieceMiddle> middle = middleInDoubles(arrangement, face, slab, gap)) {
     if (auto probe = probeFrom(*middle, rays, face, slab, side, kSmallestInDoubles)) return probe;
   }
+  if (search == ProbeSearch::InDoubles) return std::nullopt;
   return probeFrom(middleExactly(arrangement, face, slab, gap), rays, face, slab, side, kSmallest);
+}
+
+std::optional<SubFaceProbe> probeSubFace(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
+                                         ProbeSide side, ProbeSearch search) {
+  for (const PatchSlab& slab : arrangement.subdivisions[face.patch].slabs) {
+    for (std::size_t gap = 0; gap < slab.faces.size(); ++gap) {
+      if (slab.faces[gap] != face.face) continue;
+      if (auto probe = probeInSlab(arrangement, rays, face, slab, gap, side, search)) return probe;
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace
 
 std::optional<SubFaceProbe> probeSubFace(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
                                          ProbeSide side) {
-  for (const PatchSlab& slab : arrangement.subdivisions[face.patch].slabs) {
-    for (std::size_t gap = 0; gap < slab.faces.size(); ++gap) {
-      if (slab.faces[gap] != face.face) continue;
-      if (auto probe = probeInSlab(arrangement, rays, face, slab, gap, side)) return probe;
-    }
-  }
-  return std::nullopt;
+  return probeSubFace(arrangement, rays, face, side, ProbeSearch::Everywhere);
 }
 
 std::vector<ShellSide> classifyShells(const Arrangement& arrangement, const SliceRays& rays,
@@ -101,16 +111,19 @@ std::vector<ShellSide> classifyShells(const Arrangement& arrangement, const Slic
   const Shells& shells = arrangement.shells;
   std::vector<ShellSide> sides(shells.count(), ShellSide::Open);
   std::vector<bool> decided(shells.count(), false);
-  for (std::uint32_t patch = 0; patch < arrangement.subdivisions.size(); ++patch) {
-    for (std::uint32_t index = 0; index < arrangement.subdivisions[patch].faceCount; ++index) {
-      const SubFaceId face{patch, index};
-      const std::uint32_t shell = shells.shellOf(face);
-      if (decided[shell] || !shells.closed(shell)) continue;
-      cancellation.check();
-      const std::optional<SubFaceProbe> probe = probeSubFace(arrangement, rays, face);
-      if (!probe) continue;
-      sides[shell] = collision.inCollisionAt(probe->pose) ? ShellSide::Blocked : ShellSide::Free;
-      decided[shell] = true;
+  // Every sub-face of a shell is tried in doubles before any is tried exactly.
+  for (const ProbeSearch search : {ProbeSearch::InDoubles, ProbeSearch::Everywhere}) {
+    for (std::uint32_t patch = 0; patch < arrangement.subdivisions.size(); ++patch) {
+      for (std::uint32_t index = 0; index < arrangement.subdivisions[patch].faceCount; ++index) {
+        const SubFaceId face{patch, index};
+        const std::uint32_t shell = shells.shellOf(face);
+        if (decided[shell] || !shells.closed(shell)) continue;
+        cancellation.check();
+        const std::optional<SubFaceProbe> probe = probeSubFace(arrangement, rays, face, ProbeSide::Positive, search);
+        if (!probe) continue;
+        sides[shell] = collision.inCollisionAt(probe->pose) ? ShellSide::Blocked : ShellSide::Free;
+        decided[shell] = true;
+      }
     }
   }
   for (std::uint32_t shell = 0; shell < shells.count(); ++shell) {
