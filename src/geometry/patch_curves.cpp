@@ -207,37 +207,31 @@ PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t
   };
   // A property of the sides' signs can change only where a range ends or a side's
   // SF function vanishes inside both ranges (elsewhere it is false on both sides).
-  const auto breakpointsOf = [&](std::size_t sideCount) {
-    std::vector<AlgebraicAngle> breakpoints;
-    appendArcEnds(a.patch.range, breakpoints);
-    appendArcEnds(b.patch.range, breakpoints);
-    for (std::size_t k = 0; k < sideCount; ++k) {
-      for (const AlgebraicAngle& root : sides[k].roots) {
-        if (inBothRanges(root)) breakpoints.push_back(root);
-      }
+  std::vector<AlgebraicAngle> breakpoints;
+  appendArcEnds(a.patch.range, breakpoints);
+  appendArcEnds(b.patch.range, breakpoints);
+  // Side k: the line of `line` at end `end` of `owner`; false when it vanishes.
+  const auto addSide = [&](int k, const PatchGeometry& line, const PatchGeometry& owner, int end) {
+    sides[k] = sideFunction(line, owner, end, algebra);
+    for (const AlgebraicAngle& root : sides[k].roots) {
+      if (inBothRanges(root)) breakpoints.push_back(root);
     }
-    return breakpoints;
+    return !sides[k].zero;
   };
   const auto opposite = [&](const AlgebraicAngle& angle, std::size_t first) {
     const Sign one = algebra.signAt(*sides[first].function, angle);
     return one != Sign::Zero && algebra.signAt(*sides[first + 1].function, angle) == -one;
   };
-  for (int k = 0; k < 2; ++k) {
-    sides[k] = sideFunction(b, a, k, algebra);
-    if (sides[k].zero) return curve;
-  }
+  if (!addSide(0, b, a, 0) || !addSide(1, b, a, 1)) return curve;
   // First a's ends alone: where they are never on opposite sides of b's line in both
   // ranges, the segments never cross and b's ends need not be looked at (most
   // candidate pairs end here).
-  const AngleSet aAcross = algebra.closureOver(breakpointsOf(2), [&](const AlgebraicAngle& angle) {
+  const AngleSet aAcross = algebra.closureOver(breakpoints, [&](const AlgebraicAngle& angle) {
     return inBothRanges(angle) && opposite(angle, 0);
   });
   if (aAcross.empty()) return curve;
-  for (int k = 2; k < 4; ++k) {
-    sides[k] = sideFunction(a, b, k - 2, algebra);
-    if (sides[k].zero) return curve;
-  }
-  curve.angles = algebra.closureOver(breakpointsOf(4), [&](const AlgebraicAngle& angle) {
+  if (!addSide(2, a, b, 0) || !addSide(3, a, b, 1)) return curve;
+  curve.angles = algebra.closureOver(std::move(breakpoints), [&](const AlgebraicAngle& angle) {
     return inBothRanges(angle) && opposite(angle, 0) && opposite(angle, 2);
   });
   // Each arc end is where one of the four SF functions vanishes or a range ends:
