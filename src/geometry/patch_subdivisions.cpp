@@ -147,7 +147,7 @@ InvolvedBlock involvedBlock(const std::vector<std::uint32_t>& order, const std::
 /// Subdivides one patch from its curves, vertices and overlaps.
 class PatchSweep {
  public:
-  /// With `recordEvents`, keeps the slices at the events (eventSlices).
+  /// With `recordEvents`, keeps the slices at the events (takeEventSlices).
   PatchSweep(std::uint32_t patch, const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
              AngleAlgebra& algebra, bool recordEvents)
       : patch_(patch), patches_(patches), curves_(curves), algebra_(algebra), recordEvents_(recordEvents) {}
@@ -213,7 +213,8 @@ class PatchSweep {
     return finish();
   }
 
-  const std::vector<PatchEventSlice>& eventSlices() const { return eventSlices_; }
+  /// The slices recorded at the events (after run, with `recordEvents`).
+  std::vector<PatchEventSlice> takeEventSlices() { return std::move(eventSlices_); }
 
  private:
   /// Sorts events counterclockwise from `origin` and merges equal angles.
@@ -605,7 +606,7 @@ std::vector<std::vector<PatchEventSlice>> patchEventSlices(const std::vector<Pat
   std::vector<std::vector<PatchEventSlice>> slices;
   for (PatchSweep& sweep : sweepsOf(patches, curves, vertices, overlaps, algebra, true)) {
     sweep.run();
-    slices.push_back(sweep.eventSlices());
+    slices.push_back(sweep.takeEventSlices());
   }
   return slices;
 }

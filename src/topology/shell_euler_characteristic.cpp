@@ -229,24 +229,31 @@ class EulerSweep {
     const auto cover = [&](std::size_t slabIndex, const std::vector<int>& ranks) {
       const PatchSlab& slab = arrangement_.subdivisions[patchIndex].slabs[slabIndex];
       for (std::size_t i = 0; i < slab.curves.size(); ++i) graph.join(curveAtom(slab.curves[i]), rankAtom(patchIndex, ranks[i]));
-      for (std::size_t gap = 0; gap < slab.faces.size(); ++gap) {
-        const int low = gap == 0 ? 0 : ranks[gap - 1], high = gap == ranks.size() ? slice.endRank : ranks[gap];
-        coverRanks(graph, shellOf(patchIndex, slab.faces[gap]), kEventPiece, patchIndex, low, high,
-                   [&](int rank) { return rankAtom(patchIndex, rank); });
-      }
+      std::vector<int> sides{0};
+      sides.insert(sides.end(), ranks.begin(), ranks.end());
+      sides.push_back(slice.endRank);
+      coverGaps(graph, patchIndex, slab, sides, kEventPiece, patchIndex,
+                [&](int rank) { return rankAtom(patchIndex, rank); });
     };
     cover(slice.before, slice.ranksBefore);
     cover(slice.after, slice.ranksAfter);
   }
 
-  /// The points low .. high of a line (ranks, or named points of an edge) and the
-  /// pieces between them.
+  /// Each sub-face of a slab covers the positions along a line (ranks, or named
+  /// points of an edge) from its low side's to its high side's (`sides`: the
+  /// positions of end 0, of the slab's curves in order and of end 1), and the pieces
+  /// between them.
   template <class AtomOf>
-  static void coverRanks(SliceGraph& graph, std::uint32_t shell, std::uint32_t kind, std::uint32_t owner, int low,
-                         int high, const AtomOf& atomOf) {
-    if (low > high) std::swap(low, high);
-    for (int rank = low; rank <= high; ++rank) graph.point(shell, atomOf(rank));
-    for (int rank = low; rank < high; ++rank) graph.piece(shell, kind, owner, static_cast<std::uint32_t>(rank));
+  void coverGaps(SliceGraph& graph, std::uint32_t patchIndex, const PatchSlab& slab, const std::vector<int>& sides,
+                 std::uint32_t kind, std::uint32_t owner, const AtomOf& atomOf) const {
+    for (std::size_t gap = 0; gap < slab.faces.size(); ++gap) {
+      const std::uint32_t shell = shellOf(patchIndex, slab.faces[gap]);
+      const int low = std::min(sides[gap], sides[gap + 1]), high = std::max(sides[gap], sides[gap + 1]);
+      for (int position = low; position <= high; ++position) graph.point(shell, atomOf(position));
+      for (int position = low; position < high; ++position) {
+        graph.piece(shell, kind, owner, static_cast<std::uint32_t>(position));
+      }
+    }
   }
 
   /// A horizontal edge: the segment ends and curves of each side are at named points
@@ -277,10 +284,8 @@ class EulerSweep {
       }
       bounds.push_back(at(gluing::spiralPointOf(patch, 1)));
       graph.join(spiralAtom(patch, 1), edgePointAtom(edgeIndex, bounds.back()));
-      for (std::size_t gap = 0; gap < slab.faces.size(); ++gap) {
-        coverRanks(graph, shellOf(patchIndex, slab.faces[gap]), kEdgePiece, static_cast<std::uint32_t>(edgeIndex),
-                   bounds[gap], bounds[gap + 1], [&](int point) { return edgePointAtom(edgeIndex, point); });
-      }
+      coverGaps(graph, patchIndex, slab, bounds, kEdgePiece, static_cast<std::uint32_t>(edgeIndex),
+                [&](int point) { return edgePointAtom(edgeIndex, point); });
     }
   }
 
