@@ -19,7 +19,6 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -43,16 +42,11 @@ struct Row {
 /// most 2: closed orientable surfaces), as "value x count" pairs, and the time taken.
 void printShellCharacteristics(const FreeSpace& space) {
   const auto start = std::chrono::steady_clock::now();
-  const Arrangement& arrangement = space.arrangement();
-  const std::vector<long> chi = shellEulerCharacteristics(arrangement, space.algebra());
-  std::set<std::uint32_t> freeShells;
-  for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
-    for (std::uint32_t face = 0; face < arrangement.subdivisions[patch].faceCount; ++face) {
-      if (space.cellOfSubFace({patch, face})) freeShells.insert(arrangement.shells.shellOf({patch, face}));
-    }
-  }
+  const std::vector<long> chi = shellEulerCharacteristics(space.arrangement(), space.algebra());
   std::map<long, int> byCharacteristic;
-  for (std::uint32_t shell : freeShells) byCharacteristic[chi[shell]]++;
+  for (std::uint32_t shell = 0; shell < space.shellCount(); ++shell) {
+    if (space.cellOfShell(shell)) byCharacteristic[chi[shell]]++;
+  }
   std::cout << "  shells of free cells by Euler characteristic:";
   for (const auto& [value, count] : byCharacteristic) std::cout << " " << value << " x" << count;
   std::cout << " (" << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s)"

@@ -255,14 +255,9 @@ TEST_P(BundledSceneShells, EveryEdgeOfAFreeCellsShellIsUsedByTwoSides) {
 
 /// The shells bounding each free cell.
 std::map<std::uint32_t, std::set<std::uint32_t>> shellsOfCells(const FreeSpace& space) {
-  const Arrangement& arrangement = space.arrangement();
   std::map<std::uint32_t, std::set<std::uint32_t>> shells;
-  for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
-    for (std::uint32_t face = 0; face < arrangement.subdivisions[patch].faceCount; ++face) {
-      if (const auto cell = space.cellOfSubFace({patch, face})) {
-        shells[*cell].insert(arrangement.shells.shellOf({patch, face}));
-      }
-    }
+  for (std::uint32_t shell = 0; shell < space.shellCount(); ++shell) {
+    if (const auto cell = space.cellOfShell(shell)) shells[*cell].insert(shell);
   }
   return shells;
 }

@@ -91,8 +91,11 @@ std::size_t FreeSpace::freeShellCount() const {
   return static_cast<std::size_t>(std::count(impl_->sides.begin(), impl_->sides.end(), ShellSide::Free));
 }
 const Arrangement& FreeSpace::arrangement() const { return impl_->arrangement; }
+std::optional<std::uint32_t> FreeSpace::cellOfShell(std::uint32_t shell) const {
+  return impl_->cells->cellOfShell(shell);
+}
 std::optional<std::uint32_t> FreeSpace::cellOfSubFace(SubFaceId face) const {
-  return impl_->cells->cellOfShell(impl_->arrangement.shells.shellOf(face));
+  return cellOfShell(impl_->arrangement.shells.shellOf(face));
 }
 AngleAlgebra& FreeSpace::algebra() const { return impl_->algebra; }
 const PerturbedMeshes& FreeSpace::meshes() const { return impl_->meshes; }

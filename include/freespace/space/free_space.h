@@ -76,6 +76,8 @@ class FreeSpace {
   std::size_t shellCount() const;
   std::size_t freeShellCount() const;
   const Arrangement& arrangement() const;
+  /// The free cell a shell bounds (its positive side), if it bounds one.
+  std::optional<std::uint32_t> cellOfShell(std::uint32_t shell) const;
   /// The free cell a sub-face bounds (its positive side), if it bounds one.
   std::optional<std::uint32_t> cellOfSubFace(SubFaceId face) const;
   /// The exact predicates the structure was built with (for reading it further).
