@@ -76,13 +76,16 @@ std::optional<SubFaceProbe> probeFrom(const PieceMiddle& at, const SliceRays& ra
 }
 
 /// Where probes are looked for: from middles found in doubles only (cheap, and
-/// enough for most sub-faces), or from those and then from exact middles.
-enum class ProbeSearch { InDoubles, Everywhere };
+/// enough for most sub-faces), from exact middles only (where those in doubles are
+/// known to fail), or from both in turn.
+enum class ProbeSearch { InDoubles, Exactly, Everywhere };
 
 std::optional<SubFaceProbe> probeInSlab(const Arrangement& arrangement, const SliceRays& rays, SubFaceId face,
                                         const PatchSlab& slab, std::size_t gap, ProbeSide side, ProbeSearch search) {
-  if (const std::optional<PieceMiddle> middle = middleInDoubles(arrangement, face, slab, gap)) {
-    if (auto probe = probeFrom(*middle, rays, face, slab, side, kSmallestInDoubles)) return probe;
+  if (search != ProbeSearch::Exactly) {
+    if (const std::optional<PieceMiddle> middle = middleInDoubles(arrangement, face, slab, gap)) {
+      if (auto probe = probeFrom(*middle, rays, face, slab, side, kSmallestInDoubles)) return probe;
+    }
   }
   if (search == ProbeSearch::InDoubles) return std::nullopt;
   return probeFrom(middleExactly(arrangement, face, slab, gap), rays, face, slab, side, kSmallest);
@@ -111,8 +114,10 @@ std::vector<ShellSide> classifyShells(const Arrangement& arrangement, const Slic
   const Shells& shells = arrangement.shells;
   std::vector<ShellSide> sides(shells.count(), ShellSide::Open);
   std::vector<bool> decided(shells.count(), false);
-  // Every sub-face of a shell is tried in doubles before any is tried exactly.
-  for (const ProbeSearch search : {ProbeSearch::InDoubles, ProbeSearch::Everywhere}) {
+  // Every sub-face of a shell is tried in doubles before any is tried exactly; a
+  // shell left undecided had every sub-face tried in doubles, so the second pass
+  // tries exact middles only.
+  for (const ProbeSearch search : {ProbeSearch::InDoubles, ProbeSearch::Exactly}) {
     for (std::uint32_t patch = 0; patch < arrangement.subdivisions.size(); ++patch) {
       for (std::uint32_t index = 0; index < arrangement.subdivisions[patch].faceCount; ++index) {
         const SubFaceId face{patch, index};
