@@ -6,7 +6,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "freespace/numbers/adaptive_sign.h"
 
@@ -15,6 +14,7 @@ namespace freespace {
 namespace {
 
 constexpr std::uint32_t kNoCurve = UINT32_MAX;
+constexpr std::uint32_t kNoFace = UINT32_MAX;
 
 /// The value of `other`'s line at end k of `patch`'s segment, at the angle with the
 /// given cosine and sine (an SF value, DESIGN.md section 4).
@@ -35,21 +35,27 @@ T crossingOrderValue(const PatchGeometry& patch, const PatchGeometry& g, const P
   return (g0 * h1 - h0 * g1) * g0 * h0;
 }
 
+/// lambda_g in double intervals, with the sign of its denominator V_g(0) - V_g(1).
+struct IntervalLambda {
+  Interval lambda;
+  Sign denominator;
+};
+
 /// lambda_g in double intervals at an angle given by enclosures of its cosine and
 /// sine (inside a RoundingScope); nothing when V_g(0) - V_g(1) may vanish.
-std::optional<Interval> crossingLambda(const PatchGeometry& patch, const PatchGeometry& g, const Interval& cosine,
-                                       const Interval& sine) {
+std::optional<IntervalLambda> crossingLambda(const PatchGeometry& patch, const PatchGeometry& g, const Interval& cosine,
+                                             const Interval& sine) {
   const Interval v0 = lineAtEnd(patch, 0, g, cosine, sine), difference = v0 - lineAtEnd(patch, 1, g, cosine, sine);
   const std::optional<Sign> sign = certainSign(difference);
   if (!sign || *sign == Sign::Zero) return std::nullopt;
-  return v0 / difference;
+  return IntervalLambda{v0 / difference, *sign};
 }
 
 /// sign(lambda_h - lambda_g) when the enclosures are apart; 0 when not known.
-int certainOrder(const std::optional<Interval>& g, const std::optional<Interval>& h) {
+int certainOrder(const std::optional<IntervalLambda>& g, const std::optional<IntervalLambda>& h) {
   if (!g || !h) return 0;
-  if (g->upper() < h->lower()) return 1;
-  if (h->upper() < g->lower()) return -1;
+  if (g->lambda.upper() < h->lambda.lower()) return 1;
+  if (h->lambda.upper() < g->lambda.lower()) return -1;
   return 0;
 }
 
@@ -116,10 +122,43 @@ class UnionFind {
     return x;
   }
   void join(std::uint32_t a, std::uint32_t b) { parent_[find(a)] = find(b); }
+  std::uint32_t size() const { return static_cast<std::uint32_t>(parent_.size()); }
 
  private:
   std::vector<std::uint32_t> parent_;
 };
+
+/// A value per curve for the few curves of a slab or an event, found by binary
+/// search in the sorted curve indices (built per event and per slab, where hash
+/// tables cost more to build than their lookups save).
+template <class T>
+class CurveTable {
+ public:
+  /// `curves` sorted, without repeats.
+  explicit CurveTable(std::vector<std::uint32_t> curves) : curves_(std::move(curves)), values_(curves_.size()) {}
+
+  T& operator[](std::uint32_t curve) { return values_[indexOf(curve)]; }
+  const T& at(std::uint32_t curve) const { return values_[indexOf(curve)]; }
+
+ private:
+  std::size_t indexOf(std::uint32_t curve) const {
+    const auto found = std::lower_bound(curves_.begin(), curves_.end(), curve);
+    if (found == curves_.end() || *found != curve) throw std::logic_error("patchSubdivisions: a curve is not in the table");
+    return static_cast<std::size_t>(found - curves_.begin());
+  }
+
+  std::vector<std::uint32_t> curves_;
+  std::vector<T> values_;
+};
+
+/// The curves of two lists, sorted, without repeats.
+std::vector<std::uint32_t> unionOf(const std::vector<std::uint32_t>& a, const std::vector<std::uint32_t>& b) {
+  std::vector<std::uint32_t> all(a);
+  all.insert(all.end(), b.begin(), b.end());
+  std::sort(all.begin(), all.end());
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  return all;
+}
 
 /// The curves of `order` that an event involves: where they start, how many there
 /// are, and the others in order.
@@ -291,27 +330,33 @@ class PatchSweep {
       if (algebra_.contains(curves_[curve].angles, sample)) slab.curves.push_back(curve);
     }
     // Crossings apart in double intervals are ordered by them, the others exactly.
-    const std::unordered_map<std::uint32_t, std::optional<Interval>> lambda = lambdasAt(sample, slab.curves);
-    std::sort(slab.curves.begin(), slab.curves.end(), [&](std::uint32_t a, std::uint32_t b) {
-      if (const int apart = certainOrder(lambda.at(a), lambda.at(b))) return apart > 0;
-      const Sign order = crossingOrder(patches_[patch_], other(a), other(b), sample, algebra_);
-      if (order == Sign::Zero) fail("two curves cross the segment at one point", sample, {a, b});
+    std::vector<Crossing> crossings = crossingsAt(sample, slab.curves);
+    std::sort(crossings.begin(), crossings.end(), [&](const Crossing& a, const Crossing& b) {
+      if (const int apart = certainOrder(a.lambda, b.lambda)) return apart > 0;
+      const Sign order = crossingOrder(patches_[patch_], other(a.curve), other(b.curve), sample, algebra_);
+      if (order == Sign::Zero) fail("two curves cross the segment at one point", sample, {a.curve, b.curve});
       return order == Sign::Positive;
     });
+    for (std::size_t i = 0; i < crossings.size(); ++i) slab.curves[i] = crossings[i].curve;
     for (std::size_t gap = 0; gap <= slab.curves.size(); ++gap) slab.faces.push_back(trapezoids_.add());
     subdivision_.slabs.push_back(std::move(slab));
   }
 
   const PatchGeometry& other(std::uint32_t curve) const { return patches_[otherPatch(curve)]; }
 
-  /// lambda of each curve's other patch at the angle, in double intervals.
-  std::unordered_map<std::uint32_t, std::optional<Interval>> lambdasAt(const AlgebraicAngle& angle,
-                                                                      const std::vector<std::uint32_t>& curves) const {
-    std::unordered_map<std::uint32_t, std::optional<Interval>> lambda;
+  /// A curve with lambda of its other patch at an angle, in double intervals.
+  struct Crossing {
+    std::uint32_t curve;
+    std::optional<IntervalLambda> lambda;
+  };
+
+  std::vector<Crossing> crossingsAt(const AlgebraicAngle& angle, const std::vector<std::uint32_t>& curves) const {
+    std::vector<Crossing> crossings;
+    crossings.reserve(curves.size());
     RoundingScope rounding;
     const auto [cosine, sine] = cosSinEnclosure(angle);
-    for (std::uint32_t curve : curves) lambda[curve] = crossingLambda(patches_[patch_], other(curve), cosine, sine);
-    return lambda;
+    for (std::uint32_t curve : curves) crossings.push_back({curve, crossingLambda(patches_[patch_], other(curve), cosine, sine)});
+    return crossings;
   }
 
   std::uint32_t otherPatch(std::uint32_t curve) const { return curves_[curve].other(patch_); }
@@ -374,8 +419,8 @@ class PatchSweep {
     }
   }
 
-  void record(std::size_t left, std::size_t right, const AlgebraicAngle& angle,
-              const std::unordered_map<std::uint32_t, int>& rank, int last) {
+  void record(std::size_t left, std::size_t right, const AlgebraicAngle& angle, const CurveTable<int>& rank,
+              int last) {
     PatchEventSlice slice{angle, left, right, {}, {}, last};
     for (std::uint32_t curve : subdivision_.slabs[left].curves) slice.ranksBefore.push_back(rank.at(curve));
     for (std::uint32_t curve : subdivision_.slabs[right].curves) slice.ranksAfter.push_back(rank.at(curve));
@@ -386,72 +431,102 @@ class PatchSweep {
   /// curves of two slabs: 0 for end 0 and the curves that reach it, 1, 2, ... for the
   /// distinct interior points, and one more than the last of them for end 1 and the
   /// curves that reach it. Returns the ranks and the rank of end 1.
-  std::pair<std::unordered_map<std::uint32_t, int>, int> ranksAt(const EventGroup& group, const std::vector<std::uint32_t>& left,
-                                                 const std::vector<std::uint32_t>& right) {
-    std::unordered_map<std::uint32_t, int> rank;
+  std::pair<CurveTable<int>, int> ranksAt(const EventGroup& group, const std::vector<std::uint32_t>& left,
+                                          const std::vector<std::uint32_t>& right) {
+    const std::vector<std::uint32_t> all = unionOf(left, right);
+    CurveTable<int> rank(all);
     std::vector<std::uint32_t> interior, atEnd1;
-    std::unordered_set<std::uint32_t> seen;
-    std::unordered_map<std::uint32_t, PointKey> point;
-    for (const std::vector<std::uint32_t>* curves : {&left, &right}) {
-      for (std::uint32_t curve : *curves) {
-        if (!seen.insert(curve).second) continue;
-        const auto event = std::find(group.curves.begin(), group.curves.end(), curve);
-        const bool involved = event != group.curves.end();
-        const std::array<bool, 2> onSide = involved ? group.curveOnSide[event - group.curves.begin()] : std::array<bool, 2>{};
-        point[curve] = involved ? group.curvePoint[event - group.curves.begin()] : PointKey{};
-        if (onSide[0]) {
-          rank[curve] = 0;
-        } else {
-          (onSide[1] ? atEnd1 : interior).push_back(curve);
-        }
+    std::vector<PointKey> interiorPoint;
+    for (std::uint32_t curve : all) {
+      const auto event = std::find(group.curves.begin(), group.curves.end(), curve);
+      const bool involved = event != group.curves.end();
+      const std::size_t at = static_cast<std::size_t>(event - group.curves.begin());
+      const std::array<bool, 2> onSide = involved ? group.curveOnSide[at] : std::array<bool, 2>{};
+      if (onSide[0]) {
+        rank[curve] = 0;
+      } else if (onSide[1]) {
+        atEnd1.push_back(curve);
+      } else {
+        interior.push_back(curve);
+        interiorPoint.push_back(involved ? group.curvePoint[at] : PointKey{});
       }
     }
-    if (interior.empty()) return finishRanks(rank, interior, atEnd1);
+    if (interior.empty()) return finishRanks(std::move(rank), {}, atEnd1);
+    const InteriorOrder sorted = sortedAlong(group, interior, interiorPoint);
+    return finishRanks(std::move(rank), sorted.curves, atEnd1, sorted.distinctFromPrevious);
+  }
+
+  /// Interior curves by increasing lambda, each marked where its point differs from
+  /// the previous one's.
+  struct InteriorOrder {
+    std::vector<std::uint32_t> curves;
+    std::vector<int> distinctFromPrevious;
+  };
+
+  /// A curve crossing the segment inside at an event: lambda in double intervals,
+  /// the sign of its denominator and its named point.
+  struct InteriorCrossing {
+    Crossing crossing;
+    Sign denominator = Sign::Zero;
+    PointKey point{};
+  };
+
+  InteriorOrder sortedAlong(const EventGroup& group, const std::vector<std::uint32_t>& interior,
+                            const std::vector<PointKey>& points) {
     // Every predicate below is at the event's angle: refined once.
     const AlgebraicAngle at = group.angle.narrowed();
-    const std::unordered_map<std::uint32_t, std::optional<Interval>> lambda = lambdasAt(at, interior);
-    std::unordered_map<std::uint32_t, Sign> denominator;
-    for (std::uint32_t curve : interior) {
-      // A lambda in intervals has a denominator of certain sign, found again here.
-      denominator[curve] = algebra_.signAt(endValueDifference(patches_[patch_], other(curve)), at);
-      if (denominator[curve] == Sign::Zero) fail("a curve's line is parallel to the segment", group.angle, {curve});
+    std::vector<Crossing> lambdas = crossingsAt(at, interior);
+    std::vector<InteriorCrossing> crossings;
+    crossings.reserve(interior.size());
+    for (std::size_t i = 0; i < interior.size(); ++i) {
+      // A lambda in intervals comes with its denominator's sign; else it is found exactly.
+      const Sign denominator = lambdas[i].lambda ? lambdas[i].lambda->denominator
+                                                 : algebra_.signAt(endValueDifference(patches_[patch_], other(interior[i])), at);
+      if (denominator == Sign::Zero) fail("a curve's line is parallel to the segment", group.angle, {interior[i]});
+      crossings.push_back({std::move(lambdas[i]), denominator, points[i]});
     }
     // Exact orders are kept: the sort and the check for equal points below ask for
     // the same pairs again.
     std::map<std::pair<std::uint32_t, std::uint32_t>, int> exactOrder;
     // sign(lambda_h - lambda_g) at the event's angle.
-    const auto order = [&](std::uint32_t g, std::uint32_t h) {
-      if (point[g][0] != kUnnamed && point[g] == point[h]) return 0;
-      if (const int apart = certainOrder(lambda.at(g), lambda.at(h))) return apart;
+    const auto order = [&](const InteriorCrossing& g, const InteriorCrossing& h) {
+      if (g.point[0] != kUnnamed && g.point == h.point) return 0;
+      if (const int apart = certainOrder(g.crossing.lambda, h.crossing.lambda)) return apart;
       // order(h, g) is -order(g, h): the crossing difference changes sign.
-      const bool swapped = h < g;
-      const auto [known, inserted] = exactOrder.try_emplace(swapped ? std::make_pair(h, g) : std::make_pair(g, h), 0);
+      const bool swapped = h.crossing.curve < g.crossing.curve;
+      const InteriorCrossing& first = swapped ? h : g;
+      const InteriorCrossing& second = swapped ? g : h;
+      const auto [known, inserted] = exactOrder.try_emplace({first.crossing.curve, second.crossing.curve}, 0);
       if (inserted) {
-        const auto [first, second] = known->first;
-        const Sign difference = algebra_.signAt(crossingDifference(patches_[patch_], other(first), other(second)), at);
-        known->second = static_cast<int>(difference) * static_cast<int>(denominator[first]) *
-                        static_cast<int>(denominator[second]);
+        const Sign difference = algebra_.signAt(
+            crossingDifference(patches_[patch_], other(first.crossing.curve), other(second.crossing.curve)), at);
+        known->second =
+            static_cast<int>(difference) * static_cast<int>(first.denominator) * static_cast<int>(second.denominator);
       }
       return swapped ? -known->second : known->second;
     };
-    std::sort(interior.begin(), interior.end(), [&](std::uint32_t g, std::uint32_t h) { return order(g, h) > 0; });
-    std::vector<int> distinctFromPrevious(interior.size(), 1);
-    for (std::size_t i = 1; i < interior.size(); ++i) distinctFromPrevious[i] = order(interior[i - 1], interior[i]) != 0;
-    return finishRanks(rank, interior, atEnd1, distinctFromPrevious);
+    std::sort(crossings.begin(), crossings.end(),
+              [&](const InteriorCrossing& g, const InteriorCrossing& h) { return order(g, h) > 0; });
+    InteriorOrder sorted{{}, std::vector<int>(crossings.size(), 1)};
+    for (std::size_t i = 0; i < crossings.size(); ++i) {
+      sorted.curves.push_back(crossings[i].crossing.curve);
+      if (i > 0) sorted.distinctFromPrevious[i] = order(crossings[i - 1], crossings[i]) != 0;
+    }
+    return sorted;
   }
 
   /// Ranks 1, 2, ... for the sorted interior curves (a new rank where a curve's
   /// point differs from the previous one's), one more for those at end 1.
-  static std::pair<std::unordered_map<std::uint32_t, int>, int> finishRanks(
-      std::unordered_map<std::uint32_t, int>& rank, const std::vector<std::uint32_t>& interior,
-      const std::vector<std::uint32_t>& atEnd1, const std::vector<int>& distinctFromPrevious = {}) {
+  static std::pair<CurveTable<int>, int> finishRanks(CurveTable<int> rank, const std::vector<std::uint32_t>& interior,
+                                                     const std::vector<std::uint32_t>& atEnd1,
+                                                     const std::vector<int>& distinctFromPrevious = {}) {
     int next = 0;
     for (std::size_t i = 0; i < interior.size(); ++i) {
       if (i == 0 || distinctFromPrevious[i]) ++next;
       rank[interior[i]] = next;
     }
     for (std::uint32_t curve : atEnd1) rank[curve] = next + 1;
-    return {rank, next + 1};
+    return {std::move(rank), next + 1};
   }
 
   /// Across an overlap: the curves crossing the cut, and those ending at its ends,
@@ -484,13 +559,17 @@ class PatchSweep {
   }
 
   PatchSubdivision finish() {
-    std::unordered_map<std::uint32_t, std::uint32_t> faceOfRoot;
+    // Sub-faces numbered in the order their first trapezoids appear.
+    std::vector<std::uint32_t> faceOfRoot(trapezoids_.size(), kNoFace);
+    std::uint32_t faces = 0;
     for (PatchSlab& slab : subdivision_.slabs) {
       for (std::uint32_t& face : slab.faces) {
-        face = faceOfRoot.emplace(trapezoids_.find(face), static_cast<std::uint32_t>(faceOfRoot.size())).first->second;
+        std::uint32_t& numbered = faceOfRoot[trapezoids_.find(face)];
+        if (numbered == kNoFace) numbered = faces++;
+        face = numbered;
       }
     }
-    subdivision_.faceCount = static_cast<std::uint32_t>(faceOfRoot.size());
+    subdivision_.faceCount = faces;
     return std::move(subdivision_);
   }
 
