@@ -53,48 +53,68 @@ bool before(const std::array<Rational, 2>& a, const std::array<Rational, 2>& b) 
   return a[0] * b[1] - a[1] * b[0] > 0;
 }
 
-/// The same in double intervals; none when not certain.
-std::optional<bool> certainlyBefore(const std::array<Interval, 2>& a, const std::array<Interval, 2>& b) {
-  const auto half = [](const std::array<Interval, 2>& u) -> std::optional<int> {
-    if (u[1].lower() > 0) return 0;
-    if (u[1].upper() < 0) return 1;
-    return std::nullopt;
-  };
-  const std::optional<int> ha = half(a), hb = half(b);
-  if (!ha || !hb) return std::nullopt;
-  if (*ha != *hb) return *ha < *hb;
-  const std::optional<Sign> cross = certainSign(a[0] * b[1] - a[1] * b[0]);
-  if (!cross || *cross == Sign::Zero) return std::nullopt;
-  return *cross == Sign::Positive;
+/// Directions at which a counterclockwise order may start: the order around a
+/// spiral is cyclic, so any start will do, and one that no spoke is near lets
+/// double intervals decide (spokes along the axes are common in floor plans).
+constexpr std::array<std::array<double, 2>, 4> kOrderStarts{{{1, 0}, {0, 1}, {1, 1}, {1, -1}}};
+
+/// The half turn counterclockwise from `start` that holds direction u (0: the
+/// first), when certain in double intervals.
+std::optional<int> halfFrom(const std::array<double, 2>& start, const std::array<Interval, 2>& u) {
+  const std::optional<Sign> side = certainSign(Interval(start[0]) * u[1] - Interval(start[1]) * u[0]);
+  if (!side || *side == Sign::Zero) return std::nullopt;
+  return *side == Sign::Positive ? 0 : 1;
 }
 
-/// Sorts the spokes counterclockwise at a rational angle: in double intervals when
-/// every comparison is certain, exactly otherwise.
+/// The spokes' counterclockwise order from `start` in double intervals (as indices),
+/// when every comparison is certain.
+std::optional<std::vector<std::size_t>> certainOrderFrom(const std::array<double, 2>& start,
+                                                         const std::vector<std::array<Interval, 2>>& directions) {
+  std::vector<int> halves;
+  for (const auto& direction : directions) {
+    const std::optional<int> half = halfFrom(start, direction);
+    if (!half) return std::nullopt;
+    halves.push_back(*half);
+  }
+  // Every pair certain first: a comparison that may be wrong must not reach the sort.
+  std::vector<std::vector<bool>> isBefore(directions.size(), std::vector<bool>(directions.size(), false));
+  for (std::size_t a = 0; a < directions.size(); ++a) {
+    for (std::size_t b = a + 1; b < directions.size(); ++b) {
+      if (halves[a] != halves[b]) {
+        isBefore[a][b] = halves[a] < halves[b];
+      } else {
+        const auto& u = directions[a];
+        const auto& v = directions[b];
+        const std::optional<Sign> cross = certainSign(u[0] * v[1] - u[1] * v[0]);
+        if (!cross || *cross == Sign::Zero) return std::nullopt;
+        isBefore[a][b] = *cross == Sign::Positive;
+      }
+      isBefore[b][a] = !isBefore[a][b];
+    }
+  }
+  std::vector<std::size_t> order(directions.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return isBefore[a][b]; });
+  return order;
+}
+
+/// Sorts the spokes counterclockwise (cyclically) at a rational angle: in double
+/// intervals when every comparison is certain from one of the starts, exactly
+/// otherwise.
 void sortCounterclockwise(std::vector<Spoke>& spokes, const std::vector<PatchGeometry>& patches,
                           const AlgebraicAngle& angle) {
-  if (angle.lower() == angle.upper()) {
+  {
     RoundingScope rounding;
-    Interval cosine, sine;
-    HalfAngle{angle.chart(), angle.lower()}.cosSin(cosine, sine);
+    const auto [cosine, sine] = cosSinEnclosure(angle);
     std::vector<std::array<Interval, 2>> directions;
     for (const Spoke& spoke : spokes) directions.push_back(directionOf(patches[spoke.patch], spoke.end, cosine, sine));
-    // Every pair certain first: a comparison that may be wrong must not reach the sort.
-    bool certain = true;
-    for (std::size_t a = 0; a < spokes.size() && certain; ++a) {
-      for (std::size_t b = a + 1; b < spokes.size() && certain; ++b) {
-        certain = certainlyBefore(directions[a], directions[b]).has_value();
+    for (const auto& start : kOrderStarts) {
+      if (const auto order = certainOrderFrom(start, directions)) {
+        std::vector<Spoke> sorted;
+        for (std::size_t i : *order) sorted.push_back(spokes[i]);
+        spokes = std::move(sorted);
+        return;
       }
-    }
-    if (certain) {
-      std::vector<std::size_t> order(spokes.size());
-      for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-      std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return a != b && *certainlyBefore(directions[a], directions[b]);
-      });
-      std::vector<Spoke> sorted;
-      for (std::size_t i : order) sorted.push_back(spokes[i]);
-      spokes = std::move(sorted);
-      return;
     }
   }
   const auto [cosine, sine] = exactCosSin(angle);
@@ -104,16 +124,12 @@ void sortCounterclockwise(std::vector<Spoke>& spokes, const std::vector<PatchGeo
   for (std::size_t i = 0; i < spokes.size(); ++i) spokes[i] = exact[i].second;
 }
 
-/// One rational angle inside each open arc between consecutive angles of a sorted
-/// list of distinct angles (from each to the next, the last around to the first).
-std::vector<AlgebraicAngle> samplesBetween(const std::vector<AlgebraicAngle>& angles, AngleAlgebra& algebra) {
-  if (angles.empty()) return {AlgebraicAngle::rational(0, 0.0)};
-  if (angles.size() == 1) return {AlgebraicAngle::rational(1 - angles[0].chart(), 0.0)};
-  std::vector<AlgebraicAngle> samples;
-  for (std::size_t i = 0; i < angles.size(); ++i) {
-    samples.push_back(algebra.rationalBetween(angles[i], angles[(i + 1) % angles.size()]));
-  }
-  return samples;
+/// A rational angle inside the open arc from angle `gap` of a sorted list of
+/// distinct angles to the next (the last around to the first).
+AlgebraicAngle sampleInGap(const std::vector<AlgebraicAngle>& angles, std::size_t gap, AngleAlgebra& algebra) {
+  if (angles.empty()) return AlgebraicAngle::rational(0, 0.0);
+  if (angles.size() == 1) return AlgebraicAngle::rational(1 - angles[0].chart(), 0.0);
+  return algebra.rationalBetween(angles[gap], angles[(gap + 1) % angles.size()]);
 }
 
 }  // namespace
@@ -162,9 +178,8 @@ SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
     std::vector<std::uint32_t> aroundPatches;
     for (const auto& [patch, unusedEnd] : around) aroundPatches.push_back(patch);
     const SlabEndOrder order(aroundPatches, subdivisions, algebra);
-    const std::vector<AlgebraicAngle> samples = samplesBetween(order.angles(), algebra);
-    for (std::size_t gap = 0; gap < samples.size(); ++gap) {
-      const AlgebraicAngle& sample = samples[gap];
+    const std::size_t gaps = std::max<std::size_t>(order.angles().size(), 1);
+    for (std::size_t gap = 0; gap < gaps; ++gap) {
       std::vector<Spoke> spokes;
       for (std::size_t i = 0; i < around.size(); ++i) {
         const auto [patch, k] = around[i];
@@ -173,13 +188,19 @@ SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
         const PatchSlab& at = subdivisions[patch].slabs[*slab];
         spokes.push_back({patch, k, k == 0 ? at.faces.front() : at.faces.back()});
       }
-      sortCounterclockwise(spokes, patches, sample);
+      // Sampled only where needed: a lone spoke has no order and glues nothing.
+      std::optional<AlgebraicAngle> sample;
+      const auto sampleHere = [&]() -> const AlgebraicAngle& {
+        if (!sample) sample = sampleInGap(order.angles(), gap, algebra);
+        return *sample;
+      };
+      if (spokes.size() > 1) sortCounterclockwise(spokes, patches, sampleHere());
       // The sector counterclockwise after a spoke: its positive side (right of end
       // 0 -> end 1, PatchSegment) faces it when the spiral is the spoke's end 1.
       gluing::glueAround(
           spokes, [](const Spoke& spoke) { return spoke.end == 1; },
           [](const Spoke& spoke, bool) { return SubFaceId{spoke.patch, spoke.face}; }, GluedEdge::Spiral,
-          [&](const Spoke&, const Spoke&) { return sample; }, glues);
+          [&](const Spoke&, const Spoke&) { return sampleHere(); }, glues);
     }
   }
   return glues.take();
