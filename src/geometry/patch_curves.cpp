@@ -108,26 +108,35 @@ int certainSignOver(const TrigLinear<Interval>& form, const Interval& cosine, co
   return sign ? static_cast<int>(*sign) : 0;
 }
 
+/// The SF forms of a segment pair, which do not depend on the angle: the ends of a
+/// on b's line, then the ends of b on a's line.
+using PairForms = std::array<TrigLinear<Interval>, 4>;
+
+PairForms pairForms(const IntervalPatch& a, const IntervalPatch& b) {
+  return {spiralFacetForm(b.line, a.ends[0]), spiralFacetForm(b.line, a.ends[1]), spiralFacetForm(a.line, b.ends[0]),
+          spiralFacetForm(a.line, b.ends[1])};
+}
+
 /// Whether one segment's ends lie strictly on one side of the other's line at every
 /// angle whose cosine and sine lie in the given intervals.
-bool apartOver(const IntervalPatch& a, const IntervalPatch& b, const Interval& cosine, const Interval& sine) {
-  const auto oneSide = [&](const PatchLine<Interval>& line, const std::array<Spiral<Interval>, 2>& ends) {
-    const int first = certainSignOver(spiralFacetForm(line, ends[0]), cosine, sine);
-    return first != 0 && first == certainSignOver(spiralFacetForm(line, ends[1]), cosine, sine);
+bool apartOver(const PairForms& forms, const Interval& cosine, const Interval& sine) {
+  const auto oneSide = [&](std::size_t first) {
+    const int sign = certainSignOver(forms[first], cosine, sine);
+    return sign != 0 && sign == certainSignOver(forms[first + 1], cosine, sine);
   };
-  return oneSide(b.line, a.ends) || oneSide(a.line, b.ends);
+  return oneSide(0) || oneSide(2);
 }
 
 /// Halvings of a common range of angles where the segments are not found apart over
 /// it: the enclosures over narrower ranges are tighter.
 constexpr int kRangeHalvings = 4;
 
-bool mayCrossOver(const IntervalPatch& a, const IntervalPatch& b, double from, double to, int halvings) {
+bool mayCrossOver(const PairForms& forms, double from, double to, int halvings) {
   const auto [cosine, sine] = detail::cosSinOver(from, to);
-  if (apartOver(a, b, cosine, sine)) return false;
+  if (apartOver(forms, cosine, sine)) return false;
   if (halvings == 0) return true;
   const double middle = from + 0.5 * (to - from);
-  return mayCrossOver(a, b, from, middle, halvings - 1) || mayCrossOver(a, b, middle, to, halvings - 1);
+  return mayCrossOver(forms, from, middle, halvings - 1) || mayCrossOver(forms, middle, to, halvings - 1);
 }
 
 /// False when, at every common angle of the two ranges, both ends of one segment lie
@@ -135,8 +144,11 @@ bool mayCrossOver(const IntervalPatch& a, const IntervalPatch& b, double from, d
 /// (decided in double intervals; true when unsure).
 bool mayCross(const IntervalPatch& a, const IntervalPatch& b) {
   RoundingScope rounding;
-  for (const auto& [from, to] : detail::overlap(a.angles, b.angles)) {
-    if (mayCrossOver(a, b, from, to, kRangeHalvings)) return true;
+  const std::vector<detail::RadianRange> common = detail::overlap(a.angles, b.angles);
+  if (common.empty()) return false;
+  const PairForms forms = pairForms(a, b);
+  for (const auto& [from, to] : common) {
+    if (mayCrossOver(forms, from, to, kRangeHalvings)) return true;
   }
   return false;
 }
@@ -266,6 +278,12 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> candidatePatchPairs(const s
 
 std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra,
                                     const Cancellation& cancellation) {
+  return patchCurves(patches, candidatePatchPairs(patches), algebra, cancellation);
+}
+
+std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches,
+                                    const std::vector<std::pair<std::uint32_t, std::uint32_t>>& candidates,
+                                    AngleAlgebra& algebra, const Cancellation& cancellation) {
   std::vector<IntervalPatch> approximate;
   approximate.reserve(patches.size());
   {
@@ -273,7 +291,7 @@ std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches, A
     for (const PatchGeometry& patch : patches) approximate.push_back(intervalPatch(patch));
   }
   std::vector<PatchCurve> curves;
-  for (const auto& [first, second] : candidatePatchPairs(patches)) {
+  for (const auto& [first, second] : candidates) {
     cancellation.check();
     // Segments sharing an end: their lines always meet there (an identity).
     if (shareAnEnd(patches[first].segment, patches[second].segment)) {
