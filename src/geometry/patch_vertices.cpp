@@ -1,13 +1,11 @@
 #include <algorithm>
 #include <map>
 #include <optional>
-#include <set>
 #include <stdexcept>
 #include <unordered_map>
 
 #include "angle_bounds.h"
 #include "contact_vectors.h"
-#include "freespace/geometry/patch_box_index.h"
 #include "freespace/geometry/patch_vertex.h"
 
 namespace freespace {
@@ -154,24 +152,21 @@ struct CoincidentPair {
 
 /// Contacts with one facet, of two vertices of the other body: they have the same
 /// normal n = R a1 + a2 at every angle, so parallel lines. Only pairs whose patch
-/// boxes meet can overlap (a facet of one body meets most vertices of the other).
-std::vector<CoincidentPair> parallelPairs(const std::vector<PatchGeometry>& patches) {
-  std::vector<std::optional<std::pair<int, std::uint32_t>>> facetOf(patches.size());
-  for (std::uint32_t i = 0; i < patches.size(); ++i) {
+/// boxes meet (the candidates) can overlap (a facet of one body meets most vertices
+/// of the other).
+std::vector<CoincidentPair> parallelPairs(const std::vector<PatchGeometry>& patches,
+                                          const std::vector<std::pair<std::uint32_t, std::uint32_t>>& candidates) {
+  const auto facetOf = [&](std::uint32_t i) -> std::optional<std::pair<int, std::uint32_t>> {
     const Contact& contact = patches[i].patch.contact;
-    if (contact.kind == ContactKind::VertexFacet) facetOf[i] = {0, contact.world};
-    if (contact.kind == ContactKind::FacetVertex) facetOf[i] = {1, contact.robot};
-  }
-  const PatchBoxIndex index(patches);
-  std::set<std::pair<std::uint32_t, std::uint32_t>> meeting;
-  for (const auto& [box, patch] : index.boxes()) {
-    if (!facetOf[patch]) continue;
-    for (std::uint32_t other : index.meeting(box)) {
-      if (patch < other && facetOf[other] == facetOf[patch]) meeting.emplace(patch, other);
-    }
-  }
+    if (contact.kind == ContactKind::VertexFacet) return std::make_pair(0, contact.world);
+    if (contact.kind == ContactKind::FacetVertex) return std::make_pair(1, contact.robot);
+    return std::nullopt;
+  };
   std::vector<CoincidentPair> pairs;
-  for (const auto& [a, b] : meeting) pairs.push_back({a, b, coincidence(patches[a], patches[b])});
+  for (const auto& [a, b] : candidates) {
+    const auto facet = facetOf(a);
+    if (facet && facet == facetOf(b)) pairs.push_back({a, b, coincidence(patches[a], patches[b])});
+  }
   return pairs;
 }
 
@@ -224,7 +219,13 @@ std::vector<CoincidentPair> hingedEdgePairs(const std::vector<PatchGeometry>& pa
 }  // namespace
 
 std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra) {
-  std::vector<CoincidentPair> pairs = parallelPairs(patches);
+  return patchOverlaps(patches, candidatePatchPairs(patches), algebra);
+}
+
+std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patches,
+                                        const std::vector<std::pair<std::uint32_t, std::uint32_t>>& candidates,
+                                        AngleAlgebra& algebra) {
+  std::vector<CoincidentPair> pairs = parallelPairs(patches, candidates);
   const std::vector<CoincidentPair> hinged = hingedEdgePairs(patches);
   pairs.insert(pairs.end(), hinged.begin(), hinged.end());
   std::sort(pairs.begin(), pairs.end(), [](const CoincidentPair& x, const CoincidentPair& y) {

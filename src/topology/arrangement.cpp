@@ -6,8 +6,13 @@ Arrangement buildArrangement(std::vector<PatchGeometry> patches, AngleAlgebra& a
   const Cancellation& cancellation = clock.cancellation();
   Arrangement a;
   a.patches = std::move(patches);
-  a.curves = clock.run("curves", [&] { return patchCurves(a.patches, algebra, cancellation); });
-  a.overlaps = clock.run("overlaps", [&] { return patchOverlaps(a.patches, algebra); });
+  // The pairs of patches whose boxes meet: the only ones that can cross or overlap.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates;
+  a.curves = clock.run("curves", [&] {
+    candidates = candidatePatchPairs(a.patches);
+    return patchCurves(a.patches, candidates, algebra, cancellation);
+  });
+  a.overlaps = clock.run("overlaps", [&] { return patchOverlaps(a.patches, candidates, algebra); });
   a.vertices =
       clock.run("vertices", [&] { return patchVertices(a.patches, a.curves, a.overlaps, algebra, cancellation); });
   a.subdivisions = clock.run("subdivision", [&] {

@@ -67,4 +67,10 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> candidatePatchPairs(const s
 std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra,
                                     const Cancellation& cancellation = {});
 
+/// The same from the candidate pairs (candidatePatchPairs), computed once for the
+/// curves and the overlaps.
+std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches,
+                                    const std::vector<std::pair<std::uint32_t, std::uint32_t>>& candidates,
+                                    AngleAlgebra& algebra, const Cancellation& cancellation = {});
+
 }  // namespace freespace

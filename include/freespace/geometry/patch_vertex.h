@@ -56,6 +56,12 @@ struct PatchOverlap {
 /// u')) . v for a shared environment edge. Sorted by patches, then by angle.
 std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra);
 
+/// The same, with the pairs of patches whose boxes meet given (candidatePatchPairs):
+/// only those can overlap.
+std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patches,
+                                        const std::vector<std::pair<std::uint32_t, std::uint32_t>>& candidates,
+                                        AngleAlgebra& algebra);
+
 /// The FFF polynomial of three patch lines as an angle function: the determinant
 /// det[n_i, w_i] of the lines (threePatchPolynomial), zero where they are concurrent.
 std::shared_ptr<const AngleFunction> threePatchFunction(const ContactPoints& a, const ContactPoints& b,
