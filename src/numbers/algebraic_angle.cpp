@@ -317,20 +317,28 @@ double AlgebraicAngle::radians() const {
   return HalfAngle{chart_, 0.5 * (lower_ + upper_)}.radians();
 }
 
+bool AlgebraicAngle::knowsSignChange(const Polynomial<Interval>& p) {
+  if (signAtLower_ != Sign::Zero) return true;
+  const std::optional<Sign> atLower = certainSign(p.evaluate(Interval(lower_)));
+  const std::optional<Sign> atUpper = certainSign(p.evaluate(Interval(upper_)));
+  // Bisect by sign only across a certain sign change: the enclosure holds one
+  // distinct root, and if p changes sign over it that root is the only change. A
+  // root of even multiplicity is left to the exact level.
+  if (!atLower || !atUpper || *atLower != -*atUpper || *atLower == Sign::Zero) return false;
+  signAtLower_ = *atLower;
+  return true;
+}
+
+const Polynomial<Interval>& AlgebraicAngle::refinedPolynomial() const {
+  return tight_ ? function_->tight(chart_) : function_->approximate(chart_);
+}
+
 bool AlgebraicAngle::refineInDoubles() {
   if (!function_ || !(lower_ < upper_)) return false;
-  const Polynomial<Interval>& p = tight_ ? function_->tight(chart_) : function_->approximate(chart_);
+  const Polynomial<Interval>& p = refinedPolynomial();
   const double width = upper_ - lower_;
   RoundingScope rounding;
-  if (signAtLower_ == Sign::Zero) {
-    const std::optional<Sign> atLower = certainSign(p.evaluate(Interval(lower_)));
-    const std::optional<Sign> atUpper = certainSign(p.evaluate(Interval(upper_)));
-    // Bisect by sign only across a certain sign change: the enclosure holds one
-    // distinct root, and if p changes sign over it that root is the only change. A
-    // root of even multiplicity is left to the exact level.
-    if (!atLower || !atUpper || *atLower != -*atUpper || *atLower == Sign::Zero) return false;
-    signAtLower_ = *atLower;
-  }
+  if (!knowsSignChange(p)) return false;
   for (const double fraction : detail::kSplitFractions) {
     const double point = lower_ + fraction * width;  // rounded upward: still a double
     if (!(point > lower_ && point < upper_)) continue;
@@ -342,7 +350,55 @@ bool AlgebraicAngle::refineInDoubles() {
   return false;
 }
 
+namespace {
+
+/// Newton's iteration in plain doubles (the coefficients' middles) from the middle of
+/// [lower, upper], for a root there; none when it leaves the interval or stalls.
+/// Only a guess: the caller certifies it by signs.
+std::optional<double> newtonGuess(const Polynomial<Interval>& p, double lower, double upper, double tolerance) {
+  constexpr int kSteps = 8;
+  std::vector<double> c;
+  for (const Interval& coefficient : p.coefficients()) c.push_back(0.5 * (coefficient.lower() + coefficient.upper()));
+  double t = 0.5 * (lower + upper);
+  for (int step = 0; step < kSteps; ++step) {
+    double value = 0, slope = 0;
+    for (auto k = c.rbegin(); k != c.rend(); ++k) {
+      slope = slope * t + value;
+      value = value * t + *k;
+    }
+    if (slope == 0 || !std::isfinite(value / slope)) return std::nullopt;
+    const double next = t - value / slope;
+    if (!(next > lower && next < upper)) return std::nullopt;
+    const bool converged = std::fabs(next - t) <= tolerance;
+    t = next;
+    if (converged) return t;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+bool AlgebraicAngle::bracketByNewton(double width) {
+  const Polynomial<Interval>& p = refinedPolynomial();
+  const std::optional<double> guess = newtonGuess(p, lower_, upper_, width / 16);
+  if (!guess) return false;
+  RoundingScope rounding;
+  if (!knowsSignChange(p)) return false;
+  // Certain signs at both ends of a narrow bracket around the guess, opposite as at
+  // the enclosure's ends: the enclosure's one root lies inside the bracket.
+  const double low = std::max(lower_, *guess - 0.25 * width), high = std::min(upper_, *guess + 0.25 * width);
+  const std::optional<Sign> atLow = certainSign(p.evaluate(Interval(low)));
+  const std::optional<Sign> atHigh = certainSign(p.evaluate(Interval(high)));
+  if (atLow != signAtLower_ || atHigh != -signAtLower_) return false;
+  lower_ = low;
+  upper_ = high;
+  return true;
+}
+
 void AlgebraicAngle::refineInDoublesTo(double width) {
+  if (!function_ || !(upper_ - lower_ > width)) return;
+  // One certified Newton bracket usually replaces some forty bisections.
+  bracketByNewton(width);
   while (upper_ - lower_ > width && refineInDoubles()) {
   }
 }

@@ -145,6 +145,15 @@ class AlgebraicAngle {
   AlgebraicAngle narrowed() const;
 
  private:
+  /// The polynomial refinement evaluates: the function's own or tight coefficients.
+  const Polynomial<Interval>& refinedPolynomial() const;
+  /// Whether p's signs at the enclosure's ends are certain and opposite (then kept
+  /// in signAtLower_); inside a RoundingScope.
+  bool knowsSignChange(const Polynomial<Interval>& p);
+  /// Narrows the enclosure to a bracket at most `width` wide around a Newton guess,
+  /// when signs certify it. Returns whether it did.
+  bool bracketByNewton(double width);
+
   std::shared_ptr<const AngleFunction> function_;
   int chart_;
   std::optional<IsolatingInterval> exactRoot_;
