@@ -22,7 +22,11 @@ std::optional<std::size_t> slabIndexAt(const PatchSubdivision& subdivision, cons
 
 const PatchSlab* slabMeeting(const PatchSubdivision& subdivision, const AlgebraicAngle& angle, bool ending,
                              AngleAlgebra& algebra) {
-  for (const PatchSlab& slab : subdivision.slabs) {
+  // Searched from the end the slab is most likely at: horizontal edges are mostly
+  // where a patch's range ends (its last slab) or starts (its first).
+  const std::size_t count = subdivision.slabs.size();
+  for (std::size_t step = 0; step < count; ++step) {
+    const PatchSlab& slab = subdivision.slabs[ending ? count - 1 - step : step];
     if (algebra.compare(slab.from, slab.sample) == 0) continue;  // a whole circle without events
     if (algebra.compare(ending ? slab.to : slab.from, angle) == 0) return &slab;
   }
