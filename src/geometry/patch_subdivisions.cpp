@@ -59,6 +59,25 @@ int certainOrder(const std::optional<IntervalLambda>& g, const std::optional<Int
   return 0;
 }
 
+/// The cosine and sine of an angle in double-double intervals, from its certified
+/// double-double parameter; none when that cannot be certified.
+std::optional<std::pair<DoubleDoubleInterval, DoubleDoubleInterval>> doubleDoubleCosSinOf(const AlgebraicAngle& angle) {
+  const std::optional<DoubleDoubleInterval> t = doubleDoubleParameter(angle);
+  if (!t) return std::nullopt;
+  return doubleDoubleCosSin(*t, angle.chart());
+}
+
+/// sign(lambda_h - lambda_g) in double-double intervals at an angle given by its
+/// cosine and sine there, when certain.
+std::optional<Sign> crossingOrderInDoubleDoubles(const PatchGeometry& patch, const PatchGeometry& g,
+                                                 const PatchGeometry& h,
+                                                 const std::pair<DoubleDoubleInterval, DoubleDoubleInterval>& cosSin) {
+  const NearestRoundingScope rounding;
+  const std::optional<Sign> sign = certainSign(crossingOrderValue(patch, g, h, cosSin.first, cosSin.second));
+  if (!sign || *sign == Sign::Zero) return std::nullopt;
+  return sign;
+}
+
 /// V_g(0) V_h(1) - V_h(0) V_g(1) (see crossingOrderValue) as an angle function:
 /// lambda_h - lambda_g = that / ((V_g(0) - V_g(1)) (V_h(0) - V_h(1))).
 AngleFunction crossingDifference(const PatchGeometry& patch, const PatchGeometry& g, const PatchGeometry& h) {
@@ -435,8 +454,10 @@ class PatchSweep {
                                           const std::vector<std::uint32_t>& right) {
     const std::vector<std::uint32_t> all = unionOf(left, right);
     CurveTable<int> rank(all);
-    std::vector<std::uint32_t> interior, atEnd1;
-    std::vector<PointKey> interiorPoint;
+    CurveTable<std::size_t> placeBefore(all);
+    for (std::size_t i = 0; i < left.size(); ++i) placeBefore[left[i]] = i;
+    std::vector<std::uint32_t> atEnd1;
+    std::vector<InteriorCurve> interior;
     for (std::uint32_t curve : all) {
       const auto event = std::find(group.curves.begin(), group.curves.end(), curve);
       const bool involved = event != group.curves.end();
@@ -446,15 +467,25 @@ class PatchSweep {
         rank[curve] = 0;
       } else if (onSide[1]) {
         atEnd1.push_back(curve);
+      } else if (involved) {
+        interior.push_back({curve, group.curvePoint[at], std::nullopt});
       } else {
-        interior.push_back(curve);
-        interiorPoint.push_back(involved ? group.curvePoint[at] : PointKey{});
+        // Not at the event: in both slabs, in one order (checked by joinAtPoints).
+        interior.push_back({curve, PointKey{}, placeBefore.at(curve)});
       }
     }
     if (interior.empty()) return finishRanks(std::move(rank), {}, atEnd1);
-    const InteriorOrder sorted = sortedAlong(group, interior, interiorPoint);
+    const InteriorOrder sorted = sortedAlong(group, interior);
     return finishRanks(std::move(rank), sorted.curves, atEnd1, sorted.distinctFromPrevious);
   }
+
+  /// A curve crossing the segment inside at an event: its named point when it is at
+  /// the event, its place in the slab before when it is not.
+  struct InteriorCurve {
+    std::uint32_t curve;
+    PointKey point;
+    std::optional<std::size_t> placeBefore;
+  };
 
   /// Interior curves by increasing lambda, each marked where its point differs from
   /// the previous one's.
@@ -463,53 +494,66 @@ class PatchSweep {
     std::vector<int> distinctFromPrevious;
   };
 
-  /// A curve crossing the segment inside at an event: lambda in double intervals,
-  /// the sign of its denominator and its named point.
+  /// An interior curve with lambda in double intervals and the sign of its
+  /// denominator.
   struct InteriorCrossing {
-    Crossing crossing;
+    InteriorCurve curve;
+    std::optional<IntervalLambda> lambda;
     Sign denominator = Sign::Zero;
-    PointKey point{};
   };
 
-  InteriorOrder sortedAlong(const EventGroup& group, const std::vector<std::uint32_t>& interior,
-                            const std::vector<PointKey>& points) {
+  InteriorOrder sortedAlong(const EventGroup& group, const std::vector<InteriorCurve>& interior) {
     // Every predicate below is at the event's angle: refined once.
     const AlgebraicAngle at = group.angle.narrowed();
-    std::vector<Crossing> lambdas = crossingsAt(at, interior);
+    std::vector<std::uint32_t> curves;
+    for (const InteriorCurve& curve : interior) curves.push_back(curve.curve);
+    std::vector<Crossing> lambdas = crossingsAt(at, curves);
     std::vector<InteriorCrossing> crossings;
     crossings.reserve(interior.size());
     for (std::size_t i = 0; i < interior.size(); ++i) {
       // A lambda in intervals comes with its denominator's sign; else it is found exactly.
       const Sign denominator = lambdas[i].lambda ? lambdas[i].lambda->denominator
-                                                 : algebra_.signAt(endValueDifference(patches_[patch_], other(interior[i])), at);
-      if (denominator == Sign::Zero) fail("a curve's line is parallel to the segment", group.angle, {interior[i]});
-      crossings.push_back({std::move(lambdas[i]), denominator, points[i]});
+                                                 : algebra_.signAt(endValueDifference(patches_[patch_], other(curves[i])), at);
+      if (denominator == Sign::Zero) fail("a curve's line is parallel to the segment", group.angle, {curves[i]});
+      crossings.push_back({interior[i], lambdas[i].lambda, denominator});
     }
+    // Crossings too close for double intervals: ordered in double-doubles at the
+    // angle's certified parameter (found once), else exactly.
+    std::optional<std::optional<std::pair<DoubleDoubleInterval, DoubleDoubleInterval>>> cosSinInDoubleDoubles;
+    const auto closeOrder = [&](std::uint32_t g, Sign gDenominator, std::uint32_t h, Sign hDenominator) {
+      if (!cosSinInDoubleDoubles) cosSinInDoubleDoubles = doubleDoubleCosSinOf(at);
+      if (*cosSinInDoubleDoubles) {
+        if (const auto sign = crossingOrderInDoubleDoubles(patches_[patch_], other(g), other(h), **cosSinInDoubleDoubles)) {
+          algebra_.statistics().recordDecision(PredicateKind::CrossingOrder, static_cast<int>(PrecisionLevel::DoubleDouble));
+          return static_cast<int>(*sign);
+        }
+      }
+      const Sign difference = algebra_.signAt(crossingDifference(patches_[patch_], other(g), other(h)), at);
+      return static_cast<int>(difference) * static_cast<int>(gDenominator) * static_cast<int>(hDenominator);
+    };
     // Exact orders are kept: the sort and the check for equal points below ask for
     // the same pairs again.
     std::map<std::pair<std::uint32_t, std::uint32_t>, int> exactOrder;
     // sign(lambda_h - lambda_g) at the event's angle.
     const auto order = [&](const InteriorCrossing& g, const InteriorCrossing& h) {
-      if (g.point[0] != kUnnamed && g.point == h.point) return 0;
-      if (const int apart = certainOrder(g.crossing.lambda, h.crossing.lambda)) return apart;
+      // Two curves not at the event cross the segment apart and keep their order: a
+      // change (or a common point) would be an event of theirs at this angle.
+      if (g.curve.placeBefore && h.curve.placeBefore) return *g.curve.placeBefore < *h.curve.placeBefore ? 1 : -1;
+      if (g.curve.point[0] != kUnnamed && g.curve.point == h.curve.point) return 0;
+      if (const int apart = certainOrder(g.lambda, h.lambda)) return apart;
       // order(h, g) is -order(g, h): the crossing difference changes sign.
-      const bool swapped = h.crossing.curve < g.crossing.curve;
+      const bool swapped = h.curve.curve < g.curve.curve;
       const InteriorCrossing& first = swapped ? h : g;
       const InteriorCrossing& second = swapped ? g : h;
-      const auto [known, inserted] = exactOrder.try_emplace({first.crossing.curve, second.crossing.curve}, 0);
-      if (inserted) {
-        const Sign difference = algebra_.signAt(
-            crossingDifference(patches_[patch_], other(first.crossing.curve), other(second.crossing.curve)), at);
-        known->second =
-            static_cast<int>(difference) * static_cast<int>(first.denominator) * static_cast<int>(second.denominator);
-      }
+      const auto [known, inserted] = exactOrder.try_emplace({first.curve.curve, second.curve.curve}, 0);
+      if (inserted) known->second = closeOrder(first.curve.curve, first.denominator, second.curve.curve, second.denominator);
       return swapped ? -known->second : known->second;
     };
     std::sort(crossings.begin(), crossings.end(),
               [&](const InteriorCrossing& g, const InteriorCrossing& h) { return order(g, h) > 0; });
     InteriorOrder sorted{{}, std::vector<int>(crossings.size(), 1)};
     for (std::size_t i = 0; i < crossings.size(); ++i) {
-      sorted.curves.push_back(crossings[i].crossing.curve);
+      sorted.curves.push_back(crossings[i].curve.curve);
       if (i > 0) sorted.distinctFromPrevious[i] = order(crossings[i - 1], crossings[i]) != 0;
     }
     return sorted;
