@@ -265,6 +265,38 @@ TEST(AlgebraicAngle, NearTiesBeyondDoubleDoublesAreDecidedInMultiprecision) {
   checkNearTie(high, low, PrecisionLevel::Multiprecision);
 }
 
+TEST(AlgebraicAngle, RootsNearAChartEndBeyondDoublesAreIsolatedInDoubleDoubles) {
+  // (t - r)(t - 1/2) in chart 0 with r = -1 + 2^-60, just inside the chart's end:
+  // its value at t = -1 is 1.5 * 2^-60, which double intervals (tight ones too)
+  // cannot tell from zero, so Descartes' rule cannot start in doubles; in
+  // double-double intervals every coefficient is exact. Chart 1 is 1 + t^2, with no
+  // root (positive at both shared ends, as chart 0 is there). Exact coefficients
+  // throw: the roots must be found without them.
+  static constexpr double kOffset = 0x1p-60;
+  const auto nearEnd = std::make_shared<AngleFunction>([](auto type, int chart) {
+    using T = typename decltype(type)::type;
+    if constexpr (std::is_same_v<T, Rational>) throw std::logic_error("exact coefficients asked for");
+    if (chart == 1) return Polynomial<T>({T(1), T(0), T(1)});
+    const T r = T(-1) + T(kOffset);
+    return Polynomial<T>({r * T(0.5), -(r + T(0.5)), T(1)});
+  });
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const std::vector<AlgebraicAngle> roots = algebra.roots(nearEnd, PredicateKind::Other);
+  ASSERT_EQ(roots.size(), 2u);
+  const Rational r = Rational(-1) + Rational(kOffset);
+  for (const auto& [root, expected] : {std::pair{roots[0], r}, std::pair{roots[1], Rational(1, 2)}}) {
+    EXPECT_EQ(root.chart(), 0);
+    EXPECT_LE(Rational(root.lower()), expected);
+    EXPECT_GE(Rational(root.upper()), expected);
+  }
+  EXPECT_LT(roots[0].upper(), roots[1].lower());
+  const auto& decided = statistics.counts(PredicateKind::Other).decided;
+  EXPECT_EQ(decided[static_cast<int>(PrecisionLevel::DoubleInterval)], 1u) << statistics.toText();  // chart 1
+  EXPECT_EQ(decided[static_cast<int>(PrecisionLevel::DoubleDouble)], 1u);  // chart 0
+  EXPECT_EQ(decided[static_cast<int>(PrecisionLevel::Exact)], 0u);
+}
+
 TEST(AlgebraicAngle, RootsApartByAFewUlpsAreToldApartByTightCoefficients) {
   // t - a and t - b with b 64 ulps above a, each coefficient computed as
   // (1000 + a) - 1000: in double intervals about 1e-13 wide, which hides the order;

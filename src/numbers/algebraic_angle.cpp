@@ -100,6 +100,13 @@ std::optional<std::vector<Interval>> chartRootsInDoubles(const Polynomial<Interv
   return detail::isolateRootsInDoubles(p, -1, 1);
 }
 
+/// The same in double-double intervals, for roots that double intervals cannot
+/// isolate (near a chart's end, or too close together).
+std::optional<std::vector<Interval>> chartRootsInDoubleDoubles(const Polynomial<DoubleDoubleInterval>& p) {
+  NearestRoundingScope rounding;
+  return detail::isolateRootsInDoubleDoubles(p, -1, 1);
+}
+
 /// The width in t to which roots are refined when they are isolated.
 constexpr double kNarrowRoot = 0x1p-40;
 
@@ -441,6 +448,11 @@ std::vector<AlgebraicAngle> AngleAlgebra::roots(const std::shared_ptr<const Angl
     }
     const EscalationTimer timer(statistics_, kind);
     if (const auto enclosures = chartRootsInDoubles(function->tight(chart))) {
+      statistics_.recordDecision(kind, kTightLevel);
+      addEnclosures(chart, *enclosures, true);
+      continue;
+    }
+    if (const auto enclosures = chartRootsInDoubleDoubles(function->doubleDouble(chart))) {
       statistics_.recordDecision(kind, kTightLevel);
       addEnclosures(chart, *enclosures, true);
       continue;

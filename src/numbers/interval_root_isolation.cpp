@@ -7,41 +7,42 @@ namespace {
 /// Bisection depth after which doubles give up (roots closer than about 2^-40).
 constexpr int kMaximumDepth = 40;
 
-using IntervalPolynomial = Polynomial<Interval>;
-
-IntervalPolynomial multiply(const IntervalPolynomial& a, const IntervalPolynomial& b) {
-  std::vector<Interval> product(a.size() + b.size() - 1, Interval(0));
+template <class T>
+Polynomial<T> multiply(const Polynomial<T>& a, const Polynomial<T>& b) {
+  std::vector<T> product(a.size() + b.size() - 1, T(0));
   for (std::size_t i = 0; i < a.size(); ++i) {
     for (std::size_t j = 0; j < b.size(); ++j) product[i + j] += a.coefficients()[i] * b.coefficients()[j];
   }
-  return IntervalPolynomial(std::move(product));
+  return Polynomial<T>(std::move(product));
 }
 
 /// (x + 1)^n p((a x + b) / (x + 1)) = sum of c_i (a x + b)^i (x + 1)^(n - i).
-IntervalPolynomial descartesTransform(const IntervalPolynomial& p, double a, double b) {
+template <class T>
+Polynomial<T> descartesTransform(const Polynomial<T>& p, double a, double b) {
   const std::size_t n = p.size() - 1;
-  const IntervalPolynomial numerator({Interval(b), Interval(a)});
-  const IntervalPolynomial denominator({Interval(1), Interval(1)});
-  std::vector<IntervalPolynomial> numeratorPowers{IntervalPolynomial({Interval(1)})};
-  std::vector<IntervalPolynomial> denominatorPowers{IntervalPolynomial({Interval(1)})};
+  const Polynomial<T> numerator({T(b), T(a)});
+  const Polynomial<T> denominator({T(1), T(1)});
+  std::vector<Polynomial<T>> numeratorPowers{Polynomial<T>({T(1)})};
+  std::vector<Polynomial<T>> denominatorPowers{Polynomial<T>({T(1)})};
   for (std::size_t i = 1; i <= n; ++i) {
     numeratorPowers.push_back(multiply(numeratorPowers.back(), numerator));
     denominatorPowers.push_back(multiply(denominatorPowers.back(), denominator));
   }
-  std::vector<Interval> result(n + 1, Interval(0));
+  std::vector<T> result(n + 1, T(0));
   for (std::size_t i = 0; i <= n; ++i) {
-    const IntervalPolynomial term = multiply(numeratorPowers[i], denominatorPowers[n - i]);
+    const Polynomial<T> term = multiply(numeratorPowers[i], denominatorPowers[n - i]);
     for (std::size_t k = 0; k <= n; ++k) result[k] += p.coefficients()[i] * term.coefficients()[k];
   }
-  return IntervalPolynomial(std::move(result));
+  return Polynomial<T>(std::move(result));
 }
 
 /// Sign variations of the coefficients, skipping exact zeros; nothing when a
 /// coefficient's sign is uncertain.
-std::optional<int> signVariations(const IntervalPolynomial& q) {
+template <class T>
+std::optional<int> signVariations(const Polynomial<T>& q) {
   int variations = 0;
   Sign previous = Sign::Zero;
-  for (const Interval& coefficient : q.coefficients()) {
+  for (const T& coefficient : q.coefficients()) {
     const std::optional<Sign> sign = certainSign(coefficient);
     if (!sign) return std::nullopt;
     if (*sign == Sign::Zero) continue;
@@ -51,15 +52,17 @@ std::optional<int> signVariations(const IntervalPolynomial& q) {
   return variations;
 }
 
-std::optional<Sign> nonzeroSignAt(const IntervalPolynomial& p, double t) {
-  const std::optional<Sign> sign = certainSign(p.evaluate(Interval(t)));
+template <class T>
+std::optional<Sign> nonzeroSignAt(const Polynomial<T>& p, double t) {
+  const std::optional<Sign> sign = certainSign(p.evaluate(T(t)));
   if (!sign || *sign == Sign::Zero) return std::nullopt;
   return sign;
 }
 
 /// Appends the enclosures of the roots in (a, b) to `roots`; false when doubles
 /// cannot decide.
-bool isolate(const IntervalPolynomial& p, double a, double b, int depth, std::vector<Interval>& roots) {
+template <class T>
+bool isolate(const Polynomial<T>& p, double a, double b, int depth, std::vector<Interval>& roots) {
   const std::optional<int> variations = signVariations(descartesTransform(p, a, b));
   if (!variations) return false;
   if (*variations == 0) return true;
@@ -75,9 +78,8 @@ bool isolate(const IntervalPolynomial& p, double a, double b, int depth, std::ve
   return isolate(p, a, middle, depth + 1, roots) && isolate(p, middle, b, depth + 1, roots);
 }
 
-}  // namespace
-
-std::optional<std::vector<Interval>> isolateRootsInDoubles(const Polynomial<Interval>& p, double low, double high) {
+template <class T>
+std::optional<std::vector<Interval>> isolateRoots(const Polynomial<T>& p, double low, double high) {
   if (p.size() < 2 || !certainSign(p.coefficients().back()) || *certainSign(p.coefficients().back()) == Sign::Zero) {
     return std::nullopt;  // the degree itself is uncertain
   }
@@ -85,6 +87,17 @@ std::optional<std::vector<Interval>> isolateRootsInDoubles(const Polynomial<Inte
   std::vector<Interval> roots;
   if (!isolate(p, low, high, 0, roots)) return std::nullopt;
   return roots;
+}
+
+}  // namespace
+
+std::optional<std::vector<Interval>> isolateRootsInDoubles(const Polynomial<Interval>& p, double low, double high) {
+  return isolateRoots(p, low, high);
+}
+
+std::optional<std::vector<Interval>> isolateRootsInDoubleDoubles(const Polynomial<DoubleDoubleInterval>& p, double low,
+                                                                 double high) {
+  return isolateRoots(p, low, high);
 }
 
 }  // namespace freespace::detail

@@ -3,6 +3,7 @@
 #include <optional>
 #include <vector>
 
+#include "freespace/numbers/double_double_interval.h"
 #include "freespace/numbers/interval.h"
 #include "freespace/numbers/polynomial.h"
 
@@ -20,5 +21,11 @@ namespace freespace::detail {
 /// cannot decide: an uncertain coefficient sign, p possibly zero at an end or
 /// midpoint, a multiple root, or too deep a bisection. Must run in a RoundingScope.
 std::optional<std::vector<Interval>> isolateRootsInDoubles(const Polynomial<Interval>& p, double low, double high);
+
+/// The same in double-double interval arithmetic (about 106 bits: roots near the
+/// ends of the interval, or coefficients that double intervals blur), with the same
+/// double bisection points; must run in a NearestRoundingScope.
+std::optional<std::vector<Interval>> isolateRootsInDoubleDoubles(const Polynomial<DoubleDoubleInterval>& p, double low,
+                                                                 double high);
 
 }  // namespace freespace::detail
