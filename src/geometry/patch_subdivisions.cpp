@@ -24,15 +24,42 @@ T lineAtEnd(const PatchGeometry& patch, int k, const PatchGeometry& other, const
   return form.s * sine + form.c * cosine + form.k;
 }
 
+/// A patch's two end spirals and an angle's cosine and sine in number type T: what
+/// the values of many lines at the segment's ends share.
+template <class T>
+struct EndsAtAngle {
+  EndsAtAngle(const PatchGeometry& patch, const T& cosine, const T& sine)
+      : ends{spiralOf<T>(patch.ends[0]), spiralOf<T>(patch.ends[1])}, cosine(cosine), sine(sine) {}
+
+  /// V_g(0) and V_g(1): the values of g's line at the two ends.
+  std::array<T, 2> lineValues(const PatchGeometry& g) const {
+    const PatchLine<T> line = lineOf<T>(g.line);
+    std::array<T, 2> values;
+    for (int k = 0; k < 2; ++k) {
+      const TrigLinear<T> form = spiralFacetForm(line, ends[k]);
+      values[k] = form.s * sine + form.c * cosine + form.k;
+    }
+    return values;
+  }
+
+  std::array<Spiral<T>, 2> ends;
+  T cosine, sine;
+};
+
 /// With V_g(k) the value of g's line at end k of the patch, g crosses the segment at
 /// lambda_g = V_g(0) / (V_g(0) - V_g(1)), and V_g(0), V_g(1) have opposite signs, so
 ///   sign(lambda_h - lambda_g) = sign((V_g(0) V_h(1) - V_h(0) V_g(1)) V_g(0) V_h(0)).
 template <class T>
+T crossingOrderValue(const EndsAtAngle<T>& at, const PatchGeometry& g, const PatchGeometry& h) {
+  const auto [g0, g1] = at.lineValues(g);
+  const auto [h0, h1] = at.lineValues(h);
+  return (g0 * h1 - h0 * g1) * g0 * h0;
+}
+
+template <class T>
 T crossingOrderValue(const PatchGeometry& patch, const PatchGeometry& g, const PatchGeometry& h, const T& cosine,
                      const T& sine) {
-  const T g0 = lineAtEnd(patch, 0, g, cosine, sine), g1 = lineAtEnd(patch, 1, g, cosine, sine);
-  const T h0 = lineAtEnd(patch, 0, h, cosine, sine), h1 = lineAtEnd(patch, 1, h, cosine, sine);
-  return (g0 * h1 - h0 * g1) * g0 * h0;
+  return crossingOrderValue(EndsAtAngle<T>(patch, cosine, sine), g, h);
 }
 
 /// lambda_g in double intervals, with the sign of its denominator V_g(0) - V_g(1).
@@ -41,11 +68,11 @@ struct IntervalLambda {
   Sign denominator;
 };
 
-/// lambda_g in double intervals at an angle given by enclosures of its cosine and
-/// sine (inside a RoundingScope); nothing when V_g(0) - V_g(1) may vanish.
-std::optional<IntervalLambda> crossingLambda(const PatchGeometry& patch, const PatchGeometry& g, const Interval& cosine,
-                                             const Interval& sine) {
-  const Interval v0 = lineAtEnd(patch, 0, g, cosine, sine), difference = v0 - lineAtEnd(patch, 1, g, cosine, sine);
+/// lambda_g in double intervals at an angle (inside a RoundingScope); nothing when
+/// V_g(0) - V_g(1) may vanish.
+std::optional<IntervalLambda> crossingLambda(const EndsAtAngle<Interval>& at, const PatchGeometry& g) {
+  const auto [v0, v1] = at.lineValues(g);
+  const Interval difference = v0 - v1;
   const std::optional<Sign> sign = certainSign(difference);
   if (!sign || *sign == Sign::Zero) return std::nullopt;
   return IntervalLambda{v0 / difference, *sign};
@@ -59,21 +86,22 @@ int certainOrder(const std::optional<IntervalLambda>& g, const std::optional<Int
   return 0;
 }
 
-/// The cosine and sine of an angle in double-double intervals, from its certified
-/// double-double parameter; none when that cannot be certified.
-std::optional<std::pair<DoubleDoubleInterval, DoubleDoubleInterval>> doubleDoubleCosSinOf(const AlgebraicAngle& angle) {
+/// The patch's ends at an angle in double-double intervals, from the angle's
+/// certified double-double parameter; none when that cannot be certified.
+std::optional<EndsAtAngle<DoubleDoubleInterval>> endsInDoubleDoubles(const PatchGeometry& patch,
+                                                                     const AlgebraicAngle& angle) {
   const std::optional<DoubleDoubleInterval> t = doubleDoubleParameter(angle);
   if (!t) return std::nullopt;
-  return doubleDoubleCosSin(*t, angle.chart());
+  const auto [cosine, sine] = doubleDoubleCosSin(*t, angle.chart());
+  const NearestRoundingScope rounding;
+  return EndsAtAngle<DoubleDoubleInterval>(patch, cosine, sine);
 }
 
-/// sign(lambda_h - lambda_g) in double-double intervals at an angle given by its
-/// cosine and sine there, when certain.
-std::optional<Sign> crossingOrderInDoubleDoubles(const PatchGeometry& patch, const PatchGeometry& g,
-                                                 const PatchGeometry& h,
-                                                 const std::pair<DoubleDoubleInterval, DoubleDoubleInterval>& cosSin) {
+/// sign(lambda_h - lambda_g) in double-double intervals, when certain.
+std::optional<Sign> crossingOrderInDoubleDoubles(const EndsAtAngle<DoubleDoubleInterval>& at, const PatchGeometry& g,
+                                                 const PatchGeometry& h) {
   const NearestRoundingScope rounding;
-  const std::optional<Sign> sign = certainSign(crossingOrderValue(patch, g, h, cosSin.first, cosSin.second));
+  const std::optional<Sign> sign = certainSign(crossingOrderValue(at, g, h));
   if (!sign || *sign == Sign::Zero) return std::nullopt;
   return sign;
 }
@@ -374,7 +402,8 @@ class PatchSweep {
     crossings.reserve(curves.size());
     RoundingScope rounding;
     const auto [cosine, sine] = cosSinEnclosure(angle);
-    for (std::uint32_t curve : curves) crossings.push_back({curve, crossingLambda(patches_[patch_], other(curve), cosine, sine)});
+    const EndsAtAngle<Interval> ends(patches_[patch_], cosine, sine);
+    for (std::uint32_t curve : curves) crossings.push_back({curve, crossingLambda(ends, other(curve))});
     return crossings;
   }
 
@@ -519,11 +548,11 @@ class PatchSweep {
     }
     // Crossings too close for double intervals: ordered in double-doubles at the
     // angle's certified parameter (found once), else exactly.
-    std::optional<std::optional<std::pair<DoubleDoubleInterval, DoubleDoubleInterval>>> cosSinInDoubleDoubles;
+    std::optional<std::optional<EndsAtAngle<DoubleDoubleInterval>>> endsAtEvent;
     const auto closeOrder = [&](std::uint32_t g, Sign gDenominator, std::uint32_t h, Sign hDenominator) {
-      if (!cosSinInDoubleDoubles) cosSinInDoubleDoubles = doubleDoubleCosSinOf(at);
-      if (*cosSinInDoubleDoubles) {
-        if (const auto sign = crossingOrderInDoubleDoubles(patches_[patch_], other(g), other(h), **cosSinInDoubleDoubles)) {
+      if (!endsAtEvent) endsAtEvent = endsInDoubleDoubles(patches_[patch_], at);
+      if (*endsAtEvent) {
+        if (const auto sign = crossingOrderInDoubleDoubles(**endsAtEvent, other(g), other(h))) {
           algebra_.statistics().recordDecision(PredicateKind::CrossingOrder, static_cast<int>(PrecisionLevel::DoubleDouble));
           return static_cast<int>(*sign);
         }
