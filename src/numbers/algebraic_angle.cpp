@@ -247,6 +247,18 @@ void AngleFunction::rememberRoot(int chart, int index, const DoubleDoubleInterva
   roots[index] = root;
 }
 
+const AngleFunction::NarrowEnclosure* AngleFunction::rememberedEnclosure(int chart, int index) const {
+  const auto& enclosures = narrowEnclosures_[chart];
+  if (index < 0 || static_cast<std::size_t>(index) >= enclosures.size() || !enclosures[index]) return nullptr;
+  return &*enclosures[index];
+}
+
+void AngleFunction::rememberEnclosure(int chart, int index, const NarrowEnclosure& enclosure) const {
+  auto& enclosures = narrowEnclosures_[chart];
+  if (static_cast<std::size_t>(index) >= enclosures.size()) enclosures.resize(index + 1);
+  enclosures[index] = enclosure;
+}
+
 const Polynomial<Interval>& AngleFunction::tight(int chart) const {
   if (!tight_[chart]) {
     std::vector<Interval> coefficients;
@@ -410,6 +422,24 @@ void AlgebraicAngle::refineInDoublesTo(double width) {
   }
 }
 
+void AlgebraicAngle::adoptRememberedEnclosure() {
+  if (!function_ || index_ < 0) return;
+  const AngleFunction::NarrowEnclosure* known = function_->rememberedEnclosure(chart_, index_);
+  if (!known || !(known->upper - known->lower < upper_ - lower_)) return;
+  // A narrower enclosure of the same root: the function's sign at its lower end is
+  // the sign at this one's (both below the root, inside one isolating interval).
+  lower_ = known->lower;
+  upper_ = known->upper;
+  tight_ = tight_ || known->tight;
+}
+
+void AlgebraicAngle::rememberEnclosure() const {
+  if (!function_ || index_ < 0) return;
+  const AngleFunction::NarrowEnclosure* known = function_->rememberedEnclosure(chart_, index_);
+  if (known && !(upper_ - lower_ < known->upper - known->lower)) return;
+  function_->rememberEnclosure(chart_, index_, {lower_, upper_, tight_});
+}
+
 AlgebraicAngle AlgebraicAngle::narrowed() const {
   constexpr double kNarrowEnough = 0x1p-40;
   AlgebraicAngle copy = *this;
@@ -542,9 +572,13 @@ int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
     if (known != knownOrders_.end()) return known->second.order;
   }
   AlgebraicAngle first = a, second = b;
+  first.adoptRememberedEnclosure();
+  second.adoptRememberedEnclosure();
   std::optional<int> order = compareInDoubles(first, second);
   if (order) record(PredicateKind::RootOrder, kDoubleLevel, signOf(*order));
   if (!order) order = compareTightly(first, second);
+  first.rememberEnclosure();
+  second.rememberEnclosure();
   if (!order) order = compareInDoubleDoubles(first, second);
   if (!order) order = comparePrecisely(first, second);
   if (!order) order = compareEscalated(first, second);
@@ -826,6 +860,8 @@ AlgebraicAngle AngleAlgebra::rationalBetween(const AlgebraicAngle& from, const A
   const int order = compare(from, to);
   if (order == 0) throw std::invalid_argument("rationalBetween: the two angles are equal");
   AlgebraicAngle narrowFrom = from, narrowTo = to;
+  narrowFrom.adoptRememberedEnclosure();
+  narrowTo.adoptRememberedEnclosure();
   const auto between = [&] { return betweenInDoubles(narrowFrom, narrowTo, order > 0); };
   if (auto inside = refineBothUntil(narrowFrom, narrowTo, between)) return *inside;
   if (narrowFrom.useTightCoefficients() | narrowTo.useTightCoefficients()) {

@@ -67,6 +67,16 @@ class AngleFunction {
   const DoubleDoubleInterval* rememberedRoot(int chart, int index) const;
   void rememberRoot(int chart, int index, const DoubleDoubleInterval& root) const;
 
+  /// The narrowest double enclosure found so far of the chart's root with the given
+  /// index, and whether the tight coefficients were in use (rememberEnclosure): a
+  /// comparison that had to refine a root lets the next one start there.
+  struct NarrowEnclosure {
+    double lower, upper;
+    bool tight;
+  };
+  const NarrowEnclosure* rememberedEnclosure(int chart, int index) const;
+  void rememberEnclosure(int chart, int index, const NarrowEnclosure& enclosure) const;
+
  private:
   /// The formula in the number types past double intervals, kept once.
   struct Evaluator {
@@ -95,6 +105,7 @@ class AngleFunction {
   mutable std::array<std::optional<RationalPolynomial>, 2> exact_;
   mutable std::array<std::optional<RationalPolynomial>, 2> squareFree_;
   mutable std::array<std::vector<std::optional<DoubleDoubleInterval>>, 2> doubleDoubleRoots_;
+  mutable std::array<std::vector<std::optional<NarrowEnclosure>>, 2> narrowEnclosures_;
 };
 
 /// An angle that is a root of an AngleFunction (or a rational angle, a HalfAngle):
@@ -139,6 +150,11 @@ class AlgebraicAngle {
   /// From now on refines with the function's tight coefficients. Returns false when
   /// there is nothing to tighten (a rational angle, or already tight).
   bool useTightCoefficients();
+  /// Takes the narrowest enclosure its function remembers for this root, when
+  /// narrower than its own.
+  void adoptRememberedEnclosure();
+  /// Gives its enclosure to its function to remember, when narrower than what it has.
+  void rememberEnclosure() const;
   /// A copy refined in doubles as far as they go (with tight coefficients when the
   /// function's own leave it wider than 2^-40): for many predicates at one angle,
   /// which then start from a narrow enclosure.
