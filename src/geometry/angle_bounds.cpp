@@ -13,6 +13,28 @@ constexpr double kAnglePadding = 1e-9;
 
 }  // namespace
 
+bool signPatternMayHold(const std::vector<TrigLinear<Interval>>& forms, const std::vector<Sign>& pattern) {
+  constexpr int kRanges = 32;
+  // The ranges' cosine and sine enclosures, computed once.
+  static const std::vector<std::pair<Interval, Interval>> cosSinOfRanges = [] {
+    RoundingScope rounding;
+    std::vector<std::pair<Interval, Interval>> enclosures;
+    for (int i = 0; i < kRanges; ++i) {
+      enclosures.push_back(cosSinOver(-M_PI + 2 * M_PI * i / kRanges, std::min(M_PI, -M_PI + 2 * M_PI * (i + 1) / kRanges)));
+    }
+    return enclosures;
+  }();
+  RoundingScope rounding;
+  return std::any_of(cosSinOfRanges.begin(), cosSinOfRanges.end(), [&](const auto& cosSin) {
+    const auto& [cosine, sine] = cosSin;
+    for (std::size_t k = 0; k < forms.size(); ++k) {
+      const std::optional<Sign> sign = certainSign(forms[k].s * sine + forms[k].c * cosine + forms[k].k);
+      if (sign && *sign != pattern[k]) return false;
+    }
+    return true;
+  });
+}
+
 std::vector<RadianRange> radianRanges(const AngleSet& set) {
   if (set.fullCircle) return {{-M_PI, M_PI}};
   std::vector<RadianRange> ranges;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "freespace/numbers/algebraic_angle.h"
+#include "freespace/numbers/angle_polynomial.h"
 #include "freespace/numbers/interval.h"
 
 namespace freespace::detail {
@@ -30,6 +31,12 @@ inline std::pair<Interval, Interval> cosSinOver(double from, double to) {
   }
   return {Interval(cosLow - kPadding, cosHigh + kPadding), Interval(sinLow - kPadding, sinHigh + kPadding)};
 }
+
+/// Whether the trig-linear forms may have the signs `pattern` (Positive or Negative,
+/// one per form) together, strictly, at some angle: false only when on each of 32
+/// ranges that cover the circle some form has the opposite sign or zero for
+/// certain (double intervals). Then the closure of the set where they do is empty.
+bool signPatternMayHold(const std::vector<TrigLinear<Interval>>& forms, const std::vector<Sign>& pattern);
 
 /// Ranges in radians that contain the angle set: each arc from the lower end of its
 /// first angle's enclosure to the upper end of its last's (theta grows with t in

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <array>
 
+#include "angle_bounds.h"
 #include "contact_vectors.h"
 #include "freespace/geometry/patch.h"
 
@@ -52,17 +53,35 @@ std::pair<double, double> heightRange(const Mesh& mesh, const MeshEdge& edge) {
 /// and v the environment edge, or (R u) . n with u the robot edge and n an
 /// environment face normal. Coordinates are copied: the function outlives the
 /// meshes in the patches' angles.
+template <class T>
+TrigLinear<T> wedgeForm(const std::array<Point3, 2>& robotEdge, const std::array<Point3, 2>& worldEdge, bool robotNormal,
+                        const detail::Corners& face) {
+  const auto u = detail::difference(detail::pointOf<T>(robotEdge[1]), detail::pointOf<T>(robotEdge[0]));
+  const auto v = detail::difference(detail::pointOf<T>(worldEdge[1]), detail::pointOf<T>(worldEdge[0]));
+  return robotNormal ? rotatedDot(detail::normalOf<T>(face), v) : rotatedDot(u, detail::normalOf<T>(face));
+}
+
 std::shared_ptr<const AngleFunction> wedgeCondition(const std::array<Point3, 2>& robotEdge,
                                                     const std::array<Point3, 2>& worldEdge, bool robotNormal,
                                                     const detail::Corners& face, AngleFunction::RootKey key) {
   return std::make_shared<AngleFunction>([robotEdge, worldEdge, robotNormal, face](auto type, int chart) {
     using T = typename decltype(type)::type;
-    const auto u = detail::difference(detail::pointOf<T>(robotEdge[1]), detail::pointOf<T>(robotEdge[0]));
-    const auto v = detail::difference(detail::pointOf<T>(worldEdge[1]), detail::pointOf<T>(worldEdge[0]));
-    const TrigLinear<T> form =
-        robotNormal ? rotatedDot(detail::normalOf<T>(face), v) : rotatedDot(u, detail::normalOf<T>(face));
-    return tangentPolynomial(form, chart);
+    return tangentPolynomial(wedgeForm<T>(robotEdge, worldEdge, robotNormal, face), chart);
   }, key);
+}
+
+/// Whether one of the two sign patterns of the wedge conditions may hold somewhere
+/// (decided in double intervals over ranges of angles; true when unsure).
+bool mayTouch(const std::array<Point3, 2>& robotEnds, const std::array<Point3, 2>& worldEnds,
+              const std::array<detail::Corners, 4>& faces, const std::vector<Sign>& pattern) {
+  std::vector<TrigLinear<Interval>> forms;
+  {
+    RoundingScope rounding;
+    for (int k = 0; k < 4; ++k) forms.push_back(wedgeForm<Interval>(robotEnds, worldEnds, k < 2, faces[k]));
+  }
+  std::vector<Sign> opposite;
+  for (Sign sign : pattern) opposite.push_back(-sign);
+  return detail::signPatternMayHold(forms, pattern) || detail::signPatternMayHold(forms, opposite);
 }
 
 std::array<Point3, 2> endsOf(const Mesh& mesh, const MeshEdge& edge) {
@@ -87,6 +106,9 @@ std::vector<Patch> edgeEdgePatches(const Mesh& robot, const MeshTopology& robotT
       const auto robotEnds = endsOf(robot, robotEdge), worldEnds = endsOf(world, worldEdge);
       const std::array<detail::Corners, 4> faces{detail::cornersOf(robot, a.faces[0]), detail::cornersOf(robot, a.faces[1]),
                                                  detail::cornersOf(world, b.faces[0]), detail::cornersOf(world, b.faces[1])};
+      // Side +1 needs the signs (+, -, +, -), side -1 the opposite ones.
+      const std::vector<Sign> pattern{Sign::Positive, Sign::Negative, Sign::Positive, Sign::Negative};
+      if (!mayTouch(robotEnds, worldEnds, faces, pattern)) continue;
       // (R m) . v is the EF function of the environment edge and a robot face,
       // (R u) . n that of the robot edge and an environment face.
       const std::array<AngleFunction::RootKey, 4> keys{
@@ -94,14 +116,12 @@ std::vector<Patch> edgeEdgePatches(const Mesh& robot, const MeshTopology& robotT
           detail::edgeFacetKey(false, worldEdge.from, worldEdge.to, robot.triangles()[a.faces[1]]),
           detail::edgeFacetKey(true, robotEdge.from, robotEdge.to, world.triangles()[b.faces[0]]),
           detail::edgeFacetKey(true, robotEdge.from, robotEdge.to, world.triangles()[b.faces[1]])};
-      // Side +1 needs the signs (+, -, +, -), side -1 the opposite ones.
       const std::vector<std::shared_ptr<const AngleFunction>> conditions{
           wedgeCondition(robotEnds, worldEnds, true, faces[0], keys[0]),
           wedgeCondition(robotEnds, worldEnds, true, faces[1], keys[1]),
           wedgeCondition(robotEnds, worldEnds, false, faces[2], keys[2]),
           wedgeCondition(robotEnds, worldEnds, false, faces[3], keys[3])};
-      std::array<AngleSet, 2> ranges = algebra.signPatternSets(
-          conditions, {Sign::Positive, Sign::Negative, Sign::Positive, Sign::Negative}, PredicateKind::EdgeFacet);
+      std::array<AngleSet, 2> ranges = algebra.signPatternSets(conditions, pattern, PredicateKind::EdgeFacet);
       for (int which = 0; which < 2; ++which) {
         if (ranges[which].empty()) continue;
         patches.push_back({Contact{ContactKind::EdgeEdge, a.edge, b.edge, which == 0 ? 1 : -1}, std::move(ranges[which])});

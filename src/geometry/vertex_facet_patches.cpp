@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <array>
 
+#include "angle_bounds.h"
 #include "contact_vectors.h"
 #include "freespace/geometry/patch.h"
 
@@ -18,14 +19,19 @@ using detail::rotatedDot;
 /// m and an environment edge v. Coordinates are copied: the function outlives the
 /// meshes in the patches' angles. `key` names the edge and the facet (see
 /// detail::edgeFacetKey).
+template <class T>
+TrigLinear<T> edgeOutOfFacetForm(ContactKind kind, const Point3& vertex, const Point3& other,
+                                 const detail::Corners& facet) {
+  const auto edge = difference(pointOf<T>(other), pointOf<T>(vertex));
+  const auto normal = detail::normalOf<T>(facet);
+  return kind == ContactKind::VertexFacet ? rotatedDot(edge, normal) : rotatedDot(normal, edge);
+}
+
 std::shared_ptr<const AngleFunction> edgeOutOfFacet(ContactKind kind, const Point3& vertex, const Point3& other,
                                                     const detail::Corners& facet, AngleFunction::RootKey key) {
   return std::make_shared<AngleFunction>([kind, vertex, other, facet](auto type, int chart) {
     using T = typename decltype(type)::type;
-    const auto edge = difference(pointOf<T>(other), pointOf<T>(vertex));
-    const auto normal = detail::normalOf<T>(facet);
-    return tangentPolynomial(kind == ContactKind::VertexFacet ? rotatedDot(edge, normal) : rotatedDot(normal, edge),
-                             chart);
+    return tangentPolynomial(edgeOutOfFacetForm<T>(kind, vertex, other, facet), chart);
   }, key);
 }
 
@@ -35,6 +41,22 @@ bool strictlyWithinHeights(const Mesh& mesh, std::uint32_t triangle, double z) {
   const double low = std::min({mesh.vertices()[t[0]].z(), mesh.vertices()[t[1]].z(), mesh.vertices()[t[2]].z()});
   const double high = std::max({mesh.vertices()[t[0]].z(), mesh.vertices()[t[1]].z(), mesh.vertices()[t[2]].z()});
   return low < z && z < high;
+}
+
+/// Whether every edge at the vertex may point out of the facet's plane at once at
+/// some angle (decided in double intervals over ranges of angles; true when unsure).
+bool mayBeCompatible(ContactKind kind, const Mesh& vertexMesh, const MeshTopology& vertexTopology, std::uint32_t vertex,
+                     const detail::Corners& facet) {
+  std::vector<TrigLinear<Interval>> forms;
+  {
+    RoundingScope rounding;
+    for (std::uint32_t edge : vertexTopology.vertexEdges(vertex)) {
+      const std::uint32_t other = vertexTopology.otherEnd(edge, vertex);
+      forms.push_back(
+          edgeOutOfFacetForm<Interval>(kind, vertexMesh.vertices()[vertex], vertexMesh.vertices()[other], facet));
+    }
+  }
+  return detail::signPatternMayHold(forms, std::vector<Sign>(forms.size(), Sign::Positive));
 }
 
 /// The patches of one body's pointed vertices against the other body's triangles.
@@ -47,8 +69,9 @@ void addPatches(ContactKind kind, const Mesh& vertexMesh, const MeshTopology& ve
       if (!strictlyWithinHeights(facetMesh, triangle, z)) continue;
       const Contact contact = kind == ContactKind::VertexFacet ? Contact{kind, vertex, triangle}
                                                                : Contact{kind, triangle, vertex};
-      std::vector<std::shared_ptr<const AngleFunction>> conditions;
       const detail::Corners facet = detail::cornersOf(facetMesh, triangle);
+      if (!mayBeCompatible(kind, vertexMesh, vertexTopology, vertex, facet)) continue;
+      std::vector<std::shared_ptr<const AngleFunction>> conditions;
       for (std::uint32_t edge : vertexTopology.vertexEdges(vertex)) {
         const std::uint32_t other = vertexTopology.otherEnd(edge, vertex);
         conditions.push_back(edgeOutOfFacet(kind, vertexMesh.vertices()[vertex], vertexMesh.vertices()[other], facet,

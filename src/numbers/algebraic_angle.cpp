@@ -860,9 +860,11 @@ AlgebraicAngle AngleAlgebra::rationalBetween(const AlgebraicAngle& from, const A
   const int order = compare(from, to);
   if (order == 0) throw std::invalid_argument("rationalBetween: the two angles are equal");
   AlgebraicAngle narrowFrom = from, narrowTo = to;
+  const auto between = [&] { return betweenInDoubles(narrowFrom, narrowTo, order > 0); };
+  if (auto inside = between()) return *inside;
+  // Close angles: refined from the narrowest enclosures known for them.
   narrowFrom.adoptRememberedEnclosure();
   narrowTo.adoptRememberedEnclosure();
-  const auto between = [&] { return betweenInDoubles(narrowFrom, narrowTo, order > 0); };
   if (auto inside = refineBothUntil(narrowFrom, narrowTo, between)) return *inside;
   if (narrowFrom.useTightCoefficients() | narrowTo.useTightCoefficients()) {
     if (auto inside = refineBothUntil(narrowFrom, narrowTo, between)) return *inside;
