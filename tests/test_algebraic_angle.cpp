@@ -291,10 +291,28 @@ TEST(AlgebraicAngle, RootsNearAChartEndBeyondDoublesAreIsolatedInDoubleDoubles) 
     EXPECT_GE(Rational(root.upper()), expected);
   }
   EXPECT_LT(roots[0].upper(), roots[1].lower());
+  // Narrowed in double-doubles too: doubles cannot refine the root next to the end.
+  for (const AlgebraicAngle& root : roots) EXPECT_LE(root.upper() - root.lower(), 0x1p-40);
   const auto& decided = statistics.counts(PredicateKind::Other).decided;
   EXPECT_EQ(decided[static_cast<int>(PrecisionLevel::DoubleInterval)], 1u) << statistics.toText();  // chart 1
   EXPECT_EQ(decided[static_cast<int>(PrecisionLevel::DoubleDouble)], 1u);  // chart 0
   EXPECT_EQ(decided[static_cast<int>(PrecisionLevel::Exact)], 0u);
+}
+
+TEST(AlgebraicAngle, CosSinEnclosuresOfAWideEnclosureHoldTheWholeRange) {
+  // A root known only to lie somewhere in chart 0 (t in [-1, 1], theta in
+  // [-pi/2, pi/2]): cos in [0, 1] and sin in [-1, 1] there, and t^2 is not negative.
+  const auto function = std::make_shared<AngleFunction>([](auto type, int) {
+    using T = typename decltype(type)::type;
+    return Polynomial<T>({T(0), T(1)});
+  });
+  const AlgebraicAngle wide(function, 0, -1.0, 1.0, 0);
+  RoundingScope rounding;
+  const auto [cosine, sine] = cosSinEnclosure(wide);
+  EXPECT_LE(cosine.lower(), 0.0);
+  EXPECT_GE(cosine.upper(), 1.0);
+  EXPECT_LE(sine.lower(), -1.0);
+  EXPECT_GE(sine.upper(), 1.0);
 }
 
 TEST(AlgebraicAngle, RootsApartByAFewUlpsAreToldApartByTightCoefficients) {

@@ -100,15 +100,31 @@ std::optional<std::vector<Interval>> chartRootsInDoubles(const Polynomial<Interv
   return detail::isolateRootsInDoubles(p, -1, 1);
 }
 
-/// The same in double-double intervals, for roots that double intervals cannot
-/// isolate (near a chart's end, or too close together).
-std::optional<std::vector<Interval>> chartRootsInDoubleDoubles(const Polynomial<DoubleDoubleInterval>& p) {
-  NearestRoundingScope rounding;
-  return detail::isolateRootsInDoubleDoubles(p, -1, 1);
-}
-
 /// The width in t to which roots are refined when they are isolated.
 constexpr double kNarrowRoot = 0x1p-40;
+
+/// The same in double-double intervals, for roots that double intervals cannot
+/// isolate (near a chart's end, or too close together); each enclosure bisected in
+/// double-doubles to kNarrowRoot, since the doubles that refine roots later may not
+/// be able to start (an enclosure may be the whole chart).
+std::optional<std::vector<Interval>> chartRootsInDoubleDoubles(const Polynomial<DoubleDoubleInterval>& p) {
+  NearestRoundingScope rounding;
+  std::optional<std::vector<Interval>> enclosures = detail::isolateRootsInDoubleDoubles(p, -1, 1);
+  if (!enclosures) return std::nullopt;
+  const auto signAt = [&p](double t) { return certainSign(p.evaluate(DoubleDoubleInterval(t))); };
+  for (Interval& enclosure : *enclosures) {
+    double low = enclosure.lower(), high = enclosure.upper();
+    const std::optional<Sign> atLow = signAt(low);  // certain and not zero: isolated so
+    while (high - low > kNarrowRoot) {
+      const double middle = 0.5 * (low + high);
+      const std::optional<Sign> atMiddle = signAt(middle);
+      if (!(middle > low && middle < high) || !atMiddle || *atMiddle == Sign::Zero) break;
+      (*atMiddle == *atLow ? low : high) = middle;
+    }
+    enclosure = Interval(low, high);
+  }
+  return enclosures;
+}
 
 /// The angle's exact isolating interval in the form the exact functions require:
 /// an endpoint where the function vanishes (possible for enclosures found in
@@ -834,6 +850,18 @@ std::pair<DoubleDoubleInterval, DoubleDoubleInterval> doubleDoubleCosSin(const D
   return {chartSign * (DoubleDoubleInterval(1.0) - t * t) / w, chartSign * (t + t) / w};
 }
 
+namespace {
+
+/// t^2 as an interval of non-negative numbers (t * t, for an interval t holding 0,
+/// would take its ends as independent and reach below 0).
+Interval squareOf(const Interval& t) {
+  if (t.lower() >= 0 || t.upper() <= 0) return t * t;
+  const double reach = std::max(-t.lower(), t.upper());
+  return Interval(0, (Interval(reach) * Interval(reach)).upper());
+}
+
+}  // namespace
+
 std::pair<Interval, Interval> cosSinEnclosure(const AlgebraicAngle& angle) {
   Interval cosine, sine;
   if (angle.lower() == angle.upper()) {
@@ -843,9 +871,9 @@ std::pair<Interval, Interval> cosSinEnclosure(const AlgebraicAngle& angle) {
     cosine = enclosingInterval(c);
     sine = enclosingInterval(s);
   } else {
-    const Interval t(angle.lower(), angle.upper()), w = Interval(1) + t * t;
+    const Interval t(angle.lower(), angle.upper()), square = squareOf(t), w = Interval(1) + square;
     const Interval chartSign(angle.chart() == 0 ? 1.0 : -1.0);
-    cosine = chartSign * (Interval(1) - t * t) / w;
+    cosine = chartSign * (Interval(1) - square) / w;
     sine = chartSign * (t + t) / w;
   }
   return {cosine, sine};
