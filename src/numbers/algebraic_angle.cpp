@@ -252,27 +252,19 @@ const Polynomial<DoubleDoubleInterval>& AngleFunction::doubleDouble(int chart) c
 }
 
 const DoubleDoubleInterval* AngleFunction::rememberedRoot(int chart, int index) const {
-  const auto& roots = doubleDoubleRoots_[chart];
-  if (index < 0 || static_cast<std::size_t>(index) >= roots.size() || !roots[index]) return nullptr;
-  return &*roots[index];
+  return doubleDoubleRoots_.find(chart, index);
 }
 
 void AngleFunction::rememberRoot(int chart, int index, const DoubleDoubleInterval& root) const {
-  auto& roots = doubleDoubleRoots_[chart];
-  if (static_cast<std::size_t>(index) >= roots.size()) roots.resize(index + 1);
-  roots[index] = root;
+  doubleDoubleRoots_.remember(chart, index, root);
 }
 
 const AngleFunction::NarrowEnclosure* AngleFunction::rememberedEnclosure(int chart, int index) const {
-  const auto& enclosures = narrowEnclosures_[chart];
-  if (index < 0 || static_cast<std::size_t>(index) >= enclosures.size() || !enclosures[index]) return nullptr;
-  return &*enclosures[index];
+  return narrowEnclosures_.find(chart, index);
 }
 
 void AngleFunction::rememberEnclosure(int chart, int index, const NarrowEnclosure& enclosure) const {
-  auto& enclosures = narrowEnclosures_[chart];
-  if (static_cast<std::size_t>(index) >= enclosures.size()) enclosures.resize(index + 1);
-  enclosures[index] = enclosure;
+  narrowEnclosures_.remember(chart, index, enclosure);
 }
 
 const Polynomial<Interval>& AngleFunction::tight(int chart) const {

@@ -20,6 +20,30 @@
 
 namespace freespace {
 
+namespace detail {
+
+/// A value kept for some roots of a function, by chart and by the root's index
+/// there.
+template <class T>
+class RootMemo {
+ public:
+  const T* find(int chart, int index) const {
+    const auto& values = values_[chart];
+    if (index < 0 || static_cast<std::size_t>(index) >= values.size() || !values[index]) return nullptr;
+    return &*values[index];
+  }
+  void remember(int chart, int index, const T& value) {
+    auto& values = values_[chart];
+    if (static_cast<std::size_t>(index) >= values.size()) values.resize(index + 1);
+    values[index] = value;
+  }
+
+ private:
+  std::array<std::vector<std::optional<T>>, 2> values_;
+};
+
+}  // namespace detail
+
 /// A function of the angle theta given in each chart (HalfAngle) by a polynomial in
 /// the tangent parameter t whose sign is the function's sign. It keeps double
 /// interval coefficients for filtering; the first time they are needed it computes
@@ -104,8 +128,8 @@ class AngleFunction {
   mutable std::array<std::optional<Polynomial<PreciseInterval>>, 2> precise_;
   mutable std::array<std::optional<RationalPolynomial>, 2> exact_;
   mutable std::array<std::optional<RationalPolynomial>, 2> squareFree_;
-  mutable std::array<std::vector<std::optional<DoubleDoubleInterval>>, 2> doubleDoubleRoots_;
-  mutable std::array<std::vector<std::optional<NarrowEnclosure>>, 2> narrowEnclosures_;
+  mutable detail::RootMemo<DoubleDoubleInterval> doubleDoubleRoots_;
+  mutable detail::RootMemo<NarrowEnclosure> narrowEnclosures_;
 };
 
 /// An angle that is a root of an AngleFunction (or a rational angle, a HalfAngle):
