@@ -28,7 +28,7 @@ bool signPatternMayHold(const std::vector<TrigLinear<Interval>>& forms, const st
   return std::any_of(cosSinOfRanges.begin(), cosSinOfRanges.end(), [&](const auto& cosSin) {
     const auto& [cosine, sine] = cosSin;
     for (std::size_t k = 0; k < forms.size(); ++k) {
-      const std::optional<Sign> sign = certainSign(forms[k].s * sine + forms[k].c * cosine + forms[k].k);
+      const std::optional<Sign> sign = certainSign(valueAt(forms[k], cosine, sine));
       if (sign && *sign != pattern[k]) return false;
     }
     return true;

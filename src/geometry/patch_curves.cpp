@@ -104,7 +104,7 @@ IntervalPatch intervalPatch(const PatchGeometry& patch) {
 
 /// The sign of the form over the angles, when certain; else zero.
 int certainSignOver(const TrigLinear<Interval>& form, const Interval& cosine, const Interval& sine) {
-  const std::optional<Sign> sign = certainSign(form.s * sine + form.c * cosine + form.k);
+  const std::optional<Sign> sign = certainSign(valueAt(form, cosine, sine));
   return sign ? static_cast<int>(*sign) : 0;
 }
 

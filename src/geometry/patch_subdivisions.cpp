@@ -20,8 +20,7 @@ constexpr std::uint32_t kNoFace = UINT32_MAX;
 /// given cosine and sine (an SF value, DESIGN.md section 4).
 template <class T>
 T lineAtEnd(const PatchGeometry& patch, int k, const PatchGeometry& other, const T& cosine, const T& sine) {
-  const TrigLinear<T> form = spiralFacetForm(lineOf<T>(other.line), spiralOf<T>(patch.ends[k]));
-  return form.s * sine + form.c * cosine + form.k;
+  return valueAt(spiralFacetForm(lineOf<T>(other.line), spiralOf<T>(patch.ends[k])), cosine, sine);
 }
 
 /// A patch's two end spirals and an angle's cosine and sine in number type T: what
@@ -35,10 +34,7 @@ struct EndsAtAngle {
   std::array<T, 2> lineValues(const PatchGeometry& g) const {
     const PatchLine<T> line = lineOf<T>(g.line);
     std::array<T, 2> values;
-    for (int k = 0; k < 2; ++k) {
-      const TrigLinear<T> form = spiralFacetForm(line, ends[k]);
-      values[k] = form.s * sine + form.c * cosine + form.k;
-    }
+    for (int k = 0; k < 2; ++k) values[k] = valueAt(spiralFacetForm(line, ends[k]), cosine, sine);
     return values;
   }
 

@@ -1,20 +1,13 @@
 #include "interval_root_isolation.h"
 
+#include "freespace/numbers/angle_polynomial.h"
+
 namespace freespace::detail {
 
 namespace {
 
-/// Bisection depth after which doubles give up (roots closer than about 2^-40).
+/// Bisection depth after which the isolation gives up (roots closer than about 2^-40).
 constexpr int kMaximumDepth = 40;
-
-template <class T>
-Polynomial<T> multiply(const Polynomial<T>& a, const Polynomial<T>& b) {
-  std::vector<T> product(a.size() + b.size() - 1, T(0));
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    for (std::size_t j = 0; j < b.size(); ++j) product[i + j] += a.coefficients()[i] * b.coefficients()[j];
-  }
-  return Polynomial<T>(std::move(product));
-}
 
 /// (x + 1)^n p((a x + b) / (x + 1)) = sum of c_i (a x + b)^i (x + 1)^(n - i).
 template <class T>
@@ -25,12 +18,12 @@ Polynomial<T> descartesTransform(const Polynomial<T>& p, double a, double b) {
   std::vector<Polynomial<T>> numeratorPowers{Polynomial<T>({T(1)})};
   std::vector<Polynomial<T>> denominatorPowers{Polynomial<T>({T(1)})};
   for (std::size_t i = 1; i <= n; ++i) {
-    numeratorPowers.push_back(multiply(numeratorPowers.back(), numerator));
-    denominatorPowers.push_back(multiply(denominatorPowers.back(), denominator));
+    numeratorPowers.push_back(numeratorPowers.back() * numerator);
+    denominatorPowers.push_back(denominatorPowers.back() * denominator);
   }
   std::vector<T> result(n + 1, T(0));
   for (std::size_t i = 0; i <= n; ++i) {
-    const Polynomial<T> term = multiply(numeratorPowers[i], denominatorPowers[n - i]);
+    const Polynomial<T> term = numeratorPowers[i] * denominatorPowers[n - i];
     for (std::size_t k = 0; k <= n; ++k) result[k] += p.coefficients()[i] * term.coefficients()[k];
   }
   return Polynomial<T>(std::move(result));
@@ -59,8 +52,8 @@ std::optional<Sign> nonzeroSignAt(const Polynomial<T>& p, double t) {
   return sign;
 }
 
-/// Appends the enclosures of the roots in (a, b) to `roots`; false when doubles
-/// cannot decide.
+/// Appends the enclosures of the roots in (a, b) to `roots`; false when the interval
+/// arithmetic of T cannot decide.
 template <class T>
 bool isolate(const Polynomial<T>& p, double a, double b, int depth, std::vector<Interval>& roots) {
   const std::optional<int> variations = signVariations(descartesTransform(p, a, b));

@@ -11,6 +11,12 @@ struct TrigLinear {
   T s, c, k;
 };
 
+/// The form's value at an angle given by its cosine and sine.
+template <class T>
+T valueAt(const TrigLinear<T>& form, const T& cosine, const T& sine) {
+  return form.s * sine + form.c * cosine + form.k;
+}
+
 /// The polynomial in the tangent half-angle t of `chart` whose value is
 /// w(t) * form(theta), w = 1 + t^2 > 0 (so its sign is the form's sign):
 ///   chart 0: sin = 2t / w,  cos = (1 - t^2) / w  ->  (k + c) + 2 s t + (k - c) t^2
