@@ -50,6 +50,29 @@ std::string loadError(const std::string& path) {
   return {};
 }
 
+/// The payload with a valid CRC-32 (little-endian, after the 8-byte size).
+std::string withValidChecksum(std::string bytes, std::size_t payloadStart) {
+  boost::crc_32_type crc;
+  crc.process_bytes(bytes.data() + payloadStart, bytes.size() - payloadStart);
+  for (int i = 0; i < 4; ++i) bytes[payloadStart - 4 + i] = static_cast<char>((crc.checksum() >> (8 * i)) & 0xff);
+  return bytes;
+}
+
+std::size_t payloadStartOf(const std::string& bytes) { return bytes.find('\n') + 1 + 12; }  // header line, size, CRC-32
+
+/// The offset of the first 8-byte little-endian length followed by that many
+/// characters of a written rational ("-12/7"), as the saved format stores numbers.
+std::size_t firstNumberLength(const std::string& bytes, std::size_t from) {
+  for (std::size_t at = from; at + 8 < bytes.size(); ++at) {
+    std::uint64_t length = 0;
+    for (int i = 0; i < 8; ++i) length |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+    if (length < 3 || length > 40 || at + 8 + length > bytes.size()) continue;
+    const std::string text = bytes.substr(at + 8, length);
+    if (text.find_first_not_of("-0123456789/") == std::string::npos && text.find('/') != std::string::npos) return at;
+  }
+  return std::string::npos;
+}
+
 }  // namespace
 
 TEST(SavedSpace, LoadedSpaceLocatesAsTheBuiltOne) {
@@ -116,19 +139,15 @@ TEST(SavedSpace, AlteredPayloadsWithAValidChecksumLoadOrFailCleanly) {
   const std::string file = dir.file("space.fspace");
   built.save(file);
   const std::string bytes = contents(file);
-  const std::size_t payloadStart = bytes.find('\n') + 1 + 12;  // header line, size, CRC-32
+  const std::size_t payloadStart = payloadStartOf(bytes);
   std::mt19937 random(17);
   std::uniform_int_distribution<std::size_t> position(payloadStart, bytes.size() - 1);
   int loaded = 0, rejected = 0;
   for (int trial = 0; trial < 40; ++trial) {
     std::string altered = bytes;
     for (int flip = 0; flip < 4; ++flip) altered[position(random)] ^= static_cast<char>(1 + trial % 255);
-    // A valid CRC-32 for the altered payload, little-endian after the size.
-    boost::crc_32_type crc;
-    crc.process_bytes(altered.data() + payloadStart, altered.size() - payloadStart);
-    for (int i = 0; i < 4; ++i) altered[payloadStart - 4 + i] = static_cast<char>((crc.checksum() >> (8 * i)) & 0xff);
     const std::string other = dir.file("altered.fspace");
-    write(other, altered);
+    write(other, withValidChecksum(altered, payloadStart));
     try {
       FreeSpace::load(other);
       ++loaded;
@@ -139,4 +158,26 @@ TEST(SavedSpace, AlteredPayloadsWithAValidChecksumLoadOrFailCleanly) {
   }
   EXPECT_EQ(loaded + rejected, 40);
   std::cout << loaded << " altered files loaded, " << rejected << " rejected\n";
+}
+
+// A number's length altered to 16 GiB (the checksum made valid again) is damage found
+// before any memory is set aside for it: a clear error at once, not a loader that
+// fills the machine's memory.
+TEST(SavedSpace, AHugeTextLengthIsAClearErrorWithoutAllocating) {
+  TempDir dir;
+  const std::string file = dir.file("space.fspace");
+  builtSpace().save(file);
+  const std::string bytes = contents(file);
+  const std::size_t payloadStart = payloadStartOf(bytes);
+  const std::size_t at = firstNumberLength(bytes, payloadStart);
+  ASSERT_NE(at, std::string::npos) << "no written number in the payload";
+  std::string altered = bytes;
+  const std::uint64_t huge = std::uint64_t(1) << 34;
+  for (int i = 0; i < 8; ++i) altered[at + i] = static_cast<char>((huge >> (8 * i)) & 0xff);
+  const std::string other = dir.file("huge.fspace");
+  write(other, withValidChecksum(altered, payloadStart));
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_NE(loadError(other).find("longer than the rest of the file"), std::string::npos);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << "rejected in " << seconds << " s\n";
 }

@@ -5,8 +5,11 @@
 // exact isolating intervals and root indices, so that every predicate on the loaded
 // structure decides as on the built one.
 
-#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_iarchive_impl.hpp>
 #include <boost/archive/binary_oarchive.hpp>
+#include <boost/archive/impl/archive_serializer_map.ipp>
+#include <boost/archive/impl/basic_binary_iarchive.ipp>
+#include <boost/archive/impl/basic_binary_iprimitive.ipp>
 #include <boost/crc.hpp>
 #include <cmath>
 #include <cstring>
@@ -18,6 +21,52 @@
 #include "freespace/input_error.h"
 #include "freespace/io/output_file.h"
 #include "saved_space.h"
+
+namespace freespace {
+
+namespace {
+
+/// Boost's binary input archive (same format), except that a string's length is
+/// checked against the bytes left in the payload before any memory is set aside for
+/// it: a checksum can be valid for altered data, and a damaged length would have the
+/// loader allocate and fill up to the whole memory of the machine.
+class CheckedBinaryIArchive
+    : public boost::archive::binary_iarchive_impl<CheckedBinaryIArchive, char, std::char_traits<char>> {
+  using Base = boost::archive::binary_iarchive_impl<CheckedBinaryIArchive, char, std::char_traits<char>>;
+  friend class boost::archive::detail::interface_iarchive<CheckedBinaryIArchive>;
+  friend class boost::archive::basic_binary_iarchive<CheckedBinaryIArchive>;
+  friend class boost::archive::basic_binary_iprimitive<CheckedBinaryIArchive, char, std::char_traits<char>>;
+  friend class boost::archive::load_access;
+
+ public:
+  explicit CheckedBinaryIArchive(std::istringstream& payload) : Base(payload, 0), payload_(payload) { init(0); }
+
+  using Base::load;
+  void load(std::string& text) {
+    std::size_t length = 0;
+    load(length);
+    if (length > static_cast<std::size_t>(std::max<std::streamsize>(payload_.rdbuf()->in_avail(), 0))) {
+      throw std::out_of_range("a text longer than the rest of the file");
+    }
+    text.resize(length);
+    if (length > 0) load_binary(text.data(), length);
+  }
+
+ private:
+  std::istringstream& payload_;
+};
+
+}  // namespace
+
+}  // namespace freespace
+
+// Vectors of numbers are read as one block, as Boost's binary archive writes them.
+BOOST_SERIALIZATION_USE_ARRAY_OPTIMIZATION(freespace::CheckedBinaryIArchive)
+
+template class boost::archive::basic_binary_iprimitive<freespace::CheckedBinaryIArchive, char, std::char_traits<char>>;
+template class boost::archive::basic_binary_iarchive<freespace::CheckedBinaryIArchive>;
+template class boost::archive::binary_iarchive_impl<freespace::CheckedBinaryIArchive, char, std::char_traits<char>>;
+template class boost::archive::detail::archive_serializer_map<freespace::CheckedBinaryIArchive>;
 
 namespace freespace {
 
@@ -434,7 +483,7 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
   saved::Space space;
   try {
     std::istringstream payloadStream(payload);
-    boost::archive::binary_iarchive archive(payloadStream);
+    CheckedBinaryIArchive archive(payloadStream);
     archive >> space;
   } catch (const std::exception& error) {
     throw InputError(path, std::string("damaged: ") + error.what());
