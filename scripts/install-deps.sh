@@ -14,6 +14,7 @@ packages=(
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev librapidcheck-dev
   libtbb-dev
+  libmimalloc-dev
   python3-matplotlib
 )
 

@@ -1,0 +1,69 @@
+// The global operator new and delete of the project's programs, on mimalloc.
+//
+// Linking mimalloc replaces malloc and free in the whole process; its own operator
+// new, however, aborts the process when a request cannot be met, and it reserves
+// address space for any request however large. A damaged input can ask for a huge
+// buffer (a length read from a corrupted file), and that must end in
+// std::bad_alloc, which the readers turn into a clear error, never in a crash or in
+// the machine running out of memory. These replacements refuse a request larger
+// than the machine's physical memory (as the system's allocator does under Linux's
+// default overcommit rule), allocate the rest with mimalloc, and throw as the
+// standard says.
+#include <mimalloc.h>
+#include <unistd.h>
+
+#include <cstddef>
+#include <new>
+
+namespace {
+
+std::size_t physicalMemory() {
+  const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+  return pages > 0 && pageSize > 0 ? static_cast<std::size_t>(pages) * static_cast<std::size_t>(pageSize)
+                                   : static_cast<std::size_t>(-1);
+}
+
+bool beyondMemory(std::size_t size) {
+  static const std::size_t limit = physicalMemory();
+  return size > limit;
+}
+
+void* allocate(std::size_t size) noexcept { return beyondMemory(size) ? nullptr : mi_new_nothrow(size); }
+
+void* allocate(std::size_t size, std::align_val_t alignment) noexcept {
+  return beyondMemory(size) ? nullptr : mi_new_aligned_nothrow(size, static_cast<std::size_t>(alignment));
+}
+
+void* orBadAlloc(void* memory) {
+  if (memory == nullptr) throw std::bad_alloc();
+  return memory;
+}
+
+}  // namespace
+
+void* operator new(std::size_t size) { return orBadAlloc(allocate(size)); }
+void* operator new[](std::size_t size) { return orBadAlloc(allocate(size)); }
+void* operator new(std::size_t size, std::align_val_t alignment) { return orBadAlloc(allocate(size, alignment)); }
+void* operator new[](std::size_t size, std::align_val_t alignment) { return orBadAlloc(allocate(size, alignment)); }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept { return allocate(size); }
+void* operator new[](std::size_t size, const std::nothrow_t&) noexcept { return allocate(size); }
+void* operator new(std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
+  return allocate(size, alignment);
+}
+void* operator new[](std::size_t size, std::align_val_t alignment, const std::nothrow_t&) noexcept {
+  return allocate(size, alignment);
+}
+
+// mimalloc frees any of its blocks whatever the size or alignment it was asked for.
+void operator delete(void* memory) noexcept { mi_free(memory); }
+void operator delete[](void* memory) noexcept { mi_free(memory); }
+void operator delete(void* memory, std::size_t) noexcept { mi_free(memory); }
+void operator delete[](void* memory, std::size_t) noexcept { mi_free(memory); }
+void operator delete(void* memory, std::align_val_t) noexcept { mi_free(memory); }
+void operator delete[](void* memory, std::align_val_t) noexcept { mi_free(memory); }
+void operator delete(void* memory, std::size_t, std::align_val_t) noexcept { mi_free(memory); }
+void operator delete[](void* memory, std::size_t, std::align_val_t) noexcept { mi_free(memory); }
+void operator delete(void* memory, const std::nothrow_t&) noexcept { mi_free(memory); }
+void operator delete[](void* memory, const std::nothrow_t&) noexcept { mi_free(memory); }
+void operator delete(void* memory, std::align_val_t, const std::nothrow_t&) noexcept { mi_free(memory); }
+void operator delete[](void* memory, std::align_val_t, const std::nothrow_t&) noexcept { mi_free(memory); }
