@@ -315,7 +315,7 @@ AlgebraicAngle::AlgebraicAngle(std::shared_ptr<const AngleFunction> function, in
                                int index)
     : function_(std::move(function)),
       chart_(chart),
-      exactRoot_(root),
+      exactRoot_(std::make_shared<const IsolatingInterval>(root)),
       lower_(lowerDouble(root.lo)),
       upper_(upperDouble(root.hi)),
       index_(index) {}

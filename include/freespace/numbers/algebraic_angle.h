@@ -196,7 +196,9 @@ class AlgebraicAngle {
 
   std::shared_ptr<const AngleFunction> function_;
   int chart_;
-  std::optional<IsolatingInterval> exactRoot_;
+  /// Exact isolating interval, when the root was isolated in rationals (rare: kept
+  /// apart so that copies of the angle stay small).
+  std::shared_ptr<const IsolatingInterval> exactRoot_;
   double lower_, upper_;
   int index_ = -1;
   bool tight_ = false;
