@@ -3,7 +3,7 @@
 // the 14-facet house robot in floor plans of 1, 2, 4, ... rooms up to MAX whose walls have
 // three heights (0.375, 0.75, 1.25: below, between and above the robot's features);
 // with --robots the robots of 4 to 108 facets in one such floor plan; then any
-// scenes named on the command line (generator names or .cfg files). Prints per scene the
+// scenes named on the command line (generator names, house_mixed_N or .cfg files). Prints per scene the
 // time of each stage, the counts (patches, curves, vertices, sub-faces, shells, free
 // cells), the peak memory and the share of predicates decided in double intervals;
 // with --plot FILE.svg also draws the total time against the output size (vertices
@@ -136,6 +136,11 @@ NamedScene namedScene(const std::string& name) {
     benchmarks::requireFiles({name});
     LoadedProblem problem = loadProblem(name);
     return {name.substr(name.find_last_of('/') + 1), std::move(problem.robot), std::move(problem.world)};
+  }
+  const std::string housePrefix = "house_mixed_";
+  if (name.rfind(housePrefix, 0) == 0) {
+    const unsigned rooms = benchmarks::wholeNumber("scene " + name, name.substr(housePrefix.size()));
+    return {name, makeHouseRobot(), mixedHeightFloorPlan(rooms)};
   }
   Scene scene = makeScene(name);
   return {scene.name, std::move(scene.robot), std::move(scene.world)};
