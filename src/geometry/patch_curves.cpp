@@ -141,14 +141,15 @@ bool mayCrossOver(const PairForms& forms, double from, double to, int halvings) 
 
 /// False when, at every common angle of the two ranges, both ends of one segment lie
 /// strictly on one side of the other's line: then the segments never cross
-/// (decided in double intervals; true when unsure).
-bool mayCross(const IntervalPatch& a, const IntervalPatch& b) {
+/// (decided in double intervals; true when unsure). Sets `forms` to the pair's SF
+/// forms when their ranges overlap.
+bool mayCross(const IntervalPatch& a, const IntervalPatch& b, std::optional<PairForms>& forms) {
   RoundingScope rounding;
   const std::vector<detail::RadianRange> common = detail::overlap(a.angles, b.angles);
   if (common.empty()) return false;
-  const PairForms forms = pairForms(a, b);
+  forms = pairForms(a, b);
   for (const auto& [from, to] : common) {
-    if (mayCrossOver(forms, from, to, kRangeHalvings)) return true;
+    if (mayCrossOver(*forms, from, to, kRangeHalvings)) return true;
   }
   return false;
 }
@@ -168,10 +169,11 @@ AngleFunction::RootKey spiralLineKey(const ContactPoints& line, const SegmentEnd
   return {kind, v[0], v[1], v[2], v[3], end.vertex, end.edge[0], end.edge[1], 0};
 }
 
-}  // namespace
-
+/// spiralOnLine, given the SF form in double intervals when the caller has it
+/// (spiralFacetForm of the line's and the spiral's double interval coefficients).
 std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, const SpiralPoints& end,
-                                                  const SegmentEnd& endFeatures) {
+                                                  const SegmentEnd& endFeatures,
+                                                  const std::optional<TrigLinear<Interval>>& approximateForm) {
   const std::optional<AngleFunction::RootKey> edgeFacet = spiralFacetKey(line, endFeatures);
   if (edgeFacet && detail::namesZeroFunction(*edgeFacet)) {
     // Exactly zero, with no arithmetic that could blur it.
@@ -180,10 +182,23 @@ std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, con
       return Polynomial<T>({T(0)});
     }, edgeFacet);
   }
-  return std::make_shared<AngleFunction>([line, end](auto type, int chart) {
+  const auto formula = [line, end](auto type, int chart) {
     using T = typename decltype(type)::type;
     return tangentPolynomial(spiralFacetForm(lineOf<T>(line), spiralOf<T>(end)), chart);
-  }, edgeFacet.value_or(spiralLineKey(line, endFeatures)));
+  };
+  const AngleFunction::RootKey key = edgeFacet.value_or(spiralLineKey(line, endFeatures));
+  if (!approximateForm) return std::make_shared<AngleFunction>(formula, key);
+  RoundingScope rounding;
+  return std::make_shared<AngleFunction>(
+      formula, key,
+      std::array<Polynomial<Interval>, 2>{tangentPolynomial(*approximateForm, 0), tangentPolynomial(*approximateForm, 1)});
+}
+
+}  // namespace
+
+std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, const SpiralPoints& end,
+                                                  const SegmentEnd& endFeatures) {
+  return spiralOnLine(line, end, endFeatures, std::nullopt);
 }
 
 namespace {
@@ -195,9 +210,11 @@ struct SideFunction {
   std::vector<AlgebraicAngle> roots;
 };
 
-/// The line of patch `line` at end k of patch `owner`'s segment.
-SideFunction sideFunction(const PatchGeometry& line, const PatchGeometry& owner, int k, AngleAlgebra& algebra) {
-  SideFunction side{spiralOnLine(line.line, owner.ends[k], owner.segment.ends[k]), false, {}};
+/// The line of patch `line` at end k of patch `owner`'s segment, with its SF form in
+/// double intervals.
+SideFunction sideFunction(const PatchGeometry& line, const PatchGeometry& owner, int k,
+                          const TrigLinear<Interval>& approximateForm, AngleAlgebra& algebra) {
+  SideFunction side{spiralOnLine(line.line, owner.ends[k], owner.segment.ends[k], approximateForm), false, {}};
   side.zero = side.function->isIdenticallyZero();
   if (!side.zero) side.roots = algebra.roots(side.function, PredicateKind::SpiralFacet);
   return side;
@@ -210,7 +227,7 @@ SideFunction sideFunction(const PatchGeometry& line, const PatchGeometry& owner,
 /// segments that share no end. Empty when their lines coincide. Throws
 /// std::logic_error if an arc end has no cause (a bug).
 PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t second, const PatchGeometry& b,
-                      AngleAlgebra& algebra) {
+                      const PairForms& forms, AngleAlgebra& algebra) {
   PatchCurve curve{first, second, {}, {}};
   // The ends of a on b's line, then the ends of b on a's line.
   std::array<SideFunction, 4> sides;
@@ -224,7 +241,7 @@ PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t
   appendArcEnds(b.patch.range, breakpoints);
   // Side k: the line of `line` at end `end` of `owner`; false when it vanishes.
   const auto addSide = [&](int k, const PatchGeometry& line, const PatchGeometry& owner, int end) {
-    sides[k] = sideFunction(line, owner, end, algebra);
+    sides[k] = sideFunction(line, owner, end, forms[k], algebra);
     for (const AlgebraicAngle& root : sides[k].roots) {
       if (inBothRanges(root)) breakpoints.push_back(root);
     }
@@ -298,8 +315,9 @@ std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches,
       AdaptiveSignEngine(algebra.statistics()).knownIdentity(PredicateKind::SpiralFacet);
       continue;
     }
-    if (!mayCross(approximate[first], approximate[second])) continue;
-    PatchCurve curve = patchCurve(first, patches[first], second, patches[second], algebra);
+    std::optional<PairForms> forms;
+    if (!mayCross(approximate[first], approximate[second], forms)) continue;
+    PatchCurve curve = patchCurve(first, patches[first], second, patches[second], *forms, algebra);
     if (!curve.angles.empty()) curves.push_back(std::move(curve));
   }
   return curves;

@@ -69,6 +69,13 @@ class AngleFunction {
     for (int chart = 0; chart < 2; ++chart) approximate_[chart] = formula(NumberType<Interval>{}, chart);
   }
 
+  /// The same with its charts' double interval polynomials given: the caller has
+  /// already evaluated the formula in double intervals (for a filter) and hands the
+  /// result over instead of having it computed again.
+  template <class Formula>
+  AngleFunction(const Formula& formula, std::optional<RootKey> key, std::array<Polynomial<Interval>, 2> approximate)
+      : approximate_(std::move(approximate)), evaluator_(std::make_unique<EvaluatorOf<Formula>>(formula)), key_(key) {}
+
   /// The function with the given exact polynomials of its two charts (as read back
   /// from a saved free space); its double interval coefficients enclose them.
   AngleFunction(std::array<RationalPolynomial, 2> exact, std::optional<RootKey> key);
