@@ -1026,10 +1026,4 @@ std::vector<AngleSet> AngleAlgebra::closuresOver(std::vector<AlgebraicAngle> bre
   return sets;
 }
 
-Sign AngleAlgebra::record(PredicateKind kind, int level, Sign sign) {
-  statistics_.recordDecision(kind, level);
-  if (sign == Sign::Zero) statistics_.recordIdentity(kind);
-  return sign;
-}
-
 }  // namespace freespace

@@ -329,7 +329,11 @@ class AngleAlgebra {
   /// when their signs stay certain.
   std::optional<int> comparePrecisely(const AlgebraicAngle& first, const AlgebraicAngle& second);
   int compareEscalated(const AlgebraicAngle& a, const AlgebraicAngle& b);
-  Sign record(PredicateKind kind, int level, Sign sign);
+  Sign record(PredicateKind kind, int level, Sign sign) {
+    statistics_.recordDecision(kind, level);
+    if (sign == Sign::Zero) statistics_.recordIdentity(kind);
+    return sign;
+  }
 
   /// Two roots, each by its function's address, chart and index there.
   struct RootPair {
