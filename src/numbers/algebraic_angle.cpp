@@ -241,22 +241,28 @@ AngleFunction::AngleFunction(std::array<RationalPolynomial, 2> exact, std::optio
     std::vector<Interval> coefficients;
     for (const Rational& coefficient : exact[chart].coefficients()) coefficients.push_back(enclosingInterval(coefficient));
     approximate_[chart] = Polynomial<Interval>(std::move(coefficients));
-    tight_[chart] = approximate_[chart];  // already as narrow as doubles allow
+    escalation().tight[chart] = approximate_[chart];  // already as narrow as doubles allow
   }
   evaluator_ = std::make_unique<ExactEvaluator>(std::move(exact));
 }
 
+AngleFunction::Escalation& AngleFunction::escalation() const {
+  if (!escalation_) escalation_ = std::make_unique<Escalation>();
+  return *escalation_;
+}
+
 const Polynomial<DoubleDoubleInterval>& AngleFunction::doubleDouble(int chart) const {
-  if (!doubleDouble_[chart]) doubleDouble_[chart] = evaluator_->doubleDouble(chart);
-  return *doubleDouble_[chart];
+  auto& doubleDouble = escalation().doubleDouble[chart];
+  if (!doubleDouble) doubleDouble = evaluator_->doubleDouble(chart);
+  return *doubleDouble;
 }
 
 const DoubleDoubleInterval* AngleFunction::rememberedRoot(int chart, int index) const {
-  return doubleDoubleRoots_.find(chart, index);
+  return escalation_ ? escalation_->doubleDoubleRoots.find(chart, index) : nullptr;
 }
 
 void AngleFunction::rememberRoot(int chart, int index, const DoubleDoubleInterval& root) const {
-  doubleDoubleRoots_.remember(chart, index, root);
+  escalation().doubleDoubleRoots.remember(chart, index, root);
 }
 
 const AngleFunction::NarrowEnclosure* AngleFunction::rememberedEnclosure(int chart, int index) const {
@@ -268,30 +274,33 @@ void AngleFunction::rememberEnclosure(int chart, int index, const NarrowEnclosur
 }
 
 const Polynomial<Interval>& AngleFunction::tight(int chart) const {
-  if (!tight_[chart]) {
+  auto& tight = escalation().tight[chart];
+  if (!tight) {
     std::vector<Interval> coefficients;
     for (const DoubleDoubleInterval& coefficient : doubleDouble(chart).coefficients()) {
       coefficients.push_back(enclosingInterval(coefficient));
     }
-    tight_[chart] = Polynomial<Interval>(std::move(coefficients));
+    tight = Polynomial<Interval>(std::move(coefficients));
   }
-  return *tight_[chart];
+  return *tight;
 }
 
 const Polynomial<PreciseInterval>& AngleFunction::precise(int chart) const {
-  if (!precise_[chart]) {
+  auto& precise = escalation().precise[chart];
+  if (!precise) {
     std::vector<PreciseInterval> coefficients;
     for (const DoubleDoubleInterval& coefficient : doubleDouble(chart).coefficients()) {
       coefficients.push_back(enclosingPreciseInterval(coefficient));
     }
-    precise_[chart] = Polynomial<PreciseInterval>(std::move(coefficients));
+    precise = Polynomial<PreciseInterval>(std::move(coefficients));
   }
-  return *precise_[chart];
+  return *precise;
 }
 
 const RationalPolynomial& AngleFunction::exact(int chart) const {
-  if (!exact_[chart]) exact_[chart] = trimmed(evaluator_->exact(chart));
-  return *exact_[chart];
+  auto& exact = escalation().exact[chart];
+  if (!exact) exact = trimmed(evaluator_->exact(chart));
+  return *exact;
 }
 
 bool AngleFunction::isIdenticallyZero() const {
@@ -303,8 +312,9 @@ bool AngleFunction::isIdenticallyZero() const {
 }
 
 const RationalPolynomial& AngleFunction::squareFree(int chart) const {
-  if (!squareFree_[chart]) squareFree_[chart] = squareFreePart(exact(chart));
-  return *squareFree_[chart];
+  auto& squareFree = escalation().squareFree[chart];
+  if (!squareFree) squareFree = squareFreePart(exact(chart));
+  return *squareFree;
 }
 
 AlgebraicAngle::AlgebraicAngle(std::shared_ptr<const AngleFunction> function, int chart, double lower, double upper,

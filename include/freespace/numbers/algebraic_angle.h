@@ -130,12 +130,20 @@ class AngleFunction {
   std::array<Polynomial<Interval>, 2> approximate_;
   std::unique_ptr<const Evaluator> evaluator_;
   std::optional<RootKey> key_;
-  mutable std::array<std::optional<Polynomial<DoubleDoubleInterval>>, 2> doubleDouble_;
-  mutable std::array<std::optional<Polynomial<Interval>>, 2> tight_;
-  mutable std::array<std::optional<Polynomial<PreciseInterval>>, 2> precise_;
-  mutable std::array<std::optional<RationalPolynomial>, 2> exact_;
-  mutable std::array<std::optional<RationalPolynomial>, 2> squareFree_;
-  mutable detail::RootMemo<DoubleDoubleInterval> doubleDoubleRoots_;
+  /// The coefficients past double intervals, and the roots found with them, made on
+  /// first use: most functions never need them, and kept apart they leave a function
+  /// small to make and to free.
+  struct Escalation {
+    std::array<std::optional<Polynomial<DoubleDoubleInterval>>, 2> doubleDouble;
+    std::array<std::optional<Polynomial<Interval>>, 2> tight;
+    std::array<std::optional<Polynomial<PreciseInterval>>, 2> precise;
+    std::array<std::optional<RationalPolynomial>, 2> exact;
+    std::array<std::optional<RationalPolynomial>, 2> squareFree;
+    detail::RootMemo<DoubleDoubleInterval> doubleDoubleRoots;
+  };
+  Escalation& escalation() const;
+
+  mutable std::unique_ptr<Escalation> escalation_;
   mutable detail::RootMemo<NarrowEnclosure> narrowEnclosures_;
 };
 
