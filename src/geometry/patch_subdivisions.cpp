@@ -64,10 +64,14 @@ struct IntervalLambda {
   Sign denominator;
 };
 
-/// lambda_g in double intervals at an angle (inside a RoundingScope); nothing when
-/// V_g(0) - V_g(1) may vanish.
-std::optional<IntervalLambda> crossingLambda(const EndsAtAngle<Interval>& at, const PatchGeometry& g) {
-  const auto [v0, v1] = at.lineValues(g);
+/// g's line at the patch's two ends as SF forms in double intervals (they do not
+/// depend on the angle): V_g(k) = valueAt(forms[k], cos, sin).
+using EndForms = std::array<TrigLinear<Interval>, 2>;
+
+/// lambda_g in double intervals at an angle given by its cosine and sine (inside a
+/// RoundingScope); nothing when V_g(0) - V_g(1) may vanish.
+std::optional<IntervalLambda> crossingLambda(const EndForms& forms, const Interval& cosine, const Interval& sine) {
+  const Interval v0 = valueAt(forms[0], cosine, sine), v1 = valueAt(forms[1], cosine, sine);
   const Interval difference = v0 - v1;
   const std::optional<Sign> sign = certainSign(difference);
   if (!sign || *sign == Sign::Zero) return std::nullopt;
@@ -286,6 +290,7 @@ class PatchSweep {
   }
 
   PatchSubdivision run() {
+    tabulateEndForms();
     const AngleSet& range = patches_[patch_].patch.range;
     if (range.fullCircle) {
       sweepCircle();
@@ -398,9 +403,22 @@ class PatchSweep {
     crossings.reserve(curves.size());
     RoundingScope rounding;
     const auto [cosine, sine] = cosSinEnclosure(angle);
-    const EndsAtAngle<Interval> ends(patches_[patch_], cosine, sine);
-    for (std::uint32_t curve : curves) crossings.push_back({curve, crossingLambda(ends, other(curve))});
+    for (std::uint32_t curve : curves) crossings.push_back({curve, crossingLambda(endForms_->at(curve), cosine, sine)});
     return crossings;
+  }
+
+  /// The EndForms of every curve's other patch, once per sweep.
+  void tabulateEndForms() {
+    std::vector<std::uint32_t> curves = curvesOfPatch_;
+    std::sort(curves.begin(), curves.end());
+    endForms_.emplace(curves);
+    RoundingScope rounding;
+    const std::array<Spiral<Interval>, 2> ends{spiralOf<Interval>(patches_[patch_].ends[0]),
+                                               spiralOf<Interval>(patches_[patch_].ends[1])};
+    for (std::uint32_t curve : curves) {
+      const PatchLine<Interval> line = lineOf<Interval>(other(curve).line);
+      (*endForms_)[curve] = {spiralFacetForm(line, ends[0]), spiralFacetForm(line, ends[1])};
+    }
   }
 
   std::uint32_t otherPatch(std::uint32_t curve) const { return curves_[curve].other(patch_); }
@@ -648,6 +666,7 @@ class PatchSweep {
   AngleAlgebra& algebra_;
   bool recordEvents_;
   std::vector<std::uint32_t> curvesOfPatch_;
+  std::optional<CurveTable<EndForms>> endForms_;
   std::unordered_map<std::uint32_t, std::uint32_t> curveWith_;
   std::vector<PatchEvent> events_;
   UnionFind trapezoids_;
