@@ -71,12 +71,12 @@ TEST(CliFreeSpace, LocateWithoutConfigurationsIsAnError) {
 
 TEST(CliFreeSpace, InterruptStopsABuildWithStatus130) {
   TempDir dir;
-  // The tetrahedron in a floor plan of 256 rooms (8,804 facets) takes seconds to
+  // The tetrahedron in a floor plan of 1,024 rooms (35,216 facets) takes seconds to
   // build; SIGINT after one.
-  ASSERT_EQ(runFreespace("generate --out '" + dir.file("scene") + "' --scene tetra_floorplan_256").status, 0);
+  ASSERT_EQ(runFreespace("generate --out '" + dir.file("scene") + "' --scene tetra_floorplan_1024").status, 0);
   const auto start = std::chrono::steady_clock::now();
   const std::string command = std::string("timeout --preserve-status -s INT 1 '") + FREESPACE_CLI + "' build --cfg '" +
-                              dir.file("scene/tetra_floorplan_256.cfg") + "' >'" + dir.file("out") + "' 2>'" +
+                              dir.file("scene/tetra_floorplan_1024.cfg") + "' >'" + dir.file("out") + "' 2>'" +
                               dir.file("err") + "'";
   const int raw = std::system(command.c_str());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -104,9 +104,9 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BundledFreeSpace,
 }  // namespace
 
 TEST(FreeSpaceConstruction, AnnouncesItsStagesAndStopsSoonAfterCancellation) {
-  // The tetrahedron in a floor plan of 256 rooms: seconds to build; stopped 100 ms
+  // The tetrahedron in a floor plan of 1,024 rooms: seconds to build; stopped 100 ms
   // into the curves.
-  const Scene scene = makeScene("tetra_floorplan_256");
+  const Scene scene = makeScene("tetra_floorplan_1024");
   std::atomic<bool> stop{false}, curvesStarted{false};
   std::vector<std::string> stages;
   FreeSpaceOptions options;
