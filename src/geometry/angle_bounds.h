@@ -16,12 +16,22 @@ namespace freespace::detail {
 /// A range of angles in radians, from <= to, inside [-pi, pi].
 using RadianRange = std::pair<double, double>;
 
-/// Enclosures of cos and sin over the angles [from, to] (radians, from <= to),
-/// padded far beyond the error of the library's cos and sin. Needs a RoundingScope.
-inline std::pair<Interval, Interval> cosSinOver(double from, double to) {
+/// An angle in radians with its cosine and sine from the library (to within an ulp
+/// or two).
+struct RadianCosSin {
+  double angle, cosine, sine;
+
+  static RadianCosSin at(double angle) { return {angle, std::cos(angle), std::sin(angle)}; }
+};
+
+/// Enclosures of cos and sin over the angles [from, to] (from.angle <= to.angle),
+/// given at the two ends, padded far beyond the error of the library's cos and sin.
+/// Needs a RoundingScope.
+inline std::pair<Interval, Interval> cosSinOver(const RadianCosSin& start, const RadianCosSin& end) {
   constexpr double kPadding = 1e-9;
-  double cosLow = std::min(std::cos(from), std::cos(to)), cosHigh = std::max(std::cos(from), std::cos(to));
-  double sinLow = std::min(std::sin(from), std::sin(to)), sinHigh = std::max(std::sin(from), std::sin(to));
+  const double from = start.angle, to = end.angle;
+  double cosLow = std::min(start.cosine, end.cosine), cosHigh = std::max(start.cosine, end.cosine);
+  double sinLow = std::min(start.sine, end.sine), sinHigh = std::max(start.sine, end.sine);
   for (double quarter = std::ceil(from / M_PI_2); quarter * M_PI_2 <= to; quarter += 1) {
     const int which = static_cast<int>(std::fmod(std::fmod(quarter, 4) + 4, 4));
     if (which == 0) cosHigh = 1;
@@ -30,6 +40,11 @@ inline std::pair<Interval, Interval> cosSinOver(double from, double to) {
     if (which == 3) sinLow = -1;
   }
   return {Interval(cosLow - kPadding, cosHigh + kPadding), Interval(sinLow - kPadding, sinHigh + kPadding)};
+}
+
+/// The same over [from, to] in radians (from <= to).
+inline std::pair<Interval, Interval> cosSinOver(double from, double to) {
+  return cosSinOver(RadianCosSin::at(from), RadianCosSin::at(to));
 }
 
 /// Whether the trig-linear forms may have the signs `pattern` (Positive or Negative,

@@ -131,11 +131,15 @@ bool apartOver(const PairForms& forms, const Interval& cosine, const Interval& s
 /// it: the enclosures over narrower ranges are tighter.
 constexpr int kRangeHalvings = 4;
 
-bool mayCrossOver(const PairForms& forms, double from, double to, int halvings) {
+/// Whether the segments may cross at an angle of [from, to]: not when found apart
+/// over it or over each half, halved up to `halvings` times (halves share the cosines
+/// and sines of their ends).
+bool mayCrossOver(const PairForms& forms, const detail::RadianCosSin& from, const detail::RadianCosSin& to,
+                  int halvings) {
   const auto [cosine, sine] = detail::cosSinOver(from, to);
   if (apartOver(forms, cosine, sine)) return false;
   if (halvings == 0) return true;
-  const double middle = from + 0.5 * (to - from);
+  const auto middle = detail::RadianCosSin::at(from.angle + 0.5 * (to.angle - from.angle));
   return mayCrossOver(forms, from, middle, halvings - 1) || mayCrossOver(forms, middle, to, halvings - 1);
 }
 
@@ -149,7 +153,8 @@ bool mayCross(const IntervalPatch& a, const IntervalPatch& b, std::optional<Pair
   if (common.empty()) return false;
   forms = pairForms(a, b);
   for (const auto& [from, to] : common) {
-    if (mayCrossOver(*forms, from, to, kRangeHalvings)) return true;
+    const auto start = detail::RadianCosSin::at(from), end = detail::RadianCosSin::at(to);
+    if (mayCrossOver(*forms, start, end, kRangeHalvings)) return true;
   }
   return false;
 }
