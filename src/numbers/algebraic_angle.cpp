@@ -440,6 +440,14 @@ void AlgebraicAngle::refineInDoublesTo(double width) {
   }
 }
 
+std::pair<double, double> AlgebraicAngle::narrowestKnownEnclosure() const {
+  if (!function_ || index_ < 0) return {lower_, upper_};
+  const AngleFunction::NarrowEnclosure* known = function_->rememberedEnclosure(chart_, index_);
+  if (!known) return {lower_, upper_};
+  // Both enclose the one root of the function in this isolating interval.
+  return {std::max(lower_, known->lower), std::min(upper_, known->upper)};
+}
+
 void AlgebraicAngle::adoptRememberedEnclosure() {
   if (!function_ || index_ < 0) return;
   const AngleFunction::NarrowEnclosure* known = function_->rememberedEnclosure(chart_, index_);
@@ -582,6 +590,15 @@ int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
     return order;
   }
   if (const std::optional<int> order = compareByKey(a, b)) return *order;
+  // Enclosures that earlier comparisons narrowed (remembered by the functions) are
+  // usually apart: that decides before any lookup or copy.
+  const auto [aLower, aUpper] = a.narrowestKnownEnclosure();
+  const auto [bLower, bUpper] = b.narrowestKnownEnclosure();
+  if (aUpper < bLower || bUpper < aLower) {
+    const int order = aUpper < bLower ? -1 : 1;
+    record(PredicateKind::RootOrder, kDoubleLevel, signOf(order));
+    return order;
+  }
   // Orders of roots that needed refinement are remembered: sorts ask again.
   const bool remembered = !a.isRational() && !b.isRational() && a.index() >= 0 && b.index() >= 0;
   const RootPair pair{a.function().get(), b.function().get(), a.chart(), a.index(), b.chart(), b.index()};

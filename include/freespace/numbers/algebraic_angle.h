@@ -192,6 +192,8 @@ class AlgebraicAngle {
   /// Takes the narrowest enclosure its function remembers for this root, when
   /// narrower than its own.
   void adoptRememberedEnclosure();
+  /// Its own enclosure narrowed by the one its function remembers (no change made).
+  std::pair<double, double> narrowestKnownEnclosure() const;
   /// Gives its enclosure to its function to remember, when narrower than what it has.
   void rememberEnclosure() const;
   /// A copy refined in doubles as far as they go (with tight coefficients when the
