@@ -194,9 +194,7 @@ std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, con
   const AngleFunction::RootKey key = edgeFacet.value_or(spiralLineKey(line, endFeatures));
   if (!approximateForm) return std::make_shared<AngleFunction>(formula, key);
   RoundingScope rounding;
-  return std::make_shared<AngleFunction>(
-      formula, key,
-      std::array<Polynomial<Interval>, 2>{tangentPolynomial(*approximateForm, 0), tangentPolynomial(*approximateForm, 1)});
+  return std::make_shared<AngleFunction>(formula, key, tangentPolynomials(*approximateForm));
 }
 
 }  // namespace

@@ -27,12 +27,18 @@ TrigLinear<T> edgeOutOfFacetForm(ContactKind kind, const Point3& vertex, const P
   return kind == ContactKind::VertexFacet ? rotatedDot(edge, normal) : rotatedDot(normal, edge);
 }
 
+/// The condition as an angle function, given its form in double intervals
+/// (edgeOutOfFacetForm<Interval>, already computed for the quick test).
 std::shared_ptr<const AngleFunction> edgeOutOfFacet(ContactKind kind, const Point3& vertex, const Point3& other,
-                                                    const detail::Corners& facet, AngleFunction::RootKey key) {
-  return std::make_shared<AngleFunction>([kind, vertex, other, facet](auto type, int chart) {
-    using T = typename decltype(type)::type;
-    return tangentPolynomial(edgeOutOfFacetForm<T>(kind, vertex, other, facet), chart);
-  }, key);
+                                                    const detail::Corners& facet, AngleFunction::RootKey key,
+                                                    const TrigLinear<Interval>& approximateForm) {
+  RoundingScope rounding;
+  return std::make_shared<AngleFunction>(
+      [kind, vertex, other, facet](auto type, int chart) {
+        using T = typename decltype(type)::type;
+        return tangentPolynomial(edgeOutOfFacetForm<T>(kind, vertex, other, facet), chart);
+      },
+      key, tangentPolynomials(approximateForm));
 }
 
 /// Whether z lies strictly between the lowest and highest vertex of the triangle.
@@ -43,19 +49,24 @@ bool strictlyWithinHeights(const Mesh& mesh, std::uint32_t triangle, double z) {
   return low < z && z < high;
 }
 
-/// Whether every edge at the vertex may point out of the facet's plane at once at
-/// some angle (decided in double intervals over ranges of angles; true when unsure).
-bool mayBeCompatible(ContactKind kind, const Mesh& vertexMesh, const MeshTopology& vertexTopology, std::uint32_t vertex,
-                     const detail::Corners& facet) {
+/// The conditions' forms in double intervals, one per edge at the vertex (in the
+/// order of vertexEdges).
+std::vector<TrigLinear<Interval>> conditionForms(ContactKind kind, const Mesh& vertexMesh,
+                                                 const MeshTopology& vertexTopology, std::uint32_t vertex,
+                                                 const detail::Corners& facet) {
   std::vector<TrigLinear<Interval>> forms;
-  {
-    RoundingScope rounding;
-    for (std::uint32_t edge : vertexTopology.vertexEdges(vertex)) {
-      const std::uint32_t other = vertexTopology.otherEnd(edge, vertex);
-      forms.push_back(
-          edgeOutOfFacetForm<Interval>(kind, vertexMesh.vertices()[vertex], vertexMesh.vertices()[other], facet));
-    }
+  RoundingScope rounding;
+  for (std::uint32_t edge : vertexTopology.vertexEdges(vertex)) {
+    const std::uint32_t other = vertexTopology.otherEnd(edge, vertex);
+    forms.push_back(edgeOutOfFacetForm<Interval>(kind, vertexMesh.vertices()[vertex], vertexMesh.vertices()[other], facet));
   }
+  return forms;
+}
+
+/// Whether every edge at the vertex may point out of the facet's plane at once at
+/// some angle, from the conditions' forms (decided in double intervals over ranges of
+/// angles; true when unsure).
+bool mayBeCompatible(const std::vector<TrigLinear<Interval>>& forms) {
   return detail::signPatternMayHold(forms, std::vector<Sign>(forms.size(), Sign::Positive));
 }
 
@@ -70,13 +81,15 @@ void addPatches(ContactKind kind, const Mesh& vertexMesh, const MeshTopology& ve
       const Contact contact = kind == ContactKind::VertexFacet ? Contact{kind, vertex, triangle}
                                                                : Contact{kind, triangle, vertex};
       const detail::Corners facet = detail::cornersOf(facetMesh, triangle);
-      if (!mayBeCompatible(kind, vertexMesh, vertexTopology, vertex, facet)) continue;
+      const std::vector<TrigLinear<Interval>> forms = conditionForms(kind, vertexMesh, vertexTopology, vertex, facet);
+      if (!mayBeCompatible(forms)) continue;
       std::vector<std::shared_ptr<const AngleFunction>> conditions;
       for (std::uint32_t edge : vertexTopology.vertexEdges(vertex)) {
         const std::uint32_t other = vertexTopology.otherEnd(edge, vertex);
         conditions.push_back(edgeOutOfFacet(kind, vertexMesh.vertices()[vertex], vertexMesh.vertices()[other], facet,
                                             detail::edgeFacetKey(kind == ContactKind::VertexFacet, vertex, other,
-                                                                 facetMesh.triangles()[triangle])));
+                                                                 facetMesh.triangles()[triangle]),
+                                            forms[conditions.size()]));
       }
       AngleSet range = algebra.positiveSet(conditions, PredicateKind::EdgeFacet);
       if (!range.empty()) patches.push_back({contact, std::move(range)});

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <array>
+
 #include "freespace/numbers/adaptive_sign.h"
 #include "freespace/numbers/polynomial.h"
 
@@ -26,6 +28,12 @@ Polynomial<T> tangentPolynomial(const TrigLinear<T>& form, int chart) {
   const T twoS = form.s + form.s;
   if (chart == 0) return Polynomial<T>({form.k + form.c, twoS, form.k - form.c});
   return Polynomial<T>({form.k - form.c, -twoS, form.k + form.c});
+}
+
+/// tangentPolynomial in both charts.
+template <class T>
+std::array<Polynomial<T>, 2> tangentPolynomials(const TrigLinear<T>& form) {
+  return {tangentPolynomial(form, 0), tangentPolynomial(form, 1)};
 }
 
 template <class T>
