@@ -61,24 +61,36 @@ TrigLinear<T> wedgeForm(const std::array<Point3, 2>& robotEdge, const std::array
   return robotNormal ? rotatedDot(detail::normalOf<T>(face), v) : rotatedDot(u, detail::normalOf<T>(face));
 }
 
+/// The condition as an angle function, given its form in double intervals (wedgeForms,
+/// already computed for the quick test).
 std::shared_ptr<const AngleFunction> wedgeCondition(const std::array<Point3, 2>& robotEdge,
                                                     const std::array<Point3, 2>& worldEdge, bool robotNormal,
-                                                    const detail::Corners& face, AngleFunction::RootKey key) {
-  return std::make_shared<AngleFunction>([robotEdge, worldEdge, robotNormal, face](auto type, int chart) {
-    using T = typename decltype(type)::type;
-    return tangentPolynomial(wedgeForm<T>(robotEdge, worldEdge, robotNormal, face), chart);
-  }, key);
+                                                    const detail::Corners& face, AngleFunction::RootKey key,
+                                                    const TrigLinear<Interval>& approximateForm) {
+  RoundingScope rounding;
+  return std::make_shared<AngleFunction>(
+      [robotEdge, worldEdge, robotNormal, face](auto type, int chart) {
+        using T = typename decltype(type)::type;
+        return tangentPolynomial(wedgeForm<T>(robotEdge, worldEdge, robotNormal, face), chart);
+      },
+      key, tangentPolynomials(approximateForm));
 }
 
-/// Whether one of the two sign patterns of the wedge conditions may hold somewhere
-/// (decided in double intervals over ranges of angles; true when unsure).
-bool mayTouch(const std::array<Point3, 2>& robotEnds, const std::array<Point3, 2>& worldEnds,
-              const std::array<detail::Corners, 4>& faces, const std::vector<Sign>& pattern) {
+/// The four conditions' forms in double intervals: two robot face normals against the
+/// environment edge, then the robot edge against two environment face normals.
+std::vector<TrigLinear<Interval>> wedgeForms(const std::array<Point3, 2>& robotEnds,
+                                             const std::array<Point3, 2>& worldEnds,
+                                             const std::array<detail::Corners, 4>& faces) {
   std::vector<TrigLinear<Interval>> forms;
-  {
-    RoundingScope rounding;
-    for (int k = 0; k < 4; ++k) forms.push_back(wedgeForm<Interval>(robotEnds, worldEnds, k < 2, faces[k]));
-  }
+  RoundingScope rounding;
+  for (int k = 0; k < 4; ++k) forms.push_back(wedgeForm<Interval>(robotEnds, worldEnds, k < 2, faces[k]));
+  return forms;
+}
+
+/// Whether one of the two sign patterns of the wedge conditions may hold somewhere,
+/// from their forms (decided in double intervals over ranges of angles; true when
+/// unsure).
+bool mayTouch(const std::vector<TrigLinear<Interval>>& forms, const std::vector<Sign>& pattern) {
   std::vector<Sign> opposite;
   for (Sign sign : pattern) opposite.push_back(-sign);
   return detail::signPatternMayHold(forms, pattern) || detail::signPatternMayHold(forms, opposite);
@@ -108,7 +120,8 @@ std::vector<Patch> edgeEdgePatches(const Mesh& robot, const MeshTopology& robotT
                                                  detail::cornersOf(world, b.faces[0]), detail::cornersOf(world, b.faces[1])};
       // Side +1 needs the signs (+, -, +, -), side -1 the opposite ones.
       const std::vector<Sign> pattern{Sign::Positive, Sign::Negative, Sign::Positive, Sign::Negative};
-      if (!mayTouch(robotEnds, worldEnds, faces, pattern)) continue;
+      const std::vector<TrigLinear<Interval>> forms = wedgeForms(robotEnds, worldEnds, faces);
+      if (!mayTouch(forms, pattern)) continue;
       // (R m) . v is the EF function of the environment edge and a robot face,
       // (R u) . n that of the robot edge and an environment face.
       const std::array<AngleFunction::RootKey, 4> keys{
@@ -116,11 +129,8 @@ std::vector<Patch> edgeEdgePatches(const Mesh& robot, const MeshTopology& robotT
           detail::edgeFacetKey(false, worldEdge.from, worldEdge.to, robot.triangles()[a.faces[1]]),
           detail::edgeFacetKey(true, robotEdge.from, robotEdge.to, world.triangles()[b.faces[0]]),
           detail::edgeFacetKey(true, robotEdge.from, robotEdge.to, world.triangles()[b.faces[1]])};
-      const std::vector<std::shared_ptr<const AngleFunction>> conditions{
-          wedgeCondition(robotEnds, worldEnds, true, faces[0], keys[0]),
-          wedgeCondition(robotEnds, worldEnds, true, faces[1], keys[1]),
-          wedgeCondition(robotEnds, worldEnds, false, faces[2], keys[2]),
-          wedgeCondition(robotEnds, worldEnds, false, faces[3], keys[3])};
+      std::vector<std::shared_ptr<const AngleFunction>> conditions;
+      for (int k = 0; k < 4; ++k) conditions.push_back(wedgeCondition(robotEnds, worldEnds, k < 2, faces[k], keys[k], forms[k]));
       std::array<AngleSet, 2> ranges = algebra.signPatternSets(conditions, pattern, PredicateKind::EdgeFacet);
       for (int which = 0; which < 2; ++which) {
         if (ranges[which].empty()) continue;
