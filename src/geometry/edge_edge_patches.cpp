@@ -4,6 +4,7 @@
 #include "angle_bounds.h"
 #include "contact_vectors.h"
 #include "freespace/geometry/patch.h"
+#include "freespace/numbers/trig_linear_function.h"
 
 namespace freespace {
 
@@ -67,13 +68,11 @@ std::shared_ptr<const AngleFunction> wedgeCondition(const std::array<Point3, 2>&
                                                     const std::array<Point3, 2>& worldEdge, bool robotNormal,
                                                     const detail::Corners& face, AngleFunction::RootKey key,
                                                     const TrigLinear<Interval>& approximateForm) {
-  RoundingScope rounding;
-  return std::make_shared<AngleFunction>(
-      [robotEdge, worldEdge, robotNormal, face](auto type, int chart) {
-        using T = typename decltype(type)::type;
-        return tangentPolynomial(wedgeForm<T>(robotEdge, worldEdge, robotNormal, face), chart);
-      },
-      key, tangentPolynomials(approximateForm));
+  const auto form = [robotEdge, worldEdge, robotNormal, face](auto type) {
+    using T = typename decltype(type)::type;
+    return wedgeForm<T>(robotEdge, worldEdge, robotNormal, face);
+  };
+  return trigLinearFunction(form, key, approximateForm);
 }
 
 /// The four conditions' forms in double intervals: two robot face normals against the

@@ -8,6 +8,7 @@
 #include "contact_vectors.h"
 #include "freespace/geometry/patch_box_index.h"
 #include "freespace/geometry/patch_curve.h"
+#include "freespace/numbers/trig_linear_function.h"
 
 namespace freespace {
 
@@ -187,14 +188,14 @@ std::shared_ptr<const AngleFunction> spiralOnLine(const ContactPoints& line, con
       return Polynomial<T>({T(0)});
     }, edgeFacet);
   }
-  const auto formula = [line, end](auto type, int chart) {
+  const auto form = [line, end](auto type) {
     using T = typename decltype(type)::type;
-    return tangentPolynomial(spiralFacetForm(lineOf<T>(line), spiralOf<T>(end)), chart);
+    return spiralFacetForm(lineOf<T>(line), spiralOf<T>(end));
   };
   const AngleFunction::RootKey key = edgeFacet.value_or(spiralLineKey(line, endFeatures));
-  if (!approximateForm) return std::make_shared<AngleFunction>(formula, key);
+  if (approximateForm) return trigLinearFunction(form, key, *approximateForm);
   RoundingScope rounding;
-  return std::make_shared<AngleFunction>(formula, key, tangentPolynomials(*approximateForm));
+  return trigLinearFunction(form, key, form(NumberType<Interval>{}));
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include "angle_bounds.h"
 #include "contact_vectors.h"
 #include "freespace/geometry/patch.h"
+#include "freespace/numbers/trig_linear_function.h"
 
 namespace freespace {
 
@@ -32,13 +33,11 @@ TrigLinear<T> edgeOutOfFacetForm(ContactKind kind, const Point3& vertex, const P
 std::shared_ptr<const AngleFunction> edgeOutOfFacet(ContactKind kind, const Point3& vertex, const Point3& other,
                                                     const detail::Corners& facet, AngleFunction::RootKey key,
                                                     const TrigLinear<Interval>& approximateForm) {
-  RoundingScope rounding;
-  return std::make_shared<AngleFunction>(
-      [kind, vertex, other, facet](auto type, int chart) {
-        using T = typename decltype(type)::type;
-        return tangentPolynomial(edgeOutOfFacetForm<T>(kind, vertex, other, facet), chart);
-      },
-      key, tangentPolynomials(approximateForm));
+  const auto form = [kind, vertex, other, facet](auto type) {
+    using T = typename decltype(type)::type;
+    return edgeOutOfFacetForm<T>(kind, vertex, other, facet);
+  };
+  return trigLinearFunction(form, key, approximateForm);
 }
 
 /// Whether z lies strictly between the lowest and highest vertex of the triangle.
