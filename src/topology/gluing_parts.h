@@ -3,9 +3,11 @@
 // Pieces shared by the gluing of sub-faces across curves, spirals and horizontal
 // edges (sub_face_gluing.cpp, horizontal_gluing.cpp).
 
+#include <cstdint>
+#include <functional>
 #include <optional>
-#include <set>
-#include <tuple>
+#include <unordered_set>
+#include <utility>
 
 #include "freespace/topology/sub_face_gluing.h"
 
@@ -16,17 +18,25 @@ namespace freespace::gluing {
 class GlueList {
  public:
   void add(SubFaceId a, SubFaceId b, GluedEdge edge, const AlgebraicAngle& at) {
-    if (std::make_pair(b.patch, b.face) < std::make_pair(a.patch, a.face)) std::swap(a, b);
-    if (seen_.insert({a.patch, a.face, b.patch, b.face}).second) gluing_.glues.push_back({a, b, edge, at});
+    if (codeOf(b) < codeOf(a)) std::swap(a, b);
+    if (seen_.insert({codeOf(a), codeOf(b)}).second) gluing_.glues.push_back({a, b, edge, at});
   }
   void addUnmatched(SubFaceId face) {
-    if (unmatched_.insert({face.patch, face.face}).second) gluing_.unmatched.push_back(face);
+    if (unmatched_.insert(codeOf(face)).second) gluing_.unmatched.push_back(face);
   }
   SubFaceGluing take() { return std::move(gluing_); }
 
  private:
-  std::set<std::tuple<std::uint32_t, std::uint32_t, std::uint32_t, std::uint32_t>> seen_;
-  std::set<std::pair<std::uint32_t, std::uint32_t>> unmatched_;
+  /// A sub-face as one number, ordered by patch, then face.
+  static std::uint64_t codeOf(SubFaceId face) { return (std::uint64_t(face.patch) << 32) | face.face; }
+  struct PairHash {
+    std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& pair) const {
+      return std::hash<std::uint64_t>()(pair.first * 0x9e3779b97f4a7c15ULL ^ pair.second);
+    }
+  };
+
+  std::unordered_set<std::pair<std::uint64_t, std::uint64_t>, PairHash> seen_;
+  std::unordered_set<std::uint64_t> unmatched_;
   SubFaceGluing gluing_;
 };
 
