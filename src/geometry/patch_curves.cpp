@@ -144,20 +144,19 @@ bool mayCrossOver(const PairForms& forms, const detail::RadianCosSin& from, cons
   return mayCrossOver(forms, from, middle, halvings - 1) || mayCrossOver(forms, middle, to, halvings - 1);
 }
 
-/// False when, at every common angle of the two ranges, both ends of one segment lie
-/// strictly on one side of the other's line: then the segments never cross
-/// (decided in double intervals; true when unsure). Sets `forms` to the pair's SF
-/// forms when their ranges overlap.
-bool mayCross(const IntervalPatch& a, const IntervalPatch& b, std::optional<PairForms>& forms) {
+/// Nothing when, at every common angle of the two ranges, both ends of one segment
+/// lie strictly on one side of the other's line: then the segments never cross
+/// (decided in double intervals). Otherwise the pair's SF forms, for the exact work.
+std::optional<PairForms> formsIfMayCross(const IntervalPatch& a, const IntervalPatch& b) {
   RoundingScope rounding;
   const std::vector<detail::RadianRange> common = detail::overlap(a.angles, b.angles);
-  if (common.empty()) return false;
-  forms = pairForms(a, b);
+  if (common.empty()) return std::nullopt;
+  const PairForms forms = pairForms(a, b);
   for (const auto& [from, to] : common) {
     const auto start = detail::RadianCosSin::at(from), end = detail::RadianCosSin::at(to);
-    if (mayCrossOver(*forms, start, end, kRangeHalvings)) return true;
+    if (mayCrossOver(forms, start, end, kRangeHalvings)) return forms;
   }
-  return false;
+  return std::nullopt;
 }
 
 bool isRangeEnd(const AngleSet& range, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
@@ -319,8 +318,8 @@ std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches,
       AdaptiveSignEngine(algebra.statistics()).knownIdentity(PredicateKind::SpiralFacet);
       continue;
     }
-    std::optional<PairForms> forms;
-    if (!mayCross(approximate[first], approximate[second], forms)) continue;
+    const std::optional<PairForms> forms = formsIfMayCross(approximate[first], approximate[second]);
+    if (!forms) continue;
     PatchCurve curve = patchCurve(first, patches[first], second, patches[second], *forms, algebra);
     if (!curve.angles.empty()) curves.push_back(std::move(curve));
   }

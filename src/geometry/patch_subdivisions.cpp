@@ -23,19 +23,30 @@ T lineAtEnd(const PatchGeometry& patch, int k, const PatchGeometry& other, const
   return valueAt(spiralFacetForm(lineOf<T>(other.line), spiralOf<T>(patch.ends[k])), cosine, sine);
 }
 
+/// A patch's two end spirals in number type T.
+template <class T>
+std::array<Spiral<T>, 2> endSpirals(const PatchGeometry& patch) {
+  return {spiralOf<T>(patch.ends[0]), spiralOf<T>(patch.ends[1])};
+}
+
+/// g's line at two end spirals as SF forms (they do not depend on the angle).
+template <class T>
+std::array<TrigLinear<T>, 2> lineFormsAtEnds(const std::array<Spiral<T>, 2>& ends, const PatchGeometry& g) {
+  const PatchLine<T> line = lineOf<T>(g.line);
+  return {spiralFacetForm(line, ends[0]), spiralFacetForm(line, ends[1])};
+}
+
 /// A patch's two end spirals and an angle's cosine and sine in number type T: what
 /// the values of many lines at the segment's ends share.
 template <class T>
 struct EndsAtAngle {
   EndsAtAngle(const PatchGeometry& patch, const T& cosine, const T& sine)
-      : ends{spiralOf<T>(patch.ends[0]), spiralOf<T>(patch.ends[1])}, cosine(cosine), sine(sine) {}
+      : ends(endSpirals<T>(patch)), cosine(cosine), sine(sine) {}
 
   /// V_g(0) and V_g(1): the values of g's line at the two ends.
   std::array<T, 2> lineValues(const PatchGeometry& g) const {
-    const PatchLine<T> line = lineOf<T>(g.line);
-    std::array<T, 2> values;
-    for (int k = 0; k < 2; ++k) values[k] = valueAt(spiralFacetForm(line, ends[k]), cosine, sine);
-    return values;
+    const auto forms = lineFormsAtEnds(ends, g);
+    return {valueAt(forms[0], cosine, sine), valueAt(forms[1], cosine, sine)};
   }
 
   std::array<Spiral<T>, 2> ends;
@@ -64,8 +75,8 @@ struct IntervalLambda {
   Sign denominator;
 };
 
-/// g's line at the patch's two ends as SF forms in double intervals (they do not
-/// depend on the angle): V_g(k) = valueAt(forms[k], cos, sin).
+/// g's line at the patch's two ends as SF forms in double intervals
+/// (lineFormsAtEnds): V_g(k) = valueAt(forms[k], cos, sin).
 using EndForms = std::array<TrigLinear<Interval>, 2>;
 
 /// lambda_g in double intervals at an angle given by its cosine and sine (inside a
@@ -413,12 +424,8 @@ class PatchSweep {
     std::sort(curves.begin(), curves.end());
     endForms_.emplace(curves);
     RoundingScope rounding;
-    const std::array<Spiral<Interval>, 2> ends{spiralOf<Interval>(patches_[patch_].ends[0]),
-                                               spiralOf<Interval>(patches_[patch_].ends[1])};
-    for (std::uint32_t curve : curves) {
-      const PatchLine<Interval> line = lineOf<Interval>(other(curve).line);
-      (*endForms_)[curve] = {spiralFacetForm(line, ends[0]), spiralFacetForm(line, ends[1])};
-    }
+    const std::array<Spiral<Interval>, 2> ends = endSpirals<Interval>(patches_[patch_]);
+    for (std::uint32_t curve : curves) (*endForms_)[curve] = lineFormsAtEnds(ends, other(curve));
   }
 
   std::uint32_t otherPatch(std::uint32_t curve) const { return curves_[curve].other(patch_); }
