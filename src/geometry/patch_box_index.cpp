@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
+#include <boost/iterator/function_output_iterator.hpp>
 
 namespace freespace {
 
@@ -45,6 +46,19 @@ std::vector<std::uint32_t> PatchBoxIndex::meeting(const PatchBox& query) const {
   std::sort(patches.begin(), patches.end());
   patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
   return patches;
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> PatchBoxIndex::meetingPairs() const {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (const auto& [box, patch] : boxes_) {
+    const auto addPair = [&pairs, patch = patch](const BoxEntry& entry) {
+      if (patch < entry.second) pairs.emplace_back(patch, entry.second);
+    };
+    tree_->rtree.query(bgi::intersects(toBox(box)), boost::make_function_output_iterator(addPair));
+  }
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  return pairs;
 }
 
 }  // namespace freespace

@@ -71,6 +71,21 @@ std::optional<AngleFunction::RootKey> spiralFacetKey(const ContactPoints& line, 
   return std::nullopt;
 }
 
+/// Whether two contacts' lines are parallel at every angle: contacts of one facet
+/// with two vertices of the other body have the same normal, n = R a1 + a2 (DESIGN.md
+/// section 4), computed from the same coordinates; so do two EE contacts of the same
+/// edges. Their segments never cross (they may only overlap where the lines
+/// coincide: patchOverlaps).
+bool alwaysParallel(const Contact& a, const Contact& b) {
+  if (a.kind != b.kind) return false;
+  switch (a.kind) {
+    case ContactKind::VertexFacet: return a.world == b.world;
+    case ContactKind::FacetVertex: return a.robot == b.robot;
+    case ContactKind::EdgeEdge: return a.robot == b.robot && a.world == b.world;
+  }
+  return false;
+}
+
 bool shareAnEnd(const PatchSegment& a, const PatchSegment& b) {
   for (const SegmentEnd& x : a.ends) {
     for (const SegmentEnd& y : b.ends) {
@@ -88,7 +103,7 @@ void appendArcEnds(const AngleSet& set, std::vector<AlgebraicAngle>& angles) {
 }
 
 /// A patch's line and end spirals in double intervals and its angle ranges in
-/// radians (from patchBoxes), for the quick rejection.
+/// radians, for the quick rejection.
 struct IntervalPatch {
   PatchLine<Interval> line;
   std::array<Spiral<Interval>, 2> ends;
@@ -96,11 +111,9 @@ struct IntervalPatch {
 };
 
 IntervalPatch intervalPatch(const PatchGeometry& patch) {
-  IntervalPatch approximate{lineOf<Interval>(patch.line),
-                            {spiralOf<Interval>(patch.ends[0]), spiralOf<Interval>(patch.ends[1])},
-                            {}};
-  for (const PatchBox& box : patchBoxes(patch)) approximate.angles.emplace_back(box.low[2], box.high[2]);
-  return approximate;
+  return {lineOf<Interval>(patch.line),
+          {spiralOf<Interval>(patch.ends[0]), spiralOf<Interval>(patch.ends[1])},
+          detail::radianRanges(patch.patch.range)};
 }
 
 /// The sign of the form over the angles, when certain; else zero.
@@ -284,16 +297,7 @@ PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t
 }  // namespace
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> candidatePatchPairs(const std::vector<PatchGeometry>& patches) {
-  const PatchBoxIndex index(patches);
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  for (const auto& [box, patch] : index.boxes()) {
-    for (std::uint32_t other : index.meeting(box)) {
-      if (patch < other) pairs.emplace_back(patch, other);
-    }
-  }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  return pairs;
+  return PatchBoxIndex(patches).meetingPairs();
 }
 
 std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra,
@@ -315,6 +319,10 @@ std::vector<PatchCurve> patchCurves(const std::vector<PatchGeometry>& patches,
     cancellation.check();
     // Segments sharing an end: their lines always meet there (an identity).
     if (shareAnEnd(patches[first].segment, patches[second].segment)) {
+      AdaptiveSignEngine(algebra.statistics()).knownIdentity(PredicateKind::SpiralFacet);
+      continue;
+    }
+    if (alwaysParallel(patches[first].patch.contact, patches[second].patch.contact)) {
       AdaptiveSignEngine(algebra.statistics()).knownIdentity(PredicateKind::SpiralFacet);
       continue;
     }

@@ -18,6 +18,9 @@ class PatchBoxIndex {
 
   /// Each patch with a box that meets the query box, once, in increasing order.
   std::vector<std::uint32_t> meeting(const PatchBox& query) const;
+  /// Every pair of patches (the smaller index first) with boxes that meet, once, in
+  /// increasing order.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> meetingPairs() const;
   /// Each patch's boxes, as indexed.
   const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes() const { return boxes_; }
 
