@@ -67,9 +67,22 @@ std::optional<std::uint32_t> SlabEndOrder::firstSlab(std::size_t i, const Holds&
   return std::nullopt;
 }
 
-std::optional<std::uint32_t> SlabEndOrder::slabOverGap(std::size_t i, std::size_t gap) const {
+std::vector<std::optional<std::uint32_t>> SlabEndOrder::slabsOverGaps(std::size_t i) const {
   const std::size_t n = angles_.size();
-  return firstSlab(i, [&](std::size_t from, std::size_t arcs) { return (gap + n - from) % n < arcs; });
+  std::vector<std::optional<std::uint32_t>> slabs(std::max<std::size_t>(n, 1));
+  // Slabs filled last to first: a gap that two slabs hold goes to the first, as in
+  // firstSlab. A patch's slabs do not overlap, so this is one pass over the gaps.
+  for (std::size_t slab = ends_[i].size(); slab-- > 0;) {
+    const auto& ends = ends_[i][slab];
+    if (!ends) {  // a whole circle without events holds everything
+      std::fill(slabs.begin(), slabs.end(), static_cast<std::uint32_t>(slab));
+      continue;
+    }
+    const auto [from, to] = *ends;
+    const std::size_t arcs = from == to ? n : (to + n - from) % n;
+    for (std::size_t step = 0; step < arcs; ++step) slabs[(from + step) % n] = static_cast<std::uint32_t>(slab);
+  }
+  return slabs;
 }
 
 std::optional<std::uint32_t> SlabEndOrder::slabHoldingAngle(std::size_t i, std::size_t k) const {

@@ -25,9 +25,10 @@ class SlabEndOrder {
   /// The place of an angle of the order (std::logic_error if it is none of them).
   std::size_t indexOf(const AlgebraicAngle& angle, AngleAlgebra& algebra) const;
 
-  /// The slab of the i-th patch whose open angles hold the open arc from angle
-  /// `gap` to the next (around to the first after the last), if any.
-  std::optional<std::uint32_t> slabOverGap(std::size_t i, std::size_t gap) const;
+  /// For each gap of the order (the open arc from an angle to the next, around to
+  /// the first after the last; one gap when there are no angles), the slab of the
+  /// i-th patch whose open angles hold it, if any.
+  std::vector<std::optional<std::uint32_t>> slabsOverGaps(std::size_t i) const;
   /// The slab of the i-th patch whose open angles hold angle k of the order.
   std::optional<std::uint32_t> slabHoldingAngle(std::size_t i, std::size_t k) const;
 

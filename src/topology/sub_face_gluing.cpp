@@ -179,11 +179,13 @@ SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
     for (const auto& [patch, unusedEnd] : around) aroundPatches.push_back(patch);
     const SlabEndOrder order(aroundPatches, subdivisions, algebra);
     const std::size_t gaps = std::max<std::size_t>(order.angles().size(), 1);
+    std::vector<std::vector<std::optional<std::uint32_t>>> slabsOverGaps;
+    for (std::size_t i = 0; i < around.size(); ++i) slabsOverGaps.push_back(order.slabsOverGaps(i));
     for (std::size_t gap = 0; gap < gaps; ++gap) {
       std::vector<Spoke> spokes;
       for (std::size_t i = 0; i < around.size(); ++i) {
         const auto [patch, k] = around[i];
-        const std::optional<std::uint32_t> slab = order.slabOverGap(i, gap);
+        const std::optional<std::uint32_t> slab = slabsOverGaps[i][gap];
         if (!slab) continue;  // outside the patch's range
         const PatchSlab& at = subdivisions[patch].slabs[*slab];
         spokes.push_back({patch, k, k == 0 ? at.faces.front() : at.faces.back()});
