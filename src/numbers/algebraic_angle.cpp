@@ -582,13 +582,7 @@ std::optional<int> AngleAlgebra::compareByKey(const AlgebraicAngle& a, const Alg
   return a.index() < b.index() ? -1 : (a.index() > b.index() ? 1 : 0);
 }
 
-int AngleAlgebra::compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
-  // Enclosures apart decide at once, before anything is copied or refined.
-  if (a.chart() != b.chart() || a.upper() < b.lower() || b.upper() < a.lower()) {
-    const int order = a.chart() != b.chart() ? (a.chart() < b.chart() ? -1 : 1) : (a.upper() < b.lower() ? -1 : 1);
-    record(PredicateKind::RootOrder, kDoubleLevel, signOf(order));
-    return order;
-  }
+int AngleAlgebra::compareOverlapping(const AlgebraicAngle& a, const AlgebraicAngle& b) {
   if (const std::optional<int> order = compareByKey(a, b)) return *order;
   // Enclosures that earlier comparisons narrowed (remembered by the functions) are
   // usually apart: that decides before any lookup or copy.

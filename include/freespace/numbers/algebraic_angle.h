@@ -280,7 +280,15 @@ class AngleAlgebra {
 
   /// -1, 0 or +1: the order of two angles along the circle cut at theta = -pi/2,
   /// i.e. by theta in [-pi/2, 3pi/2).
-  int compare(const AlgebraicAngle& a, const AlgebraicAngle& b);
+  int compare(const AlgebraicAngle& a, const AlgebraicAngle& b) {
+    // Enclosures apart decide at once (most comparisons), here in the caller.
+    if (a.chart() != b.chart() || a.upper() < b.lower() || b.upper() < a.lower()) {
+      const int order = a.chart() != b.chart() ? (a.chart() < b.chart() ? -1 : 1) : (a.upper() < b.lower() ? -1 : 1);
+      statistics_.recordDecision(PredicateKind::RootOrder, static_cast<int>(PrecisionLevel::DoubleInterval));
+      return order;
+    }
+    return compareOverlapping(a, b);
+  }
 
   /// Whether an arc's ends belong to it for `contains`: the closed arc, or the open
   /// one (its interior; the interior of an AngleSet is the union of its open arcs,
@@ -330,6 +338,8 @@ class AngleAlgebra {
 
  private:
   std::optional<int> compareInDoubles(AlgebraicAngle& a, AlgebraicAngle& b) const;
+  /// compare for angles in one chart whose double enclosures overlap.
+  int compareOverlapping(const AlgebraicAngle& a, const AlgebraicAngle& b);
   std::optional<int> compareByKey(const AlgebraicAngle& a, const AlgebraicAngle& b);
   /// The order in double intervals once the functions' tight coefficients are used.
   std::optional<int> compareTightly(AlgebraicAngle& first, AlgebraicAngle& second);
