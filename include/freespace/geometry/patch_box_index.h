@@ -21,8 +21,6 @@ class PatchBoxIndex {
   /// Every pair of patches (the smaller index first) with boxes that meet, once, in
   /// increasing order.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> meetingPairs() const;
-  /// Each patch's boxes, as indexed.
-  const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes() const { return boxes_; }
 
  private:
   struct Tree;
