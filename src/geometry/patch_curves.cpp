@@ -72,18 +72,12 @@ std::optional<AngleFunction::RootKey> spiralFacetKey(const ContactPoints& line, 
 }
 
 /// Whether two contacts' lines are parallel at every angle: contacts of one facet
-/// with two vertices of the other body have the same normal, n = R a1 + a2 (DESIGN.md
-/// section 4), computed from the same coordinates; so do two EE contacts of the same
-/// edges. Their segments never cross (they may only overlap where the lines
-/// coincide: patchOverlaps).
+/// (shareFacet), or two EE contacts of the same edges (one line). Their segments
+/// never cross (they may only overlap where the lines coincide: patchOverlaps).
 bool alwaysParallel(const Contact& a, const Contact& b) {
-  if (a.kind != b.kind) return false;
-  switch (a.kind) {
-    case ContactKind::VertexFacet: return a.world == b.world;
-    case ContactKind::FacetVertex: return a.robot == b.robot;
-    case ContactKind::EdgeEdge: return a.robot == b.robot && a.world == b.world;
-  }
-  return false;
+  const bool sameEdges = a.kind == ContactKind::EdgeEdge && b.kind == ContactKind::EdgeEdge && a.robot == b.robot &&
+                         a.world == b.world;
+  return sameEdges || shareFacet(a, b);
 }
 
 bool shareAnEnd(const PatchSegment& a, const PatchSegment& b) {

@@ -150,22 +150,16 @@ struct CoincidentPair {
   std::shared_ptr<const AngleFunction> coincidence;
 };
 
-/// Contacts with one facet, of two vertices of the other body: they have the same
-/// normal n = R a1 + a2 at every angle, so parallel lines. Only pairs whose patch
-/// boxes meet (the candidates) can overlap (a facet of one body meets most vertices
-/// of the other).
+/// Contacts of one facet with two vertices of the other body (shareFacet): parallel
+/// lines at every angle. Only pairs whose patch boxes meet (the candidates) can
+/// overlap (a facet of one body meets most vertices of the other).
 std::vector<CoincidentPair> parallelPairs(const std::vector<PatchGeometry>& patches,
                                           const std::vector<std::pair<std::uint32_t, std::uint32_t>>& candidates) {
-  const auto facetOf = [&](std::uint32_t i) -> std::optional<std::pair<int, std::uint32_t>> {
-    const Contact& contact = patches[i].patch.contact;
-    if (contact.kind == ContactKind::VertexFacet) return std::make_pair(0, contact.world);
-    if (contact.kind == ContactKind::FacetVertex) return std::make_pair(1, contact.robot);
-    return std::nullopt;
-  };
   std::vector<CoincidentPair> pairs;
   for (const auto& [a, b] : candidates) {
-    const auto facet = facetOf(a);
-    if (facet && facet == facetOf(b)) pairs.push_back({a, b, coincidence(patches[a], patches[b])});
+    if (shareFacet(patches[a].patch.contact, patches[b].patch.contact)) {
+      pairs.push_back({a, b, coincidence(patches[a], patches[b])});
+    }
   }
   return pairs;
 }

@@ -30,6 +30,17 @@ struct Contact {
   int side = 1;
 };
 
+/// Whether two contacts are of one facet with two vertices of the other body (VF
+/// with one environment triangle, or FV with one robot triangle): their lines have
+/// the same normal n = R a1 + a2 at every angle (DESIGN.md section 4), computed from
+/// the same coordinates, so they are parallel at every angle.
+inline bool shareFacet(const Contact& a, const Contact& b) {
+  if (a.kind != b.kind) return false;
+  if (a.kind == ContactKind::VertexFacet) return a.world == b.world;
+  if (a.kind == ContactKind::FacetVertex) return a.robot == b.robot;
+  return false;
+}
+
 /// The input points that determine a contact's line, copied from the meshes (a
 /// value: the angle functions built from it outlive the meshes):
 ///   VF: robot vertex p, environment triangle (q0, q1, q2)

@@ -284,7 +284,7 @@ class AngleAlgebra {
     // Enclosures apart decide at once (most comparisons), here in the caller.
     if (a.chart() != b.chart() || a.upper() < b.lower() || b.upper() < a.lower()) {
       const int order = a.chart() != b.chart() ? (a.chart() < b.chart() ? -1 : 1) : (a.upper() < b.lower() ? -1 : 1);
-      statistics_.recordDecision(PredicateKind::RootOrder, static_cast<int>(PrecisionLevel::DoubleInterval));
+      record(PredicateKind::RootOrder, static_cast<int>(PrecisionLevel::DoubleInterval), signOf(order));
       return order;
     }
     return compareOverlapping(a, b);
