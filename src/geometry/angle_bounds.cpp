@@ -1,6 +1,7 @@
 #include "angle_bounds.h"
 
 #include <algorithm>
+#include <array>
 
 #include "freespace/numbers/half_angle.h"
 
@@ -13,26 +14,70 @@ constexpr double kAnglePadding = 1e-9;
 
 }  // namespace
 
-bool signPatternMayHold(const std::vector<TrigLinear<Interval>>& forms, const std::vector<Sign>& pattern) {
-  constexpr int kRanges = 32;
-  // The ranges' cosine and sine enclosures, computed once.
-  static const std::vector<std::pair<Interval, Interval>> cosSinOfRanges = [] {
-    RoundingScope rounding;
-    std::vector<std::pair<Interval, Interval>> enclosures;
-    for (int i = 0; i < kRanges; ++i) {
-      enclosures.push_back(cosSinOver(-M_PI + 2 * M_PI * i / kRanges, std::min(M_PI, -M_PI + 2 * M_PI * (i + 1) / kRanges)));
+namespace {
+
+constexpr int kSignRanges = 64;
+
+/// Cosine and sine of each range's middle angle.
+struct RangeMiddles {
+  std::array<double, kSignRanges> cosine, sine;
+};
+
+const RangeMiddles& rangeMiddles() {
+  static const RangeMiddles middles = [] {
+    RangeMiddles m;
+    for (int i = 0; i < kSignRanges; ++i) {
+      const double angle = -M_PI + (i + 0.5) * (2 * M_PI / kSignRanges);
+      m.cosine[i] = std::cos(angle);
+      m.sine[i] = std::sin(angle);
     }
-    return enclosures;
+    return m;
   }();
-  RoundingScope rounding;
-  return std::any_of(cosSinOfRanges.begin(), cosSinOfRanges.end(), [&](const auto& cosSin) {
-    const auto& [cosine, sine] = cosSin;
-    for (std::size_t k = 0; k < forms.size(); ++k) {
-      const std::optional<Sign> sign = certainSign(valueAt(forms[k], cosine, sine));
-      if (sign && *sign != pattern[k]) return false;
-    }
-    return true;
-  });
+  return middles;
+}
+
+double middleOf(const Interval& x) { return 0.5 * x.lower() + 0.5 * x.upper(); }
+
+/// At least the distance of the middle from either end.
+double widthOf(const Interval& x) { return x.upper() - x.lower(); }
+
+}  // namespace
+
+SignMasks signMasks(const TrigLinear<Interval>& form) {
+  // With s, c, k the coefficients' middles, f(theta) = s sin + c cos + k differs from
+  // its value at a range's middle by at most sqrt(s^2 + c^2) times the half-width
+  // (the derivative's bound), and from the form's by at most the coefficients'
+  // widths (|sin|, |cos| <= 1). The last term covers rounding, the half-width is
+  // padded for the middles' own error. A NaN or infinite margin sets every bit.
+  const double s = middleOf(form.s), c = middleOf(form.c), k = middleOf(form.k);
+  const double halfWidth = (M_PI / kSignRanges) * (1 + 1e-9);
+  const double widths = widthOf(form.s) + widthOf(form.c) + widthOf(form.k);
+  const double margin =
+      (std::sqrt(s * s + c * c) * halfWidth + widths + 1e-14 * (std::fabs(s) + std::fabs(c) + std::fabs(k))) * (1 + 1e-12);
+  const RangeMiddles& middles = rangeMiddles();
+  SignMasks masks;
+  for (int i = 0; i < kSignRanges; ++i) {
+    const double value = s * middles.sine[i] + c * middles.cosine[i] + k;
+    const std::uint64_t bit = std::uint64_t{1} << i;
+    if (!(value + margin <= 0)) masks.positive |= bit;
+    if (!(value - margin >= 0)) masks.negative |= bit;
+  }
+  return masks;
+}
+
+std::vector<SignMasks> signMasksOf(const std::vector<TrigLinear<Interval>>& forms) {
+  std::vector<SignMasks> masks;
+  masks.reserve(forms.size());
+  for (const TrigLinear<Interval>& form : forms) masks.push_back(signMasks(form));
+  return masks;
+}
+
+bool signPatternMayHold(const std::vector<SignMasks>& masks, const std::vector<Sign>& pattern) {
+  std::uint64_t possible = ~std::uint64_t{0};
+  for (std::size_t k = 0; k < masks.size(); ++k) {
+    possible &= pattern[k] == Sign::Positive ? masks[k].positive : masks[k].negative;
+  }
+  return possible != 0;
 }
 
 std::vector<RadianRange> radianRanges(const AngleSet& set) {

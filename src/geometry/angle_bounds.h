@@ -4,6 +4,7 @@
 // intervals before any exact work.
 
 #include <cmath>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -47,11 +48,25 @@ inline std::pair<Interval, Interval> cosSinOver(double from, double to) {
   return cosSinOver(RadianCosSin::at(from), RadianCosSin::at(to));
 }
 
-/// Whether the trig-linear forms may have the signs `pattern` (Positive or Negative,
-/// one per form) together, strictly, at some angle: false only when on each of 32
-/// ranges that cover the circle some form has the opposite sign or zero for
-/// certain (double intervals). Then the closure of the set where they do is empty.
-bool signPatternMayHold(const std::vector<TrigLinear<Interval>>& forms, const std::vector<Sign>& pattern);
+/// Over each of the 64 equal ranges of angles that cover the circle (range i from
+/// -pi + i pi / 32): bit i of `positive` is set unless the form is <= 0 on the whole
+/// range for certain, bit i of `negative` unless it is >= 0 for certain.
+struct SignMasks {
+  std::uint64_t positive = 0, negative = 0;
+};
+
+/// The sign masks of a trig-linear form, from its value at each range's middle and a
+/// bound on its change over the range (plain doubles with a margin for rounding).
+SignMasks signMasks(const TrigLinear<Interval>& form);
+
+/// Whether forms with these masks may have the signs `pattern` (Positive or Negative,
+/// one per form) together, strictly, at some angle: false only when on each range
+/// some form has the opposite sign or zero for certain. Then the closure of the set
+/// where they do is empty.
+bool signPatternMayHold(const std::vector<SignMasks>& masks, const std::vector<Sign>& pattern);
+
+/// The masks of each form (signMasks).
+std::vector<SignMasks> signMasksOf(const std::vector<TrigLinear<Interval>>& forms);
 
 /// Ranges in radians that contain the angle set: each arc from the lower end of its
 /// first angle's enclosure to the upper end of its last's (theta grows with t in

@@ -87,12 +87,12 @@ std::vector<TrigLinear<Interval>> wedgeForms(const std::array<Point3, 2>& robotE
 }
 
 /// Whether one of the two sign patterns of the wedge conditions may hold somewhere,
-/// from their forms (decided in double intervals over ranges of angles; true when
-/// unsure).
+/// from their forms (decided in doubles over ranges of angles; true when unsure).
 bool mayTouch(const std::vector<TrigLinear<Interval>>& forms, const std::vector<Sign>& pattern) {
+  const std::vector<detail::SignMasks> masks = detail::signMasksOf(forms);
   std::vector<Sign> opposite;
   for (Sign sign : pattern) opposite.push_back(-sign);
-  return detail::signPatternMayHold(forms, pattern) || detail::signPatternMayHold(forms, opposite);
+  return detail::signPatternMayHold(masks, pattern) || detail::signPatternMayHold(masks, opposite);
 }
 
 std::array<Point3, 2> endsOf(const Mesh& mesh, const MeshEdge& edge) {

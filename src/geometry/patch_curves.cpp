@@ -249,11 +249,13 @@ PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t
   std::vector<AlgebraicAngle> breakpoints;
   appendArcEnds(a.patch.range, breakpoints);
   appendArcEnds(b.patch.range, breakpoints);
-  // Side k: the line of `line` at end `end` of `owner`; false when it vanishes.
-  const auto addSide = [&](int k, const PatchGeometry& line, const PatchGeometry& owner, int end) {
+  // Side k: the line of `line` at end `end` of `owner`, its roots where `keep` holds
+  // added to `into`; false when it vanishes.
+  const auto addSide = [&](int k, const PatchGeometry& line, const PatchGeometry& owner, int end, const auto& keep,
+                           std::vector<AlgebraicAngle>& into) {
     sides[k] = sideFunction(line, owner, end, forms[k], algebra);
     for (const AlgebraicAngle& root : sides[k].roots) {
-      if (inBothRanges(root)) breakpoints.push_back(root);
+      if (keep(root)) into.push_back(root);
     }
     return !sides[k].zero;
   };
@@ -261,17 +263,27 @@ PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t
     const Sign one = algebra.signAt(*sides[first].function, angle);
     return one != Sign::Zero && algebra.signAt(*sides[first + 1].function, angle) == -one;
   };
-  if (!addSide(0, b, a, 0) || !addSide(1, b, a, 1)) return curve;
+  if (!addSide(0, b, a, 0, inBothRanges, breakpoints) || !addSide(1, b, a, 1, inBothRanges, breakpoints)) return curve;
   // First a's ends alone: where they are never on opposite sides of b's line in both
-  // ranges, the segments never cross and b's ends need not be looked at (most
-  // candidate pairs end here).
-  const AngleSet aAcross = algebra.closureOver(breakpoints, [&](const AlgebraicAngle& angle) {
+  // ranges, the segments never cross and b's ends need not be looked at (about
+  // a third of the pairs that reach this test end here).
+  const AngleSet aAcross = algebra.closureOver(std::move(breakpoints), [&](const AlgebraicAngle& angle) {
     return inBothRanges(angle) && opposite(angle, 0);
   });
   if (aAcross.empty()) return curve;
-  if (!addSide(2, a, b, 0) || !addSide(3, a, b, 1)) return curve;
-  curve.angles = algebra.closureOver(std::move(breakpoints), [&](const AlgebraicAngle& angle) {
-    return inBothRanges(angle) && opposite(angle, 0) && opposite(angle, 2);
+  // Then b's ends inside that set: the closure of the set where both properties hold
+  // is the closure, over the gaps between aAcross's ends and the roots of b's sides
+  // inside it, of the gaps inside aAcross where b's ends are on opposite sides (the
+  // first property may fail at single points inside aAcross only, which the closure
+  // fills).
+  const auto inAAcross = [&](const AlgebraicAngle& angle) { return algebra.contains(aAcross, angle); };
+  std::vector<AlgebraicAngle> acrossBreakpoints;
+  appendArcEnds(aAcross, acrossBreakpoints);
+  if (!addSide(2, a, b, 0, inAAcross, acrossBreakpoints) || !addSide(3, a, b, 1, inAAcross, acrossBreakpoints)) {
+    return curve;
+  }
+  curve.angles = algebra.closureOver(std::move(acrossBreakpoints), [&](const AlgebraicAngle& angle) {
+    return inAAcross(angle) && opposite(angle, 2);
   });
   // Each arc end is where one of the four SF functions vanishes or a range ends:
   // the property above can change nowhere else.

@@ -63,10 +63,10 @@ std::vector<TrigLinear<Interval>> conditionForms(ContactKind kind, const Mesh& v
 }
 
 /// Whether every edge at the vertex may point out of the facet's plane at once at
-/// some angle, from the conditions' forms (decided in double intervals over ranges of
-/// angles; true when unsure).
+/// some angle, from the conditions' forms (decided in doubles over ranges of angles;
+/// true when unsure).
 bool mayBeCompatible(const std::vector<TrigLinear<Interval>>& forms) {
-  return detail::signPatternMayHold(forms, std::vector<Sign>(forms.size(), Sign::Positive));
+  return detail::signPatternMayHold(detail::signMasksOf(forms), std::vector<Sign>(forms.size(), Sign::Positive));
 }
 
 /// The patches of one body's pointed vertices against the other body's triangles.
