@@ -486,6 +486,7 @@ bool AlgebraicAngle::useTightCoefficients() {
 std::vector<AlgebraicAngle> AngleAlgebra::roots(const std::shared_ptr<const AngleFunction>& function,
                                                 PredicateKind kind) {
   std::vector<AlgebraicAngle> angles;
+  angles.reserve(4);  // the roots of a trig-linear form (EF, SF) and most others
   // Enclosures from bisection (Descartes' rule) can be as wide as the chart: they
   // are narrowed here once rather than by every comparison.
   const auto addEnclosures = [&](int chart, const std::vector<Interval>& enclosures, bool tight) {

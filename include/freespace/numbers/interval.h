@@ -13,6 +13,14 @@
 #include <xmmintrin.h>
 #endif
 
+/// The interval operations are a few instructions each and run in every predicate's
+/// inner loop: inlined even where the compiler's size heuristics would call them.
+#if defined(__GNUC__)
+#define FREESPACE_INTERVAL_INLINE __attribute__((always_inline)) inline
+#else
+#define FREESPACE_INTERVAL_INLINE inline
+#endif
+
 namespace freespace {
 
 namespace detail {
@@ -59,29 +67,31 @@ class Interval {
   double lower() const { return -negatedLower_; }
   double upper() const { return upper_; }
 
-  friend Interval operator+(const Interval& a, const Interval& b) {
+  friend FREESPACE_INTERVAL_INLINE Interval operator+(const Interval& a, const Interval& b) {
     return fromNegatedLower(a.negatedLower_ + b.negatedLower_, a.upper_ + b.upper_);
   }
-  friend Interval operator-(const Interval& a, const Interval& b) {
+  friend FREESPACE_INTERVAL_INLINE Interval operator-(const Interval& a, const Interval& b) {
     return fromNegatedLower(a.negatedLower_ + b.upper_, a.upper_ + b.negatedLower_);
   }
-  friend Interval operator-(const Interval& a) { return fromNegatedLower(a.upper_, a.negatedLower_); }
+  friend FREESPACE_INTERVAL_INLINE Interval operator-(const Interval& a) { return fromNegatedLower(a.upper_, a.negatedLower_); }
 
-  friend Interval operator*(const Interval& a, const Interval& b) {
+  friend FREESPACE_INTERVAL_INLINE Interval operator*(const Interval& a, const Interval& b) {
     const double al = -a.negatedLower_, bl = -b.negatedLower_, ah = a.upper_, bh = b.upper_;
     return extremes(al * bl, al * bh, ah * bl, ah * bh, (-al) * bl, (-al) * bh, (-ah) * bl, (-ah) * bh);
   }
 
   /// Division by an interval that contains zero is a programming error: no
   /// predicate divides by something that may vanish.
-  friend Interval operator/(const Interval& a, const Interval& b) {
-    if (b.upper_ < 0) return (-a) / (-b);
-    const double bl = -b.negatedLower_, bh = b.upper_;
-    if (!(bl > 0)) throw std::domain_error("interval division by an interval that may contain zero");
-    // For a positive divisor the largest quotient is ah / bl or ah / bh (as ah is
-    // positive or not), and the smallest al / bh or al / bl.
-    const double al = -a.negatedLower_, ah = a.upper_;
-    const double upper = std::max(ah / bl, ah / bh), negatedLower = std::max((-al) / bl, (-al) / bh);
+  friend FREESPACE_INTERVAL_INLINE Interval operator/(const Interval& a, const Interval& b) {
+    // A negative divisor: a / b = (-a) / (-b).
+    const bool negative = b.upper_ < 0;
+    const Interval n = negative ? -a : a, d = negative ? -b : b;
+    const double bl = -d.negatedLower_, bh = d.upper_;
+    if (!(bl > 0)) divisionByZero();
+    // For a positive divisor the largest quotient is nh / bl or nh / bh (as nh is
+    // positive or not), and the smallest nl / bh or nl / bl.
+    const double nl = -n.negatedLower_, nh = n.upper_;
+    const double upper = std::max(nh / bl, nh / bh), negatedLower = std::max((-nl) / bl, (-nl) / bh);
     if (std::isnan(upper + negatedLower)) return fromNegatedLower(upper + negatedLower, upper + negatedLower);
     return fromNegatedLower(negatedLower, upper);
   }
@@ -98,7 +108,11 @@ class Interval {
   }
 
  private:
-  static Interval fromNegatedLower(double negatedLower, double upper) {
+  [[noreturn, gnu::noinline, gnu::cold]] static void divisionByZero() {
+    throw std::domain_error("interval division by an interval that may contain zero");
+  }
+
+  FREESPACE_INTERVAL_INLINE static Interval fromNegatedLower(double negatedLower, double upper) {
     Interval result;
     result.negatedLower_ = negatedLower;
     result.upper_ = upper;
@@ -108,7 +122,8 @@ class Interval {
   /// Upper bound: the largest of p0..p3 (rounded up); lower bound from the largest of
   /// the negated products q0..q3 (each rounded up). std::max would drop a NaN, so
   /// a NaN in any product is checked for and propagated.
-  static Interval extremes(double p0, double p1, double p2, double p3, double q0, double q1, double q2, double q3) {
+  FREESPACE_INTERVAL_INLINE static Interval extremes(double p0, double p1, double p2, double p3, double q0, double q1,
+                                                    double q2, double q3) {
     if (std::isnan(p0 + p1 + p2 + p3)) return fromNegatedLower(std::numeric_limits<double>::quiet_NaN(), p0 + p1 + p2 + p3);
     return fromNegatedLower(std::max(std::max(q0, q1), std::max(q2, q3)), std::max(std::max(p0, p1), std::max(p2, p3)));
   }
@@ -141,7 +156,7 @@ using RoundingScope = ScopedRounding<FE_UPWARD>;
 
 /// Certain sign of an interval, or nothing when it contains zero without being
 /// exactly zero (or is NaN).
-inline std::optional<Sign> certainSign(const Interval& value) {
+FREESPACE_INTERVAL_INLINE std::optional<Sign> certainSign(const Interval& value) {
   if (!(value.lower() <= value.upper())) return std::nullopt;
   if (value.lower() > 0) return Sign::Positive;
   if (value.upper() < 0) return Sign::Negative;
