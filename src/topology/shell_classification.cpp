@@ -1,5 +1,6 @@
 #include "freespace/topology/shell_classification.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -11,6 +12,8 @@ namespace {
 
 using slices::Point;
 
+/// The first distance tried from a sub-face, relative to its size.
+const Rational kLargest = powerOfHalf(10);
 /// The smallest distance tried from a sub-face, relative to its size: from the exact
 /// middle of its piece, and from one found in doubles.
 const Rational kSmallest = powerOfHalf(200);
@@ -53,15 +56,17 @@ PieceMiddle middleExactly(const Arrangement& arrangement, SubFaceId face, const 
   return {segment.at((low + high) / 2), segment.nx, segment.ny};
 }
 
-/// A probe off the middle along the normal, at distances shrinking from 2^-10 of the
-/// size to `smallest`, until the ray from it across the segment meets the sub-face
-/// first, from the probe's side.
+/// A probe off the middle along the normal, at distances shrinking from kLargest of
+/// the size to `smallest`, until the ray from it across the segment meets the sub-face
+/// first, from the probe's side. A ray that meets another segment first tells how
+/// near that one is: the next probe is nearer the sub-face than it (or 16 times
+/// nearer than the last, if that is nearer still).
 std::optional<SubFaceProbe> probeFrom(const PieceMiddle& at, const SliceRays& rays, SubFaceId face,
                                       const PatchSlab& slab, ProbeSide side, const Rational& smallest) {
   const int sign = side == ProbeSide::Positive ? 1 : -1;
   const Point& middle = at.middle;
   const Rational scale = (1 + abs(middle[0]) + abs(middle[1])) / (abs(at.nx) + abs(at.ny));
-  for (Rational distance = scale / 1024; distance > scale * smallest; distance /= 16) {
+  for (Rational distance = scale * kLargest; distance > scale * smallest;) {
     const Point off{middle[0] + sign * distance * at.nx, middle[1] + sign * distance * at.ny};
     // Toward the mirror point across the segment, so that the segment is met inside
     // the ray (where double intervals can tell) rather than at its end.
@@ -71,6 +76,13 @@ std::optional<SubFaceProbe> probeFrom(const PieceMiddle& at, const SliceRays& ra
       const auto [cosine, sine] = exactCosSin(slab.sample);
       return SubFaceProbe{{cosine, sine, off[0], off[1]}};
     }
+    // The sub-face is half way to the mirror point: a segment met at a fraction f < 1/2
+    // of the way crosses the normal (2 f - 1) distance from the middle.
+    Rational next = distance / 16;
+    if (hit.kind != RayHit::Kind::Nothing && hit.along > 0 && hit.along < 0.5) {
+      next = std::min(next, distance * Rational(0.5 - hit.along));
+    }
+    distance = next;
   }
   return std::nullopt;
 }

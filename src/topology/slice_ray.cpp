@@ -249,6 +249,7 @@ std::optional<RayHit> SliceRays::Impl::castInIntervals(const AlgebraicAngle& ang
   hit.kind = RayHit::Kind::SubFace;
   hit.face = {nearest->patch, slab->faces[gap]};
   hit.fromPositiveSide = *side == Sign::Positive;
+  hit.along = 0.5 * nearest->distance.lower() + 0.5 * nearest->distance.upper();
   return hit;
 }
 
@@ -280,6 +281,7 @@ RayHit SliceRays::Impl::castExactly(const AlgebraicAngle& angle, const Point& fr
     return hit;
   }
   hit.kind = RayHit::Kind::Degenerate;
+  hit.along = first->distance.convert_to<double>();
   if (tie || first->alongSegment || first->lambda == 0 || first->lambda == 1) return hit;
   const PatchSlab* slab = slabAt(arrangement.subdivisions[first->patch], angle, algebra);
   if (!slab) return hit;  // the angle is an event of the patch

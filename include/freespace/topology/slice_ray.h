@@ -27,6 +27,9 @@ struct RayHit {
   SubFaceId face;
   /// Whether the ray arrives from the sub-face's positive (free) side.
   bool fromPositiveSide = false;
+  /// Where it meets the first segment, as s in start + s * direction (rounded to a
+  /// double; a SubFace or Degenerate hit not at the start only).
+  double along = 0;
 };
 
 /// Rays in the slices of an arrangement at rational angles, decided exactly: the
