@@ -1,5 +1,7 @@
 #include "interval_root_isolation.h"
 
+#include <algorithm>
+
 #include "freespace/numbers/angle_polynomial.h"
 
 namespace freespace::detail {
@@ -9,24 +11,33 @@ namespace {
 /// Bisection depth after which the isolation gives up (roots closer than about 2^-40).
 constexpr int kMaximumDepth = 40;
 
-/// (x + 1)^n p((a x + b) / (x + 1)) = sum of c_i (a x + b)^i (x + 1)^(n - i).
+/// Replaces the coefficients of c(y) by those of c(y + s) (Taylor shift by Horner's
+/// scheme, in place).
+template <class T>
+void taylorShift(std::vector<T>& c, const T& s) {
+  const std::size_t n = c.size() - 1;
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t j = n; j-- > i;) c[j] = c[j] + s * c[j + 1];
+  }
+}
+
+/// (x + 1)^n p((a x + b) / (x + 1)) = sum of c_i (a x + b)^i (x + 1)^(n - i). With
+/// r(y) = p(b + (a - b) y) and R the reversal of r, it is the reversal of R(z + 1):
+/// two Taylor shifts and a scaling on one vector.
 template <class T>
 Polynomial<T> descartesTransform(const Polynomial<T>& p, double a, double b) {
-  const std::size_t n = p.size() - 1;
-  const Polynomial<T> numerator({T(b), T(a)});
-  const Polynomial<T> denominator({T(1), T(1)});
-  std::vector<Polynomial<T>> numeratorPowers{Polynomial<T>({T(1)})};
-  std::vector<Polynomial<T>> denominatorPowers{Polynomial<T>({T(1)})};
-  for (std::size_t i = 1; i <= n; ++i) {
-    numeratorPowers.push_back(numeratorPowers.back() * numerator);
-    denominatorPowers.push_back(denominatorPowers.back() * denominator);
+  std::vector<T> c = p.coefficients();
+  taylorShift(c, T(b));
+  const T scale = T(a) - T(b);
+  T power(1);
+  for (std::size_t i = 1; i < c.size(); ++i) {
+    power = power * scale;
+    c[i] = c[i] * power;
   }
-  std::vector<T> result(n + 1, T(0));
-  for (std::size_t i = 0; i <= n; ++i) {
-    const Polynomial<T> term = numeratorPowers[i] * denominatorPowers[n - i];
-    for (std::size_t k = 0; k <= n; ++k) result[k] += p.coefficients()[i] * term.coefficients()[k];
-  }
-  return Polynomial<T>(std::move(result));
+  std::reverse(c.begin(), c.end());
+  taylorShift(c, T(1));
+  std::reverse(c.begin(), c.end());
+  return Polynomial<T>(std::move(c));
 }
 
 /// Sign variations of the coefficients, skipping exact zeros; nothing when a
