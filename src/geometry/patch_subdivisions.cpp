@@ -355,6 +355,7 @@ class PatchSweep {
     }
     const std::vector<EventGroup> groups = groupFrom(arc.from, inside);
     const std::size_t first = subdivision_.slabs.size();
+    subdivision_.slabs.reserve(first + groups.size() - 1);
     for (std::size_t k = 0; k + 1 < groups.size(); ++k) {
       addSlab(groups[k].angle, groups[k + 1].angle, algebra_.rationalBetween(groups[k].angle, groups[k + 1].angle));
     }
@@ -373,6 +374,7 @@ class PatchSweep {
     }
     const std::vector<EventGroup> groups = groupFrom(origin, events_);
     const std::size_t count = groups.size();
+    subdivision_.slabs.reserve(count);
     for (std::size_t k = 0; k < count; ++k) {
       const AlgebraicAngle& from = groups[k].angle;
       const AlgebraicAngle& to = groups[(k + 1) % count].angle;

@@ -1,7 +1,6 @@
 #include "freespace/topology/sub_face_gluing.h"
 
 #include <algorithm>
-#include <map>
 #include <optional>
 #include <stdexcept>
 #include <tuple>
@@ -77,24 +76,25 @@ std::optional<std::vector<std::size_t>> certainOrderFrom(const std::array<double
     halves.push_back(*half);
   }
   // Every pair certain first: a comparison that may be wrong must not reach the sort.
-  std::vector<std::vector<bool>> isBefore(directions.size(), std::vector<bool>(directions.size(), false));
-  for (std::size_t a = 0; a < directions.size(); ++a) {
-    for (std::size_t b = a + 1; b < directions.size(); ++b) {
+  const std::size_t n = directions.size();
+  std::vector<char> isBefore(n * n, 0);  // a before b at a * n + b
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = a + 1; b < n; ++b) {
       if (halves[a] != halves[b]) {
-        isBefore[a][b] = halves[a] < halves[b];
+        isBefore[a * n + b] = halves[a] < halves[b];
       } else {
         const auto& u = directions[a];
         const auto& v = directions[b];
         const std::optional<Sign> cross = certainSign(u[0] * v[1] - u[1] * v[0]);
         if (!cross || *cross == Sign::Zero) return std::nullopt;
-        isBefore[a][b] = *cross == Sign::Positive;
+        isBefore[a * n + b] = *cross == Sign::Positive;
       }
-      isBefore[b][a] = !isBefore[a][b];
+      isBefore[b * n + a] = !isBefore[a * n + b];
     }
   }
-  std::vector<std::size_t> order(directions.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return isBefore[a][b]; });
+  std::vector<std::size_t> order(n);
+  for (std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return isBefore[a * n + b] != 0; });
   return order;
 }
 
@@ -132,6 +132,27 @@ AlgebraicAngle sampleInGap(const std::vector<AlgebraicAngle>& angles, std::size_
   return algebra.rationalBetween(angles[gap], angles[(gap + 1) % angles.size()]);
 }
 
+/// The segment ends (patch, end) at each spiral, spirals in the order of their
+/// features, each spiral's ends by patch and end.
+std::vector<std::vector<std::pair<std::uint32_t, int>>> endsBySpiral(const std::vector<PatchGeometry>& patches) {
+  using SpiralKey = std::tuple<bool, std::uint32_t, std::uint32_t, std::uint32_t>;
+  std::vector<std::tuple<SpiralKey, std::uint32_t, int>> ends;
+  ends.reserve(2 * patches.size());
+  for (std::uint32_t patch = 0; patch < patches.size(); ++patch) {
+    for (int k = 0; k < 2; ++k) {
+      const SegmentEnd& end = patches[patch].segment.ends[k];
+      ends.emplace_back(SpiralKey{end.robotVertex, end.vertex, end.edge[0], end.edge[1]}, patch, k);
+    }
+  }
+  std::sort(ends.begin(), ends.end());
+  std::vector<std::vector<std::pair<std::uint32_t, int>>> groups;
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    if (i == 0 || std::get<0>(ends[i]) != std::get<0>(ends[i - 1])) groups.emplace_back();
+    groups.back().emplace_back(std::get<1>(ends[i]), std::get<2>(ends[i]));
+  }
+  return groups;
+}
+
 }  // namespace
 
 SubFaceGluing glueAcrossCurves(const std::vector<PatchGeometry>& patches, const std::vector<PatchCurve>& curves,
@@ -162,16 +183,8 @@ SubFaceGluing glueAcrossCurves(const std::vector<PatchGeometry>& patches, const 
 SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
                                 const std::vector<PatchSubdivision>& subdivisions, AngleAlgebra& algebra,
                                 const Cancellation& cancellation) {
-  std::map<std::tuple<bool, std::uint32_t, std::uint32_t, std::uint32_t>, std::vector<std::pair<std::uint32_t, int>>>
-      bySpiral;
-  for (std::uint32_t patch = 0; patch < patches.size(); ++patch) {
-    for (int k = 0; k < 2; ++k) {
-      const SegmentEnd& end = patches[patch].segment.ends[k];
-      bySpiral[{end.robotVertex, end.vertex, end.edge[0], end.edge[1]}].push_back({patch, k});
-    }
-  }
   GlueList glues;
-  for (const auto& [spiral, around] : bySpiral) {
+  for (const std::vector<std::pair<std::uint32_t, int>>& around : endsBySpiral(patches)) {
     cancellation.check();
     // Over each arc between consecutive slab ends of the patches around the spiral,
     // the spokes and their slabs stay the same: one sample decides the arc.
