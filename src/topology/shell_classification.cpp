@@ -77,7 +77,8 @@ std::optional<SubFaceProbe> probeFrom(const PieceMiddle& at, const SliceRays& ra
       return SubFaceProbe{{cosine, sine, off[0], off[1]}};
     }
     // The sub-face is half way to the mirror point: a segment met at a fraction f < 1/2
-    // of the way crosses the normal (2 f - 1) distance from the middle.
+    // of the way crosses the normal (1 - 2 f) distance from the middle, on the probe's
+    // side; the next probe goes half as far.
     Rational next = distance / 16;
     if (hit.kind != RayHit::Kind::Nothing && hit.along > 0 && hit.along < 0.5) {
       next = std::min(next, distance * Rational(0.5 - hit.along));
