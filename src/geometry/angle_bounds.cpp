@@ -36,8 +36,6 @@ const RangeMiddles& rangeMiddles() {
   return middles;
 }
 
-double middleOf(const Interval& x) { return 0.5 * x.lower() + 0.5 * x.upper(); }
-
 /// At least the distance of the middle from either end.
 double widthOf(const Interval& x) { return x.upper() - x.lower(); }
 
@@ -49,7 +47,7 @@ SignMasks signMasks(const TrigLinear<Interval>& form) {
   // (the derivative's bound), and from the form's by at most the coefficients'
   // widths (|sin|, |cos| <= 1). The last term covers rounding, the half-width is
   // padded for the middles' own error. A NaN or infinite margin sets every bit.
-  const double s = middleOf(form.s), c = middleOf(form.c), k = middleOf(form.k);
+  const double s = form.s.midpoint(), c = form.c.midpoint(), k = form.k.midpoint();
   const double halfWidth = (M_PI / kSignRanges) * (1 + 1e-9);
   const double widths = widthOf(form.s) + widthOf(form.c) + widthOf(form.k);
   const double margin =

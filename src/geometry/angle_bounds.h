@@ -1,7 +1,7 @@
 #pragma once
 
-// Conservative double bounds over ranges of angles, for quick rejections in double
-// intervals before any exact work.
+// Conservative double bounds over ranges of angles, for quick rejections in doubles
+// and double intervals before any exact work.
 
 #include <cmath>
 #include <cstdint>

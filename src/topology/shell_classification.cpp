@@ -38,13 +38,12 @@ std::optional<PieceMiddle> middleInDoubles(const Arrangement& arrangement, SubFa
   const double lambda = 0.5 * piece->first.upper() + 0.5 * piece->second.lower();
   const std::array<Interval, 2> end0 = slice.end(patch, 0), end1 = slice.end(patch, 1);
   const LineAtAngle<Interval> line = slice.line(patch);
-  const auto middleOf = [](const Interval& x) { return 0.5 * x.lower() + 0.5 * x.upper(); };
   PieceMiddle result;
   for (int axis = 0; axis < 2; ++axis) {
-    result.middle[axis] = middleOf(end0[axis] + Interval(lambda) * (end1[axis] - end0[axis]));
+    result.middle[axis] = (end0[axis] + Interval(lambda) * (end1[axis] - end0[axis])).midpoint();
   }
-  result.nx = middleOf(line.nx);
-  result.ny = middleOf(line.ny);
+  result.nx = line.nx.midpoint();
+  result.ny = line.ny.midpoint();
   if (result.nx == 0 && result.ny == 0) return std::nullopt;
   return result;
 }

@@ -249,7 +249,7 @@ std::optional<RayHit> SliceRays::Impl::castInIntervals(const AlgebraicAngle& ang
   hit.kind = RayHit::Kind::SubFace;
   hit.face = {nearest->patch, slab->faces[gap]};
   hit.fromPositiveSide = *side == Sign::Positive;
-  hit.along = 0.5 * nearest->distance.lower() + 0.5 * nearest->distance.upper();
+  hit.along = nearest->distance.midpoint();
   return hit;
 }
 

@@ -66,6 +66,8 @@ class Interval {
 
   double lower() const { return -negatedLower_; }
   double upper() const { return upper_; }
+  /// The middle of the bounds, rounded (a point inside for finite bounds).
+  double midpoint() const { return 0.5 * lower() + 0.5 * upper(); }
 
   friend FREESPACE_INTERVAL_INLINE Interval operator+(const Interval& a, const Interval& b) {
     return fromNegatedLower(a.negatedLower_ + b.negatedLower_, a.upper_ + b.upper_);
