@@ -53,6 +53,24 @@ struct EndsAtAngle {
   T cosine, sine;
 };
 
+/// The sorted ranges [first, middle) and [middle, last) merged, each element of the
+/// second range placed in the first by bisection: fewer comparisons than a merge
+/// when the second range is short.
+template <class Iterator, class Before>
+std::vector<typename Iterator::value_type> mergedByBisection(Iterator first, Iterator middle, Iterator last,
+                                                               const Before& before) {
+  std::vector<typename Iterator::value_type> merged;
+  merged.reserve(static_cast<std::size_t>(last - first));
+  for (Iterator inserted = middle; inserted != last; ++inserted) {
+    const Iterator place = std::upper_bound(first, middle, *inserted, before);
+    merged.insert(merged.end(), first, place);
+    merged.push_back(*inserted);
+    first = place;
+  }
+  merged.insert(merged.end(), first, middle);
+  return merged;
+}
+
 /// With V_g(k) the value of g's line at end k of the patch, g crosses the segment at
 /// lambda_g = V_g(0) / (V_g(0) - V_g(1)), and V_g(0), V_g(1) have opposite signs, so
 ///   sign(lambda_h - lambda_g) = sign((V_g(0) V_h(1) - V_h(0) V_g(1)) V_g(0) V_h(0)).
@@ -601,8 +619,14 @@ class PatchSweep {
       if (inserted) known->second = closeOrder(first.curve.curve, first.denominator, second.curve.curve, second.denominator);
       return swapped ? -known->second : known->second;
     };
-    std::sort(crossings.begin(), crossings.end(),
-              [&](const InteriorCrossing& g, const InteriorCrossing& h) { return order(g, h) > 0; });
+    // The curves not at the event keep their slab order; those at it (usually few)
+    // are sorted among themselves, and each is placed among the others by bisection.
+    const auto before = [&](const InteriorCrossing& g, const InteriorCrossing& h) { return order(g, h) > 0; };
+    const auto atEvent = std::stable_partition(crossings.begin(), crossings.end(),
+                                               [](const InteriorCrossing& c) { return c.curve.placeBefore.has_value(); });
+    std::sort(crossings.begin(), atEvent, before);
+    std::sort(atEvent, crossings.end(), before);
+    crossings = mergedByBisection(crossings.begin(), atEvent, crossings.end(), before);
     InteriorOrder sorted{{}, std::vector<int>(crossings.size(), 1)};
     for (std::size_t i = 0; i < crossings.size(); ++i) {
       sorted.curves.push_back(crossings[i].curve.curve);

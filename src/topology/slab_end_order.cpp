@@ -19,22 +19,51 @@ bool eventless(const PatchSlab& slab, AngleAlgebra& algebra) {
   return algebra.compare(slab.from, slab.to) == 0 && algebra.compare(slab.from, slab.sample) == 0;
 }
 
+/// Merges the sorted runs of `ends` that start at `starts` (increasing, the first
+/// at 0) pairwise, round by round: log(runs) passes over the ends.
+template <class Before>
+void mergeRuns(std::vector<TaggedEnd>& ends, std::vector<std::size_t> starts, const Before& before) {
+  const auto at = [&](std::size_t index) { return ends.begin() + static_cast<std::ptrdiff_t>(index); };
+  while (starts.size() > 1) {
+    std::vector<std::size_t> merged;
+    for (std::size_t r = 0; r < starts.size(); r += 2) {
+      merged.push_back(starts[r]);
+      if (r + 1 == starts.size()) break;
+      const std::size_t end = r + 2 < starts.size() ? starts[r + 2] : ends.size();
+      std::inplace_merge(at(starts[r]), at(starts[r + 1]), at(end), before);
+    }
+    starts = std::move(merged);
+  }
+}
+
 }  // namespace
 
 SlabEndOrder::SlabEndOrder(const std::vector<std::uint32_t>& patches, const std::vector<PatchSubdivision>& subdivisions,
                            AngleAlgebra& algebra) {
+  const auto before = [&](const TaggedEnd& a, const TaggedEnd& b) { return algebra.compare(*a.angle, *b.angle) < 0; };
+  // A patch's sweep makes its slabs follow each other counterclockwise from the cut,
+  // each ending where the next begins and the last where the first begins: with
+  // that last end moved to the front, its ends are one sorted run. The runs are
+  // merged (a run out of order, which no sweep makes, is sorted first).
   std::vector<TaggedEnd> tagged;
+  std::vector<std::size_t> runStarts;
   for (std::size_t i = 0; i < patches.size(); ++i) {
     const std::vector<PatchSlab>& slabs = subdivisions[patches[i]].slabs;
     ends_.emplace_back(slabs.size());
+    const std::size_t start = tagged.size();
     for (std::size_t s = 0; s < slabs.size(); ++s) {
       if (eventless(slabs[s], algebra)) continue;
       tagged.push_back({&slabs[s].from, i, s, false});
       tagged.push_back({&slabs[s].to, i, s, true});
     }
+    if (start == tagged.size()) continue;
+    std::rotate(tagged.begin() + static_cast<std::ptrdiff_t>(start), tagged.end() - 1, tagged.end());
+    if (!std::is_sorted(tagged.begin() + static_cast<std::ptrdiff_t>(start), tagged.end(), before)) {
+      std::sort(tagged.begin() + static_cast<std::ptrdiff_t>(start), tagged.end(), before);
+    }
+    runStarts.push_back(start);
   }
-  std::sort(tagged.begin(), tagged.end(),
-            [&](const TaggedEnd& a, const TaggedEnd& b) { return algebra.compare(*a.angle, *b.angle) < 0; });
+  mergeRuns(tagged, std::move(runStarts), before);
   for (const TaggedEnd& end : tagged) {
     if (angles_.empty() || algebra.compare(angles_.back(), *end.angle) != 0) angles_.push_back(*end.angle);
     auto& slabEnds = ends_[end.patch][end.slab];
