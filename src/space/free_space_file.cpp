@@ -496,6 +496,7 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
     impl->meshes.record = {space.perturbed, space.seed, space.relativeSize, space.absoluteSize};
     Arrangement& arrangement = impl->arrangement;
     for (const saved::Patch& patch : space.patches) arrangement.patches.push_back(patchOf(patch, angles));
+    arrangement.boxIndex = std::make_shared<const PatchBoxIndex>(arrangement.patches);
     for (const saved::Curve& stored : space.curves) {
       PatchCurve curve{stored.first, stored.second, angles.set(stored.angles), {}};
       if (stored.ends.size() != 12 * curve.angles.arcs.size()) throw std::out_of_range("a curve's ends");

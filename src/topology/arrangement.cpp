@@ -9,7 +9,8 @@ Arrangement buildArrangement(std::vector<PatchGeometry> patches, AngleAlgebra& a
   // The pairs of patches whose boxes meet: the only ones that can cross or overlap.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates;
   a.curves = clock.run("curves", [&] {
-    candidates = candidatePatchPairs(a.patches);
+    a.boxIndex = std::make_shared<const PatchBoxIndex>(a.patches);
+    candidates = a.boxIndex->meetingPairs();
     return patchCurves(a.patches, candidates, algebra, cancellation);
   });
   a.overlaps = clock.run("overlaps", [&] { return patchOverlaps(a.patches, candidates, algebra); });

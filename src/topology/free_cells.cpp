@@ -37,9 +37,7 @@ class Nesting {
         parent_(arrangement.shells.count() + 1), sets_(rank_.data(), parent_.data()) {
     for (std::size_t i = 0; i < parent_.size(); ++i) sets_.make_set(i);
     std::vector<double> lowestX(arrangement.patches.size(), HUGE_VAL);
-    for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
-      for (const PatchBox& box : patchBoxes(arrangement.patches[patch])) lowestX[patch] = std::min(lowestX[patch], box.low[0]);
-    }
+    for (const auto& [box, patch] : arrangement.boxIndex->boxes()) lowestX[patch] = std::min(lowestX[patch], box.low[0]);
     for (std::uint32_t patch = 0; patch < arrangement.subdivisions.size(); ++patch) {
       for (std::uint32_t face = 0; face < arrangement.subdivisions[patch].faceCount; ++face) {
         members_[arrangement.shells.shellOf({patch, face})].push_back({{patch, face}, lowestX[patch]});

@@ -94,9 +94,9 @@ struct RayIn : Slice {
 struct SliceRays::Impl {
   const Arrangement& arrangement;
   AngleAlgebra& algebra;
-  PatchBoxIndex index;
+  const PatchBoxIndex& index;
 
-  Impl(const Arrangement& a, AngleAlgebra& alg) : arrangement(a), algebra(alg), index(a.patches) {}
+  Impl(const Arrangement& a, AngleAlgebra& alg) : arrangement(a), algebra(alg), index(*a.boxIndex) {}
 
   /// The patches whose boxes meet the box of the ray from `from` along `direction`
   /// (as far as `to` when bounded); the boxes are padded far beyond the rounding of

@@ -21,6 +21,8 @@ class PatchBoxIndex {
   /// Every pair of patches (the smaller index first) with boxes that meet, once, in
   /// increasing order.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> meetingPairs() const;
+  /// Every box with its patch, patch by patch.
+  const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes() const { return boxes_; }
 
  private:
   struct Tree;

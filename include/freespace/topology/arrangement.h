@@ -1,7 +1,9 @@
 #pragma once
 
+#include <memory>
 #include <vector>
 
+#include "freespace/geometry/patch_box_index.h"
 #include "freespace/geometry/patch_curve.h"
 #include "freespace/geometry/patch_geometry.h"
 #include "freespace/geometry/patch_subdivision.h"
@@ -17,6 +19,9 @@ namespace freespace {
 /// across curves, spirals and horizontal edges, and the shells they form.
 struct Arrangement {
   std::vector<PatchGeometry> patches;
+  /// The patches' boxes in an R-tree: built once, for the candidate pairs of curves
+  /// and overlaps and for the rays cast at fixed angles (SliceRays).
+  std::shared_ptr<const PatchBoxIndex> boxIndex;
   std::vector<PatchCurve> curves;
   std::vector<PatchOverlap> overlaps;
   std::vector<PatchVertex> vertices;
