@@ -120,14 +120,28 @@ int certainSignOver(const TrigLinear<Interval>& form, const Interval& cosine, co
 /// on b's line, then the ends of b on a's line.
 using PairForms = std::array<TrigLinear<Interval>, 4>;
 
-PairForms pairForms(const IntervalPatch& a, const IntervalPatch& b) {
-  return {spiralFacetForm(b.line, a.ends[0]), spiralFacetForm(b.line, a.ends[1]), spiralFacetForm(a.line, b.ends[0]),
-          spiralFacetForm(a.line, b.ends[1])};
-}
+/// A pair's SF forms, each computed when first asked for (inside a RoundingScope):
+/// the quick rejection often needs only the first two.
+class LazyPairForms {
+ public:
+  LazyPairForms(const IntervalPatch& a, const IntervalPatch& b) : a_(a), b_(b) {}
+
+  const TrigLinear<Interval>& operator[](std::size_t k) {
+    if (!forms_[k]) forms_[k] = k < 2 ? spiralFacetForm(b_.line, a_.ends[k]) : spiralFacetForm(a_.line, b_.ends[k - 2]);
+    return *forms_[k];
+  }
+
+  PairForms all() { return {(*this)[0], (*this)[1], (*this)[2], (*this)[3]}; }
+
+ private:
+  const IntervalPatch& a_;
+  const IntervalPatch& b_;
+  std::array<std::optional<TrigLinear<Interval>>, 4> forms_;
+};
 
 /// Whether one segment's ends lie strictly on one side of the other's line at every
 /// angle whose cosine and sine lie in the given intervals.
-bool apartOver(const PairForms& forms, const Interval& cosine, const Interval& sine) {
+bool apartOver(LazyPairForms& forms, const Interval& cosine, const Interval& sine) {
   const auto oneSide = [&](std::size_t first) {
     const int sign = certainSignOver(forms[first], cosine, sine);
     return sign != 0 && sign == certainSignOver(forms[first + 1], cosine, sine);
@@ -142,7 +156,7 @@ constexpr int kRangeHalvings = 4;
 /// Whether the segments may cross at an angle of [from, to]: not when found apart
 /// over it or over each half, halved up to `halvings` times (halves share the cosines
 /// and sines of their ends).
-bool mayCrossOver(const PairForms& forms, const detail::RadianCosSin& from, const detail::RadianCosSin& to,
+bool mayCrossOver(LazyPairForms& forms, const detail::RadianCosSin& from, const detail::RadianCosSin& to,
                   int halvings) {
   const auto [cosine, sine] = detail::cosSinOver(from, to);
   if (apartOver(forms, cosine, sine)) return false;
@@ -158,10 +172,10 @@ std::optional<PairForms> formsIfMayCross(const IntervalPatch& a, const IntervalP
   RoundingScope rounding;
   const std::vector<detail::RadianRange> common = detail::overlap(a.angles, b.angles);
   if (common.empty()) return std::nullopt;
-  const PairForms forms = pairForms(a, b);
+  LazyPairForms forms(a, b);
   for (const auto& [from, to] : common) {
     const auto start = detail::RadianCosSin::at(from), end = detail::RadianCosSin::at(to);
-    if (mayCrossOver(forms, start, end, kRangeHalvings)) return forms;
+    if (mayCrossOver(forms, start, end, kRangeHalvings)) return forms.all();
   }
   return std::nullopt;
 }

@@ -708,9 +708,10 @@ int AngleAlgebra::compareEscalated(const AlgebraicAngle& first, const AlgebraicA
 
 bool AngleAlgebra::contains(const AngleInterval& arc, const AlgebraicAngle& angle, Boundary boundary) {
   const int bound = boundary == Boundary::Included ? 0 : -1;
+  // The second comparison only when the first does not decide.
   const bool afterFrom = compare(arc.from, angle) <= bound;
-  const bool beforeTo = compare(angle, arc.to) <= bound;
-  return arc.wraps ? (afterFrom || beforeTo) : (afterFrom && beforeTo);
+  if (afterFrom == arc.wraps) return afterFrom;
+  return compare(angle, arc.to) <= bound;
 }
 
 bool AngleAlgebra::contains(const AngleSet& set, const AlgebraicAngle& angle, Boundary boundary) {
