@@ -5,9 +5,13 @@
 // so curves.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "bundled_scene.h"
 #include "exact_geometry.h"
+#include "freespace/geometry/patch_box_index.h"
 #include "freespace/geometry/patch_geometry.h"
+#include "freespace/numbers/half_angle.h"
 
 using namespace freespace;
 using namespace freespace::testing;
@@ -15,8 +19,8 @@ using namespace freespace::testing;
 namespace {
 
 bool inBox(const PatchBox& box, const std::array<Rational, 2>& point, double theta) {
-  return box.low[0] <= point[0] && point[0] <= box.high[0] && box.low[1] <= point[1] && point[1] <= box.high[1] &&
-         box.low[2] <= theta && theta <= box.high[2];
+  return box.low[2] <= theta && theta <= box.high[2] && box.low[0] <= point[0] && point[0] <= box.high[0] &&
+         box.low[1] <= point[1] && point[1] <= box.high[1];
 }
 
 /// Rational angles inside the arc next to its ends: the inner end of each end
@@ -33,31 +37,71 @@ std::vector<AlgebraicAngle> nearEnds(const AngleInterval& arc, AngleAlgebra& alg
   return angles;
 }
 
+/// Rational angles spread over the open arc: `count` at equal steps in radians.
+std::vector<AlgebraicAngle> acrossArc(const AngleInterval& arc, int count, AngleAlgebra& algebra) {
+  const double from = arc.from.radians();
+  double to = arc.to.radians();
+  if (to < from) to += 2 * M_PI;  // through theta = pi
+  std::vector<AlgebraicAngle> angles;
+  for (int i = 0; i < count; ++i) {
+    const AlgebraicAngle angle = AlgebraicAngle::rational(HalfAngle::fromRadians(from + (to - from) * (i + 0.5) / count));
+    if (algebra.contains(arc, angle, AngleAlgebra::Boundary::Excluded)) angles.push_back(angle);
+  }
+  return angles;
+}
+
+/// Checks that the boxes hold both segment ends (exact) at each angle, angle
+/// included; counts the angles checked and those left outside.
+struct Coverage {
+  int checked = 0, outside = 0;
+
+  void check(const std::vector<PatchBox>& boxes, const PatchGeometry& patch, const AlgebraicAngle& angle) {
+    const ExactRotation r = rotationOf(angle);
+    const double theta = HalfAngle{angle.chart(), angle.lower()}.radians();
+    const auto end0 = spiralPoint(spiralOf<Rational>(patch.ends[0]), r.cosine, r.sine);
+    const auto end1 = spiralPoint(spiralOf<Rational>(patch.ends[1]), r.cosine, r.sine);
+    const bool covered = std::any_of(boxes.begin(), boxes.end(), [&](const PatchBox& box) {
+      return inBox(box, end0, theta) && inBox(box, end1, theta);
+    });
+    checked++;
+    outside += !covered;
+  }
+};
+
 }  // namespace
 
 class BundledScenePatchBoxes : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BundledScenePatchBoxes, ContainTheSegmentsUpToTheRangeEnds) {
   BundledScene scene(GetParam());
-  int checked = 0, outside = 0;
+  Coverage coverage;
   for (const PatchGeometry& patch : scene.geometries) {
     const std::vector<PatchBox> boxes = patchBoxes(patch);
     for (const AngleInterval& arc : patch.patch.range.arcs) {
-      for (const AlgebraicAngle& angle : nearEnds(arc, scene.algebra)) {
-        const ExactRotation r = rotationOf(angle);
-        const double theta = HalfAngle{angle.chart(), angle.lower()}.radians();
-        bool covered = false;
-        for (const PatchBox& box : boxes) {
-          covered = covered || (inBox(box, spiralPoint(spiralOf<Rational>(patch.ends[0]), r.cosine, r.sine), theta) &&
-                                inBox(box, spiralPoint(spiralOf<Rational>(patch.ends[1]), r.cosine, r.sine), theta));
-        }
-        checked++;
-        outside += !covered;
-      }
+      for (const AlgebraicAngle& angle : nearEnds(arc, scene.algebra)) coverage.check(boxes, patch, angle);
     }
   }
-  EXPECT_GT(checked, 0);
-  EXPECT_EQ(outside, 0) << "of " << checked << " angles";
+  EXPECT_GT(coverage.checked, 0);
+  EXPECT_EQ(coverage.outside, 0) << "of " << coverage.checked << " angles";
+}
+
+// Boxes over narrow pieces of the arcs (as the box index refines with): at angles
+// spread over each arc and next to its ends, each piece and the whole set.
+TEST_P(BundledScenePatchBoxes, PiecesContainTheSegments) {
+  BundledScene scene(GetParam());
+  for (const double width : {PatchBoxIndex::kPieceWidth, 0.05}) {
+    Coverage coverage;
+    for (const PatchGeometry& patch : scene.geometries) {
+      const std::vector<PatchBox> pieces = patchBoxes(patch, width);
+      for (const PatchBox& piece : pieces) EXPECT_LE(piece.high[2] - piece.low[2], width + 1e-6);
+      for (const AngleInterval& arc : patch.patch.range.arcs) {
+        for (const AlgebraicAngle& angle : nearEnds(arc, scene.algebra)) coverage.check(pieces, patch, angle);
+        for (const AlgebraicAngle& angle : acrossArc(arc, 24, scene.algebra)) coverage.check(pieces, patch, angle);
+      }
+    }
+    EXPECT_GT(coverage.checked, 0);
+    EXPECT_EQ(coverage.outside, 0) << "of " << coverage.checked << " angles, pieces " << width << " wide";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledScenePatchBoxes, ::testing::Values("maze.cfg", "room_door.cfg", "cage.cfg"));

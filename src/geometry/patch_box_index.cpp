@@ -19,6 +19,14 @@ Box toBox(const PatchBox& box) {
   return {BoxPoint(box.low[0], box.low[1], box.low[2]), BoxPoint(box.high[0], box.high[1], box.high[2])};
 }
 
+bool meet(const PatchBox& a, const PatchBox& b) {
+  // Theta first: pieces of two patches that meet at all are mostly apart in it.
+  for (int axis : {2, 0, 1}) {
+    if (a.high[axis] < b.low[axis] || b.high[axis] < a.low[axis]) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 struct PatchBoxIndex::Tree {
@@ -32,7 +40,11 @@ PatchBoxIndex::PatchBoxIndex(const std::vector<PatchGeometry>& patches) : tree_(
       boxes_.emplace_back(box, i);
       entries.emplace_back(toBox(box), i);
     }
+    firstPiece_.push_back(pieces_.size());
+    const std::vector<PatchBox> pieces = patchBoxes(patches[i], kPieceWidth);
+    pieces_.insert(pieces_.end(), pieces.begin(), pieces.end());
   }
+  firstPiece_.push_back(pieces_.size());
   tree_->rtree = bgi::rtree<BoxEntry, bgi::rstar<16>>(entries.begin(), entries.end());
 }
 
@@ -45,6 +57,9 @@ std::vector<std::uint32_t> PatchBoxIndex::meeting(const PatchBox& query) const {
   for (const BoxEntry& entry : found) patches.push_back(entry.second);
   std::sort(patches.begin(), patches.end());
   patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
+  patches.erase(std::remove_if(patches.begin(), patches.end(),
+                               [&](std::uint32_t patch) { return !pieceMeets(patch, query); }),
+                patches.end());
   return patches;
 }
 
@@ -58,7 +73,20 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> PatchBoxIndex::meetingPairs
   }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
+                             [&](const auto& pair) { return !piecesMeet(pair.first, pair.second); }),
+              pairs.end());
   return pairs;
+}
+
+bool PatchBoxIndex::pieceMeets(std::uint32_t patch, const PatchBox& query) const {
+  return std::any_of(pieces_.begin() + firstPiece_[patch], pieces_.begin() + firstPiece_[patch + 1],
+                     [&](const PatchBox& piece) { return meet(piece, query); });
+}
+
+bool PatchBoxIndex::piecesMeet(std::uint32_t first, std::uint32_t second) const {
+  return std::any_of(pieces_.begin() + firstPiece_[first], pieces_.begin() + firstPiece_[first + 1],
+                     [&](const PatchBox& piece) { return pieceMeets(second, piece); });
 }
 
 }  // namespace freespace

@@ -8,13 +8,17 @@
 
 namespace freespace {
 
-/// An R-tree (Boost.Geometry) of the patches' (x, y, theta) boxes (patchBoxes).
+/// An R-tree (Boost.Geometry) of the patches' (x, y, theta) boxes (patchBoxes), one
+/// per arc of a patch's range; its answers are refined by each patch's boxes over
+/// pieces of at most kPieceWidth radians, which follow the segment more closely.
 class PatchBoxIndex {
  public:
   explicit PatchBoxIndex(const std::vector<PatchGeometry>& patches);
   ~PatchBoxIndex();
   PatchBoxIndex(const PatchBoxIndex&) = delete;
   PatchBoxIndex& operator=(const PatchBoxIndex&) = delete;
+
+  static constexpr double kPieceWidth = M_PI / 8;
 
   /// Each patch with a box that meets the query box, once, in increasing order.
   std::vector<std::uint32_t> meeting(const PatchBox& query) const;
@@ -26,7 +30,15 @@ class PatchBoxIndex {
 
  private:
   struct Tree;
+  /// Whether a box over a piece of the patch meets the query box.
+  bool pieceMeets(std::uint32_t patch, const PatchBox& query) const;
+  /// Whether boxes over pieces of the two patches meet.
+  bool piecesMeet(std::uint32_t first, std::uint32_t second) const;
+
   std::vector<std::pair<PatchBox, std::uint32_t>> boxes_;
+  /// The pieces' boxes, patch by patch: patch i's from firstPiece_[i] to firstPiece_[i + 1].
+  std::vector<PatchBox> pieces_;
+  std::vector<std::size_t> firstPiece_;
   std::unique_ptr<Tree> tree_;
 };
 

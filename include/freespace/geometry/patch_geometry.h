@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "freespace/geometry/patch.h"
@@ -30,7 +31,8 @@ struct PatchBox {
 /// Boxes that contain the patch's segment at every angle of its range (one per arc,
 /// two for an arc through theta = pi; each arc taken from the outer ends of its
 /// angles' enclosures), computed in doubles and padded so that they contain the
-/// exact segments with a wide margin over rounding.
-std::vector<PatchBox> patchBoxes(const PatchGeometry& patch);
+/// exact segments with a wide margin over rounding. With `maxWidth`, each arc is cut
+/// into equal pieces at most that many radians wide, one box each: tighter boxes.
+std::vector<PatchBox> patchBoxes(const PatchGeometry& patch, double maxWidth = HUGE_VAL);
 
 }  // namespace freespace
