@@ -41,10 +41,11 @@ void mergeRuns(std::vector<TaggedEnd>& ends, std::vector<std::size_t> starts, co
 SlabEndOrder::SlabEndOrder(const std::vector<std::uint32_t>& patches, const std::vector<PatchSubdivision>& subdivisions,
                            AngleAlgebra& algebra) {
   const auto before = [&](const TaggedEnd& a, const TaggedEnd& b) { return algebra.compare(*a.angle, *b.angle) < 0; };
-  // A patch's sweep makes its slabs follow each other counterclockwise from the cut,
-  // each ending where the next begins and the last where the first begins: with
-  // that last end moved to the front, its ends are one sorted run. The runs are
-  // merged (a run out of order, which no sweep makes, is sorted first).
+  // A patch's sweep makes its slabs follow each other counterclockwise, each ending
+  // where the next begins, from the first event after the cut at theta = -pi/2: its
+  // ends in slab order are sorted but for one descent where they pass the cut, and
+  // the part after it moved to the front makes one sorted run. The runs are merged
+  // (a run still out of order, which no sweep makes, is sorted first).
   std::vector<TaggedEnd> tagged;
   std::vector<std::size_t> runStarts;
   for (std::size_t i = 0; i < patches.size(); ++i) {
@@ -57,10 +58,9 @@ SlabEndOrder::SlabEndOrder(const std::vector<std::uint32_t>& patches, const std:
       tagged.push_back({&slabs[s].to, i, s, true});
     }
     if (start == tagged.size()) continue;
-    std::rotate(tagged.begin() + static_cast<std::ptrdiff_t>(start), tagged.end() - 1, tagged.end());
-    if (!std::is_sorted(tagged.begin() + static_cast<std::ptrdiff_t>(start), tagged.end(), before)) {
-      std::sort(tagged.begin() + static_cast<std::ptrdiff_t>(start), tagged.end(), before);
-    }
+    const auto run = tagged.begin() + static_cast<std::ptrdiff_t>(start);
+    std::rotate(run, std::is_sorted_until(run, tagged.end(), before), tagged.end());
+    if (!std::is_sorted(run, tagged.end(), before)) std::sort(run, tagged.end(), before);
     runStarts.push_back(start);
   }
   mergeRuns(tagged, std::move(runStarts), before);
