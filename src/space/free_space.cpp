@@ -62,30 +62,31 @@ std::size_t FreeSpace::cellCount() const { return impl_->cells->count(); }
 
 std::vector<std::optional<PatchBox>> FreeSpace::cellBoxes() const {
   const Arrangement& arrangement = impl_->arrangement;
-  std::vector<std::optional<PatchBox>> boxes(cellCount());
+  // The bounded free cells that each patch's sub-faces bound.
+  std::vector<std::vector<std::uint32_t>> cellsOfPatch(arrangement.patches.size());
   for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
-    std::vector<std::uint32_t> cells;
     for (std::uint32_t face = 0; face < arrangement.subdivisions[patch].faceCount; ++face) {
       const std::optional<std::uint32_t> cell = cellOfSubFace({patch, face});
-      if (cell && *cell != FreeCells::kUnbounded) cells.push_back(*cell);
+      if (cell && *cell != FreeCells::kUnbounded) cellsOfPatch[patch].push_back(*cell);
     }
-    if (cells.empty()) continue;
-    const std::vector<PatchBox> patchBoxesOf = patchBoxes(arrangement.patches[patch]);
-    for (std::uint32_t cell : cells) {
-      for (const PatchBox& box : patchBoxesOf) {
-        if (!boxes[cell]) {
-          boxes[cell] = box;
-          continue;
-        }
-        for (int axis = 0; axis < 3; ++axis) {
-          boxes[cell]->low[axis] = std::min(boxes[cell]->low[axis], box.low[axis]);
-          boxes[cell]->high[axis] = std::max(boxes[cell]->high[axis], box.high[axis]);
-        }
+  }
+  // Each cell's box holds the boxes (those of the index) of the patches bounding it.
+  std::vector<std::optional<PatchBox>> boxes(cellCount());
+  for (const auto& [box, patch] : arrangement.boxIndex->boxes()) {
+    for (std::uint32_t cell : cellsOfPatch[patch]) {
+      if (!boxes[cell]) {
+        boxes[cell] = box;
+        continue;
+      }
+      for (int axis = 0; axis < 3; ++axis) {
+        boxes[cell]->low[axis] = std::min(boxes[cell]->low[axis], box.low[axis]);
+        boxes[cell]->high[axis] = std::max(boxes[cell]->high[axis], box.high[axis]);
       }
     }
   }
   return boxes;
 }
+
 std::size_t FreeSpace::shellCount() const { return impl_->arrangement.shells.count(); }
 std::size_t FreeSpace::freeShellCount() const {
   return static_cast<std::size_t>(std::count(impl_->sides.begin(), impl_->sides.end(), ShellSide::Free));
