@@ -1,5 +1,4 @@
 #include <algorithm>
-#include <map>
 #include <optional>
 #include <stdexcept>
 #include <unordered_map>
@@ -70,7 +69,7 @@ std::shared_ptr<const AngleFunction> coincidence(const PatchGeometry& a, const P
   }, detail::edgeFacetKey(robotVertices, vertices[0], b.line.vertices[0], {vertices[1], vertices[2], vertices[3]}));
 }
 
-/// det(v, u, u') of hingedEdgePairs as an angle function, for EE points p and q whose
+/// det(v, u, u') of hingedCoincidence as an angle function, for EE points p and q whose
 /// edges on the robot (robotHinge) or on the environment leave one vertex, at end
 /// atP of p's edge and atQ of q's.
 std::shared_ptr<const AngleFunction> hingeCoincidence(const ContactPoints& p, int atP, const ContactPoints& q, int atQ,
@@ -144,70 +143,49 @@ std::optional<std::array<bool, 2>> endsReached(const PatchGeometry& fixed, const
                              atOrAfter(fromEnd[0]) || atOrAfter(fromEnd[1])};
 }
 
-/// Two patches whose lines coincide at the roots of `coincidence` (and nowhere else).
-struct CoincidentPair {
-  std::uint32_t a = 0, b = 0;  // a < b
-  std::shared_ptr<const AngleFunction> coincidence;
-};
-
-/// Contacts of one facet with two vertices of the other body (shareFacet): parallel
-/// lines at every angle. Only pairs whose patch boxes meet (the candidates) can
-/// overlap (a facet of one body meets most vertices of the other).
-std::vector<CoincidentPair> parallelPairs(const std::vector<PatchGeometry>& patches,
-                                          const std::vector<std::pair<std::uint32_t, std::uint32_t>>& candidates) {
-  std::vector<CoincidentPair> pairs;
-  for (const auto& [a, b] : candidates) {
-    if (shareFacet(patches[a].patch.contact, patches[b].patch.contact)) {
-      pairs.push_back({a, b, coincidence(patches[a], patches[b])});
-    }
-  }
-  return pairs;
+/// Whether two edges (vertex index pairs) are one.
+bool sameEdge(std::array<std::uint32_t, 2> e, std::array<std::uint32_t, 2> f) {
+  return e == f || (e[0] == f[1] && e[1] == f[0]);
 }
 
-/// The vertex two edges (vertex index pairs) share, if they share exactly one.
+/// The vertex two edges share, if they share exactly one.
 std::optional<int> sharedEnd(std::array<std::uint32_t, 2> e, std::array<std::uint32_t, 2> f) {
-  if (e == f || (e[0] == f[1] && e[1] == f[0])) return std::nullopt;
+  if (sameEdge(e, f)) return std::nullopt;
   for (int i = 0; i < 2; ++i) {
     if (e[i] == f[0] || e[i] == f[1]) return i;
   }
   return std::nullopt;
 }
 
-/// Two EE contacts that share one edge, whose other edges leave one vertex x, to a
-/// and a'. With the other edges' directions u, u' from x and the shared edge's
-/// direction v, each line is "x + d lies on the plane through the shared edge
-/// spanned by v and u (or u')", and when v lies in the plane of x, a, a' the two
-/// planes are that plane: the lines coincide where det(v, u, u') = 0. For a shared
-/// environment edge that is (R (u x u')) . v, for a shared robot edge (R u) . (v x
-/// v'): an EF function of the shared edge and the plane (x, a, a'), keyed as one.
-/// When (x, a, a') is a triangle of the mesh, its roots are ends of both ranges.
-std::vector<CoincidentPair> hingedEdgePairs(const std::vector<PatchGeometry>& patches) {
-  // EE points: robot edge a0 -> a1, environment edge b0 -> b1.
-  std::map<std::pair<int, std::array<std::uint32_t, 2>>, std::vector<std::uint32_t>> byEdge;
-  for (std::uint32_t i = 0; i < patches.size(); ++i) {
-    const ContactPoints& line = patches[i].line;
-    if (line.kind != ContactKind::EdgeEdge) continue;
-    for (int body = 0; body < 2; ++body) {
-      std::array<std::uint32_t, 2> edge{line.vertices[2 * body], line.vertices[2 * body + 1]};
-      std::sort(edge.begin(), edge.end());
-      byEdge[{body, edge}].push_back(i);
-    }
+/// The edge of `body` (0 robot, 1 environment) of an EE contact's points.
+std::array<std::uint32_t, 2> edgeOf(const ContactPoints& line, int body) {
+  return {line.vertices[2 * body], line.vertices[2 * body + 1]};
+}
+
+/// For two EE contacts that share one body's edge and whose other edges share one
+/// vertex, their hinge coincidence; else null. EE points: robot edge a0 -> a1,
+/// environment edge b0 -> b1.
+std::shared_ptr<const AngleFunction> hingedCoincidence(const ContactPoints& p, const ContactPoints& q) {
+  if (p.kind != ContactKind::EdgeEdge || q.kind != ContactKind::EdgeEdge) return nullptr;
+  for (int shared = 0; shared < 2; ++shared) {
+    if (!sameEdge(edgeOf(p, shared), edgeOf(q, shared))) continue;
+    const int other = 1 - shared;  // the body whose edges differ
+    const std::optional<int> atP = sharedEnd(edgeOf(p, other), edgeOf(q, other));
+    if (!atP) return nullptr;  // the same two edges: one line at every angle
+    const int atQ = q.vertices[2 * other] == p.vertices[2 * other + *atP] ? 0 : 1;
+    return hingeCoincidence(p, *atP, q, atQ, other == 0);
   }
-  std::vector<CoincidentPair> pairs;
-  for (const auto& [shared, members] : byEdge) {
-    const int other = 1 - shared.first;  // the body whose edges differ
-    for (std::size_t i = 0; i < members.size(); ++i) {
-      for (std::size_t j = i + 1; j < members.size(); ++j) {
-        const ContactPoints &p = patches[members[i]].line, &q = patches[members[j]].line;
-        const std::optional<int> atP = sharedEnd({p.vertices[2 * other], p.vertices[2 * other + 1]},
-                                                 {q.vertices[2 * other], q.vertices[2 * other + 1]});
-        if (!atP) continue;
-        const int atQ = q.vertices[2 * other] == p.vertices[2 * other + *atP] ? 0 : 1;
-        pairs.push_back({members[i], members[j], hingeCoincidence(p, *atP, q, atQ, other == 0)});
-      }
-    }
-  }
-  return pairs;
+  return nullptr;
+}
+
+/// The function whose roots are the angles where two patches' lines coincide, for
+/// the two structural kinds of pairs (PatchOverlap); null for other pairs. Contacts
+/// of one facet with two vertices of the other body (shareFacet) have parallel lines
+/// at every angle; the lines of hinged EE contacts coincide where the shared edge is
+/// parallel to the plane of the other two (hingedCoincidence).
+std::shared_ptr<const AngleFunction> coincidenceOfPair(const PatchGeometry& a, const PatchGeometry& b) {
+  if (shareFacet(a.patch.contact, b.patch.contact)) return coincidence(a, b);
+  return hingedCoincidence(a.line, b.line);
 }
 
 }  // namespace
@@ -218,24 +196,25 @@ std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patche
 
 std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patches,
                                         const std::vector<std::pair<std::uint32_t, std::uint32_t>>& candidates,
-                                        AngleAlgebra& algebra) {
-  std::vector<CoincidentPair> pairs = parallelPairs(patches, candidates);
-  const std::vector<CoincidentPair> hinged = hingedEdgePairs(patches);
-  pairs.insert(pairs.end(), hinged.begin(), hinged.end());
-  std::sort(pairs.begin(), pairs.end(), [](const CoincidentPair& x, const CoincidentPair& y) {
-    return std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
-  });
+                                        AngleAlgebra& algebra, const Cancellation& cancellation) {
+  // Overlapping segments share points, so only pairs whose boxes meet can overlap.
   std::vector<PatchOverlap> overlaps;
   constexpr auto open = AngleAlgebra::Boundary::Excluded;
-  for (const CoincidentPair& pair : pairs) {
-    const PatchGeometry &a = patches[pair.a], &b = patches[pair.b];
-    for (const AlgebraicAngle& root : algebra.roots(pair.coincidence, PredicateKind::EdgeFacet)) {
+  for (const auto& [first, second] : candidates) {
+    cancellation.check();
+    const PatchGeometry &a = patches[first], &b = patches[second];
+    const std::shared_ptr<const AngleFunction> coincident = coincidenceOfPair(a, b);
+    if (!coincident) continue;
+    for (const AlgebraicAngle& root : algebra.roots(coincident, PredicateKind::EdgeFacet)) {
       if (!algebra.contains(a.patch.range, root, open) || !algebra.contains(b.patch.range, root, open)) continue;
       const auto onA = endsReached(a, b, root, algebra);
       if (!onA) continue;
-      overlaps.push_back({{pair.a, pair.b}, root, {*onA, *endsReached(b, a, root, algebra)}});
+      overlaps.push_back({{first, second}, root, {*onA, *endsReached(b, a, root, algebra)}});
     }
   }
+  // By pairs (each pair's roots are in increasing order already).
+  std::stable_sort(overlaps.begin(), overlaps.end(),
+                   [](const PatchOverlap& x, const PatchOverlap& y) { return x.patches < y.patches; });
   return overlaps;
 }
 

@@ -60,7 +60,7 @@ std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patche
 /// only those can overlap.
 std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patches,
                                         const std::vector<std::pair<std::uint32_t, std::uint32_t>>& candidates,
-                                        AngleAlgebra& algebra);
+                                        AngleAlgebra& algebra, const Cancellation& cancellation = {});
 
 /// The FFF polynomial of three patch lines as an angle function: the determinant
 /// det[n_i, w_i] of the lines (threePatchPolynomial), zero where they are concurrent.
