@@ -102,7 +102,8 @@ std::array<Point3, 2> endsOf(const Mesh& mesh, const MeshEdge& edge) {
 }  // namespace
 
 std::vector<Patch> edgeEdgePatches(const Mesh& robot, const MeshTopology& robotTopology, const Mesh& world,
-                                   const MeshTopology& worldTopology, AngleAlgebra& algebra) {
+                                   const MeshTopology& worldTopology, AngleAlgebra& algebra,
+                                   const Cancellation& cancellation) {
   AdaptiveSignEngine engine(algebra.statistics());
   const std::vector<OrientedEdge> robotEdges = convexEdges(robot, robotTopology, engine);
   const std::vector<OrientedEdge> worldEdges = convexEdges(world, worldTopology, engine);
@@ -111,6 +112,7 @@ std::vector<Patch> edgeEdgePatches(const Mesh& robot, const MeshTopology& robotT
     const MeshEdge& robotEdge = robotTopology.edges()[a.edge];
     const auto [robotLow, robotHigh] = heightRange(robot, robotEdge);
     for (const OrientedEdge& b : worldEdges) {
+      cancellation.check();
       const MeshEdge& worldEdge = worldTopology.edges()[b.edge];
       const auto [worldLow, worldHigh] = heightRange(world, worldEdge);
       if (!(std::max(robotLow, worldLow) < std::min(robotHigh, worldHigh))) continue;

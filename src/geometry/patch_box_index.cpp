@@ -33,9 +33,11 @@ struct PatchBoxIndex::Tree {
   bgi::rtree<BoxEntry, bgi::rstar<16>> rtree;
 };
 
-PatchBoxIndex::PatchBoxIndex(const std::vector<PatchGeometry>& patches) : tree_(std::make_unique<Tree>()) {
+PatchBoxIndex::PatchBoxIndex(const std::vector<PatchGeometry>& patches, const Cancellation& cancellation)
+    : tree_(std::make_unique<Tree>()) {
   std::vector<BoxEntry> entries;
   for (std::uint32_t i = 0; i < patches.size(); ++i) {
+    cancellation.check();
     for (const PatchBox& box : patchBoxes(patches[i])) {
       boxes_.emplace_back(box, i);
       entries.emplace_back(toBox(box), i);
@@ -63,9 +65,10 @@ std::vector<std::uint32_t> PatchBoxIndex::meeting(const PatchBox& query) const {
   return patches;
 }
 
-std::vector<std::pair<std::uint32_t, std::uint32_t>> PatchBoxIndex::meetingPairs() const {
+std::vector<std::pair<std::uint32_t, std::uint32_t>> PatchBoxIndex::meetingPairs(const Cancellation& cancellation) const {
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
   for (const auto& [box, patch] : boxes_) {
+    cancellation.check();
     const auto addPair = [&pairs, patch = patch](const BoxEntry& entry) {
       if (patch < entry.second) pairs.emplace_back(patch, entry.second);
     };

@@ -9,10 +9,12 @@ namespace freespace {
 
 std::vector<PatchGeometry> patchGeometries(const std::vector<Patch>& patches, const Mesh& robot,
                                            const MeshTopology& robotTopology, const Mesh& world,
-                                           const MeshTopology& worldTopology, PredicateStatistics& statistics) {
+                                           const MeshTopology& worldTopology, PredicateStatistics& statistics,
+                                           const Cancellation& cancellation) {
   std::vector<PatchGeometry> geometries;
   geometries.reserve(patches.size());
   for (const Patch& patch : patches) {
+    cancellation.check();
     const PatchSegment segment = patchSegment(patch.contact, robot, robotTopology, world, worldTopology, statistics);
     geometries.push_back({patch, segment, contactPoints(patch.contact, robot, robotTopology, world, worldTopology),
                           {spiralPoints(segment.ends[0], robot, world), spiralPoints(segment.ends[1], robot, world)}});

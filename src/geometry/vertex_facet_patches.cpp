@@ -71,11 +71,12 @@ bool mayBeCompatible(const std::vector<TrigLinear<Interval>>& forms) {
 
 /// The patches of one body's pointed vertices against the other body's triangles.
 void addPatches(ContactKind kind, const Mesh& vertexMesh, const MeshTopology& vertexTopology, const Mesh& facetMesh,
-                AngleAlgebra& algebra, std::vector<Patch>& patches) {
+                AngleAlgebra& algebra, const Cancellation& cancellation, std::vector<Patch>& patches) {
   for (std::uint32_t vertex = 0; vertex < vertexMesh.vertices().size(); ++vertex) {
     if (!vertexTopology.isPointed(vertex)) continue;
     const double z = vertexMesh.vertices()[vertex].z();
     for (std::uint32_t triangle = 0; triangle < facetMesh.triangles().size(); ++triangle) {
+      cancellation.check();
       if (!strictlyWithinHeights(facetMesh, triangle, z)) continue;
       const Contact contact = kind == ContactKind::VertexFacet ? Contact{kind, vertex, triangle}
                                                                : Contact{kind, triangle, vertex};
@@ -99,10 +100,11 @@ void addPatches(ContactKind kind, const Mesh& vertexMesh, const MeshTopology& ve
 }  // namespace
 
 std::vector<Patch> vertexFacetPatches(const Mesh& robot, const MeshTopology& robotTopology, const Mesh& world,
-                                      const MeshTopology& worldTopology, AngleAlgebra& algebra) {
+                                      const MeshTopology& worldTopology, AngleAlgebra& algebra,
+                                      const Cancellation& cancellation) {
   std::vector<Patch> patches;
-  addPatches(ContactKind::VertexFacet, robot, robotTopology, world, algebra, patches);
-  addPatches(ContactKind::FacetVertex, world, worldTopology, robot, algebra, patches);
+  addPatches(ContactKind::VertexFacet, robot, robotTopology, world, algebra, cancellation, patches);
+  addPatches(ContactKind::FacetVertex, world, worldTopology, robot, algebra, cancellation, patches);
   return patches;
 }
 

@@ -17,14 +17,16 @@ FreeSpace::Impl::Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptio
     requireDistinctHeights(perturbed.robot, perturbed.world, options.sourceName);
     return perturbed;
   });
+  const Cancellation& cancellation = options.cancellation;
   std::vector<PatchGeometry> geometries = clock.run("patches", [&] {
     const MeshTopology robotTopology(meshes.robot, statistics), worldTopology(meshes.world, statistics);
-    std::vector<Patch> patches = vertexFacetPatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
-    const std::vector<Patch> edgeEdge = edgeEdgePatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
+    std::vector<Patch> patches =
+        vertexFacetPatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra, cancellation);
+    const std::vector<Patch> edgeEdge =
+        edgeEdgePatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra, cancellation);
     patches.insert(patches.end(), edgeEdge.begin(), edgeEdge.end());
-    return patchGeometries(patches, meshes.robot, robotTopology, meshes.world, worldTopology, statistics);
+    return patchGeometries(patches, meshes.robot, robotTopology, meshes.world, worldTopology, statistics, cancellation);
   });
-  const Cancellation& cancellation = options.cancellation;
   arrangement = buildArrangement(std::move(geometries), algebra, clock);
   sides = clock.run("classification", [&] {
     finish();

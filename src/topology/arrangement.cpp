@@ -9,11 +9,11 @@ Arrangement buildArrangement(std::vector<PatchGeometry> patches, AngleAlgebra& a
   // The pairs of patches whose boxes meet: the only ones that can cross or overlap.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> candidates;
   a.curves = clock.run("curves", [&] {
-    a.boxIndex = std::make_shared<const PatchBoxIndex>(a.patches);
-    candidates = a.boxIndex->meetingPairs();
+    a.boxIndex = std::make_shared<const PatchBoxIndex>(a.patches, cancellation);
+    candidates = a.boxIndex->meetingPairs(cancellation);
     return patchCurves(a.patches, candidates, algebra, cancellation);
   });
-  a.overlaps = clock.run("overlaps", [&] { return patchOverlaps(a.patches, candidates, algebra); });
+  a.overlaps = clock.run("overlaps", [&] { return patchOverlaps(a.patches, candidates, algebra, cancellation); });
   a.vertices =
       clock.run("vertices", [&] { return patchVertices(a.patches, a.curves, a.overlaps, algebra, cancellation); });
   a.subdivisions = clock.run("subdivision", [&] {

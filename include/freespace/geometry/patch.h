@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "freespace/geometry/cancellation.h"
 #include "freespace/geometry/mesh.h"
 #include "freespace/geometry/mesh_topology.h"
 #include "freespace/numbers/algebraic_angle.h"
@@ -98,7 +99,8 @@ struct Patch {
 /// the roles exchanged. Each condition is an EF angle function; the range is where
 /// all are positive (closed).
 std::vector<Patch> vertexFacetPatches(const Mesh& robot, const MeshTopology& robotTopology, const Mesh& world,
-                                      const MeshTopology& worldTopology, AngleAlgebra& algebra);
+                                      const MeshTopology& worldTopology, AngleAlgebra& algebra,
+                                      const Cancellation& cancellation = {});
 
 /// Every EE patch with a non-empty range: a convex robot edge and a convex
 /// environment edge whose open z ranges overlap, for each side sigma. With the
@@ -109,6 +111,7 @@ std::vector<Patch> vertexFacetPatches(const Mesh& robot, const MeshTopology& rob
 ///   sigma (R m1) . v > 0, -sigma (R m2) . v > 0, sigma (R u) . n1 > 0, -sigma (R u) . n2 > 0
 /// (from (a x b) . (c x d) = (a . c)(b . d) - (a . d)(b . c) and m_i . u = n_i . v = 0).
 std::vector<Patch> edgeEdgePatches(const Mesh& robot, const MeshTopology& robotTopology, const Mesh& world,
-                                   const MeshTopology& worldTopology, AngleAlgebra& algebra);
+                                   const MeshTopology& worldTopology, AngleAlgebra& algebra,
+                                   const Cancellation& cancellation = {});
 
 }  // namespace freespace

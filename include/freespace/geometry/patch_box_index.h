@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "freespace/geometry/cancellation.h"
 #include "freespace/geometry/patch_geometry.h"
 
 namespace freespace {
@@ -14,7 +15,7 @@ namespace freespace {
 /// pieces of at most kPieceWidth radians, which follow the segment more closely.
 class PatchBoxIndex {
  public:
-  explicit PatchBoxIndex(const std::vector<PatchGeometry>& patches);
+  explicit PatchBoxIndex(const std::vector<PatchGeometry>& patches, const Cancellation& cancellation = {});
   ~PatchBoxIndex();
   PatchBoxIndex(const PatchBoxIndex&) = delete;
   PatchBoxIndex& operator=(const PatchBoxIndex&) = delete;
@@ -25,7 +26,7 @@ class PatchBoxIndex {
   std::vector<std::uint32_t> meeting(const PatchBox& query) const;
   /// Every pair of patches (the smaller index first) with boxes that meet, once, in
   /// increasing order.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> meetingPairs() const;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> meetingPairs(const Cancellation& cancellation = {}) const;
   /// Every box with its patch, patch by patch.
   const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes() const { return boxes_; }
 

@@ -20,7 +20,8 @@ struct PatchGeometry {
 
 std::vector<PatchGeometry> patchGeometries(const std::vector<Patch>& patches, const Mesh& robot,
                                            const MeshTopology& robotTopology, const Mesh& world,
-                                           const MeshTopology& worldTopology, PredicateStatistics& statistics);
+                                           const MeshTopology& worldTopology, PredicateStatistics& statistics,
+                                           const Cancellation& cancellation = {});
 
 /// An axis-aligned box in (x, y, theta), theta in radians in [-pi, pi].
 struct PatchBox {
