@@ -394,14 +394,13 @@ namespace {
 /// Only a guess: the caller certifies it by signs.
 std::optional<double> newtonGuess(const Polynomial<Interval>& p, double lower, double upper, double tolerance) {
   constexpr int kSteps = 8;
-  std::vector<double> c;
-  for (const Interval& coefficient : p.coefficients()) c.push_back(0.5 * (coefficient.lower() + coefficient.upper()));
+  const auto& coefficients = p.coefficients();
   double t = 0.5 * (lower + upper);
   for (int step = 0; step < kSteps; ++step) {
     double value = 0, slope = 0;
-    for (auto k = c.rbegin(); k != c.rend(); ++k) {
+    for (auto k = coefficients.rbegin(); k != coefficients.rend(); ++k) {
       slope = slope * t + value;
-      value = value * t + *k;
+      value = value * t + 0.5 * (k->lower() + k->upper());
     }
     if (slope == 0 || !std::isfinite(value / slope)) return std::nullopt;
     const double next = t - value / slope;
@@ -469,11 +468,15 @@ void AlgebraicAngle::rememberEnclosure() const {
 AlgebraicAngle AlgebraicAngle::narrowed() const {
   constexpr double kNarrowEnough = 0x1p-40;
   AlgebraicAngle copy = *this;
+  // An event's angle is narrowed by the sweep of each patch at it: the first
+  // narrowing is remembered by the function for the others.
+  copy.adoptRememberedEnclosure();
   for (int pass = 0; pass < 2; ++pass) {
     while (copy.refineInDoubles()) {
     }
     if (!(copy.upper_ - copy.lower_ > kNarrowEnough) || !copy.useTightCoefficients()) break;
   }
+  copy.rememberEnclosure();
   return copy;
 }
 
