@@ -96,20 +96,37 @@ struct SliceRays::Impl {
   AngleAlgebra& algebra;
   const PatchBoxIndex& index;
 
-  Impl(const Arrangement& a, AngleAlgebra& alg) : arrangement(a), algebra(alg), index(*a.boxIndex) {}
+  /// The width of the patches' boxes in x and y together, and a typical box's
+  /// width (the median): the scales of the reaches (see meetings).
+  double extent = 0, typicalWidth = 0;
+
+  Impl(const Arrangement& a, AngleAlgebra& alg) : arrangement(a), algebra(alg), index(*a.boxIndex) {
+    double low = HUGE_VAL, high = -HUGE_VAL;
+    std::vector<double> widths;
+    for (const auto& [box, patch] : index.boxes()) {
+      low = std::min({low, box.low[0], box.low[1]});
+      high = std::max({high, box.high[0], box.high[1]});
+      widths.push_back(std::max(box.high[0] - box.low[0], box.high[1] - box.low[1]));
+    }
+    if (widths.empty()) return;
+    extent = high - low;
+    std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
+    typicalWidth = widths[widths.size() / 2];
+  }
 
   /// The patches whose boxes meet the box of the ray from `from` along `direction`
-  /// (as far as `to` when bounded); the boxes are padded far beyond the rounding of
-  /// the query's doubles (see patchBoxes).
+  /// up to from + reach direction (to infinity without a reach); the boxes are padded
+  /// far beyond the rounding of the query's doubles (see patchBoxes).
   std::vector<std::uint32_t> candidates(const AlgebraicAngle& angle, const Point& from, const Point& direction,
-                                        bool bounded) const {
+                                        std::optional<double> reach) const {
     const double theta = std::remainder(angle.radians(), 2 * M_PI);
     const double huge = std::numeric_limits<double>::max();
     PatchBox query{};
     for (int axis = 0; axis < 2; ++axis) {
       const double start = from[axis].convert_to<double>(), step = direction[axis].convert_to<double>();
-      const double pad = 1e-9 * (1 + std::fabs(start) + std::fabs(step));
-      const double end = bounded ? start + step : (direction[axis] > 0 ? huge : (direction[axis] < 0 ? -huge : start));
+      const double pad = 1e-9 * (1 + std::fabs(start) + std::fabs(step) * reach.value_or(0));
+      const double end = reach ? start + *reach * step
+                               : (direction[axis] > 0 ? huge : (direction[axis] < 0 ? -huge : start));
       query.low[axis] = std::min(start, end) - pad;
       query.high[axis] = std::max(start, end) + pad;
     }
@@ -155,6 +172,11 @@ struct SliceRays::Impl {
   }
 
   RayHit cast(const AlgebraicAngle& angle, const Point& from, const Point& direction, bool bounded) const;
+  std::vector<IntervalMeeting> meetings(const AlgebraicAngle& angle, const RayIn<slices::IntervalSlice>& ray,
+                                        const Point& from, const Point& direction, bool bounded) const;
+  std::vector<IntervalMeeting> meetingsWithin(const AlgebraicAngle& angle, const RayIn<slices::IntervalSlice>& ray,
+                                              const Point& from, const Point& direction, bool bounded,
+                                              std::optional<double> reach) const;
   template <class Slice>
   std::optional<RayHit> castInIntervals(const AlgebraicAngle& angle, const RayIn<Slice>& ray,
                                         const std::vector<IntervalMeeting>& meetings) const;
@@ -181,22 +203,52 @@ RayHit SliceRays::castTo(const AlgebraicAngle& rationalAngle, const Point& from,
 RayHit SliceRays::Impl::cast(const AlgebraicAngle& rationalAngle, const Point& from, const Point& direction,
                              bool bounded) const {
   if (!rationalAngle.isRational()) throw std::invalid_argument("SliceRays::cast: the angle must be rational");
-  std::vector<IntervalMeeting> meetings;
+  std::vector<IntervalMeeting> met;
   std::optional<RayHit> hit;
   {
     RoundingScope rounding;
     const RayIn<slices::IntervalSlice> ray(slices::IntervalSlice(rationalAngle), from, direction);
-    for (std::uint32_t patch : candidates(rationalAngle, from, direction, bounded)) {
-      const std::optional<IntervalMeeting> meeting = ray.meeting(patch, arrangement.patches[patch], bounded);
-      if (meeting && algebra.contains(arrangement.patches[patch].patch.range, rationalAngle)) {
-        meetings.push_back(*meeting);
+    met = meetings(rationalAngle, ray, from, direction, bounded);
+    if (met.empty()) return RayHit{};
+    hit = castInIntervals(rationalAngle, ray, met);
+  }
+  if (!hit) hit = castInDoubleDoubles(rationalAngle, from, direction, bounded, met);
+  return hit ? *hit : castExactly(rationalAngle, from, direction, bounded, std::move(met));
+}
+
+/// The ray's meetings with every patch that may be its first. An unbounded ray
+/// looks near its start first (twice a typical box's width, at least 1/1024 of the
+/// extent), then four times as far each time: once it certainly meets a segment
+/// within the reach, its first meeting is no farther, and every patch that meets it
+/// that near has a box meeting the reach's box, so the patches beyond need not be
+/// looked at (a ray crosses a floor plan of n rooms past about sqrt(n) of them).
+std::vector<IntervalMeeting> SliceRays::Impl::meetings(const AlgebraicAngle& angle,
+                                                       const RayIn<slices::IntervalSlice>& ray, const Point& from,
+                                                       const Point& direction, bool bounded) const {
+  if (!bounded) {
+    for (double reach = std::max(2 * typicalWidth, extent / 1024); reach < 4 * extent; reach *= 4) {
+      std::vector<IntervalMeeting> near = meetingsWithin(angle, ray, from, direction, false, reach);
+      if (std::any_of(near.begin(), near.end(),
+                      [&](const IntervalMeeting& m) { return m.certain && m.distance.upper() < reach; })) {
+        return near;
       }
     }
-    if (meetings.empty()) return RayHit{};
-    hit = castInIntervals(rationalAngle, ray, meetings);
   }
-  if (!hit) hit = castInDoubleDoubles(rationalAngle, from, direction, bounded, meetings);
-  return hit ? *hit : castExactly(rationalAngle, from, direction, bounded, std::move(meetings));
+  return meetingsWithin(angle, ray, from, direction, bounded, bounded ? std::optional<double>(1) : std::nullopt);
+}
+
+/// The ray's meetings with the patches whose boxes meet the box of its part up to
+/// the reach (all of it without one).
+std::vector<IntervalMeeting> SliceRays::Impl::meetingsWithin(const AlgebraicAngle& angle,
+                                                             const RayIn<slices::IntervalSlice>& ray,
+                                                             const Point& from, const Point& direction, bool bounded,
+                                                             std::optional<double> reach) const {
+  std::vector<IntervalMeeting> found;
+  for (std::uint32_t patch : candidates(angle, from, direction, reach)) {
+    const std::optional<IntervalMeeting> meeting = ray.meeting(patch, arrangement.patches[patch], bounded);
+    if (meeting && algebra.contains(arrangement.patches[patch].patch.range, angle)) found.push_back(*meeting);
+  }
+  return found;
 }
 
 /// The candidates met again in double-doubles (the segments' ends are often
