@@ -162,9 +162,16 @@ std::array<std::uint32_t, 2> edgeOf(const ContactPoints& line, int body) {
   return {line.vertices[2 * body], line.vertices[2 * body + 1]};
 }
 
-/// For two EE contacts that share one body's edge and whose other edges share one
-/// vertex, their hinge coincidence; else null. EE points: robot edge a0 -> a1,
-/// environment edge b0 -> b1.
+/// Two EE contacts that share one edge, whose other edges leave one vertex x, to a
+/// and a': with the other edges' directions u, u' from x and the shared edge's
+/// direction v, each line is "x + d lies on the plane through the shared edge
+/// spanned by v and u (or u')", and when v lies in the plane of x, a, a' the two
+/// planes are that plane: the lines coincide where det(v, u, u') = 0. For a shared
+/// environment edge that is (R (u x u')) . v, for a shared robot edge (R u) . (v x
+/// v'): an EF function of the shared edge and the plane (x, a, a'), keyed as one
+/// (hingeCoincidence). When (x, a, a') is a triangle of the mesh, its roots are ends
+/// of both ranges. Null for other pairs. EE points: robot edge a0 -> a1, environment
+/// edge b0 -> b1.
 std::shared_ptr<const AngleFunction> hingedCoincidence(const ContactPoints& p, const ContactPoints& q) {
   if (p.kind != ContactKind::EdgeEdge || q.kind != ContactKind::EdgeEdge) return nullptr;
   for (int shared = 0; shared < 2; ++shared) {
@@ -212,7 +219,7 @@ std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patche
       overlaps.push_back({{first, second}, root, {*onA, *endsReached(b, a, root, algebra)}});
     }
   }
-  // By pairs (each pair's roots are in increasing order already).
+  // By pairs, each pair's roots in the order roots() gives them.
   std::stable_sort(overlaps.begin(), overlaps.end(),
                    [](const PatchOverlap& x, const PatchOverlap& y) { return x.patches < y.patches; });
   return overlaps;

@@ -53,7 +53,8 @@ struct PatchOverlap {
 /// an edge of direction v whose other edges run from x to a and a', det(v, u, u')
 /// with u = a - x, u' = a' - x (the two lines "x + d on the plane through the shared
 /// edge spanned by v and u" are one when v, u, u' are coplanar), which is (R (u x
-/// u')) . v for a shared environment edge. Sorted by patches, then by angle.
+/// u')) . v for a shared environment edge. Sorted by patches; one pair's overlaps in
+/// the order of AngleAlgebra::roots (by chart, then by t).
 std::vector<PatchOverlap> patchOverlaps(const std::vector<PatchGeometry>& patches, AngleAlgebra& algebra);
 
 /// The same, with the pairs of patches whose boxes meet given (candidatePatchPairs):
