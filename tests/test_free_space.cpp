@@ -104,10 +104,6 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BundledFreeSpace,
                                            SceneCase{"tetra_floorplan", -1}),
                          [](const ::testing::TestParamInfo<SceneCase>& info) { return info.param.name; });
 
-}  // namespace
-
-namespace {
-
 /// What a construction did when asked to stop `delay` after announcing `stage`.
 struct CancelledBuild {
   std::vector<std::string> stages;  // announced, in order
