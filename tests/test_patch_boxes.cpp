@@ -104,4 +104,45 @@ TEST_P(BundledScenePatchBoxes, PiecesContainTheSegments) {
   }
 }
 
+// The index's pairs against every pair of patches compared box by box: those with
+// an arc box each that meet and a piece each that meet, no more, no fewer, once;
+// likewise the patches that meet a query box.
+TEST_P(BundledScenePatchBoxes, MeetingPairsAreThePairsWhoseBoxesMeet) {
+  BundledScene scene(GetParam());
+  const auto meet = [](const std::vector<PatchBox>& first, const std::vector<PatchBox>& second) {
+    return std::any_of(first.begin(), first.end(), [&](const PatchBox& a) {
+      return std::any_of(second.begin(), second.end(), [&](const PatchBox& b) {
+        for (int axis = 0; axis < 3; ++axis) {
+          if (a.high[axis] < b.low[axis] || b.high[axis] < a.low[axis]) return false;
+        }
+        return true;
+      });
+    });
+  };
+  std::vector<std::vector<PatchBox>> arcs, pieces;
+  for (const PatchGeometry& patch : scene.geometries) {
+    arcs.push_back(patchBoxes(patch));
+    pieces.push_back(patchBoxes(patch, PatchBoxIndex::kPieceWidth));
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> expected;
+  for (std::uint32_t a = 0; a < arcs.size(); ++a) {
+    for (std::uint32_t b = a + 1; b < arcs.size(); ++b) {
+      if (meet(arcs[a], arcs[b]) && meet(pieces[a], pieces[b])) expected.emplace_back(a, b);
+    }
+  }
+  EXPECT_GT(expected.size(), scene.geometries.size());
+  const PatchBoxIndex index(scene.geometries);
+  EXPECT_EQ(index.meetingPairs(), expected);
+  // Queries: the patches with an arc box and a piece that meet the query box.
+  for (std::size_t query = 0; query < arcs.size(); query += 3) {
+    for (const PatchBox& box : arcs[query]) {
+      std::vector<std::uint32_t> meeting;
+      for (std::uint32_t patch = 0; patch < arcs.size(); ++patch) {
+        if (meet(arcs[patch], {box}) && meet(pieces[patch], {box})) meeting.push_back(patch);
+      }
+      EXPECT_EQ(index.meeting(box), meeting);
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledScenePatchBoxes, ::testing::Values("maze.cfg", "room_door.cfg", "cage.cfg"));

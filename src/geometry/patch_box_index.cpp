@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
-#include <boost/iterator/function_output_iterator.hpp>
+#include <cmath>
 
 namespace freespace {
 
@@ -27,6 +27,69 @@ bool meet(const PatchBox& a, const PatchBox& b) {
   return true;
 }
 
+/// A uniform grid over the boxes' (x, y) extent, for finding the pairs of boxes that
+/// meet: each pair of boxes in one cell is tested, and a meeting pair is reported
+/// only by the cell that holds the low corner of the two boxes' common (x, y) part,
+/// so once. Cells twice as wide as the median box, so that a box covers a few cells
+/// and a cell holds the boxes near it; wider when large boxes would cover too many.
+class BoxGrid {
+ public:
+  explicit BoxGrid(const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes) {
+    if (boxes.empty()) return;
+    std::vector<double> widths;
+    for (int axis : {0, 1}) {
+      double high = -HUGE_VAL;
+      for (const auto& entry : boxes) {
+        low_[axis] = std::min(low_[axis], entry.first.low[axis]);
+        high = std::max(high, entry.first.high[axis]);
+        widths.push_back(entry.first.high[axis] - entry.first.low[axis]);
+      }
+      extent_ = std::max(extent_, high - low_[axis]);
+    }
+    std::nth_element(widths.begin(), widths.begin() + static_cast<std::ptrdiff_t>(widths.size() / 2), widths.end());
+    cellWidth_ = std::max({2 * widths[widths.size() / 2], extent_ / kMaxCells, extent_ * 1e-12, 1e-300});
+    while (coveredCells(boxes) > kCellsPerBox * boxes.size()) cellWidth_ *= 2;
+  }
+
+  /// The column (axis 0) or row (axis 1) of the cells that holds the coordinate.
+  std::uint64_t cellOf(int axis, double coordinate) const {
+    const double cell = std::floor((coordinate - low_[axis]) / cellWidth_);
+    return std::isnan(cell) ? 0 : static_cast<std::uint64_t>(std::clamp(cell, 0.0, kMaxCells));
+  }
+  /// The cell's one number.
+  static std::uint64_t key(std::uint64_t column, std::uint64_t row) {
+    return column * (static_cast<std::uint64_t>(kMaxCells) + 1) + row;
+  }
+  /// Calls `visit(key)` for each cell the box covers.
+  template <class Visit>
+  void forEachCell(const PatchBox& box, const Visit& visit) const {
+    for (std::uint64_t column = cellOf(0, box.low[0]); column <= cellOf(0, box.high[0]); ++column) {
+      for (std::uint64_t row = cellOf(1, box.low[1]); row <= cellOf(1, box.high[1]); ++row) visit(key(column, row));
+    }
+  }
+
+ private:
+  /// At most this many cells along an axis.
+  static constexpr double kMaxCells = 1 << 20;
+  /// At most this many cells per box on average.
+  static constexpr std::size_t kCellsPerBox = 16;
+
+  std::size_t coveredCells(const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes) const {
+    std::size_t cells = 0;
+    for (const auto& entry : boxes) {
+      cells += (cellOf(0, entry.first.high[0]) - cellOf(0, entry.first.low[0]) + 1) *
+               (cellOf(1, entry.first.high[1]) - cellOf(1, entry.first.low[1]) + 1);
+    }
+    return cells;
+  }
+
+  double low_[2] = {HUGE_VAL, HUGE_VAL};
+  double extent_ = 0;
+  double cellWidth_ = 1;
+};
+
+bool lowerInAngle(const PatchBox& a, const PatchBox& b) { return a.low[2] < b.low[2]; }
+
 }  // namespace
 
 struct PatchBoxIndex::Tree {
@@ -43,7 +106,10 @@ PatchBoxIndex::PatchBoxIndex(const std::vector<PatchGeometry>& patches, const Ca
       entries.emplace_back(toBox(box), i);
     }
     firstPiece_.push_back(pieces_.size());
-    const std::vector<PatchBox> pieces = patchBoxes(patches[i], kPieceWidth);
+    std::vector<PatchBox> pieces = patchBoxes(patches[i], kPieceWidth);
+    std::sort(pieces.begin(), pieces.end(), lowerInAngle);
+    // With a margin over the rounding of the differences.
+    for (const PatchBox& piece : pieces) widestPiece_ = std::max(widestPiece_, piece.high[2] - piece.low[2] + 1e-9);
     pieces_.insert(pieces_.end(), pieces.begin(), pieces.end());
   }
   firstPiece_.push_back(pieces_.size());
@@ -65,30 +131,85 @@ std::vector<std::uint32_t> PatchBoxIndex::meeting(const PatchBox& query) const {
   return patches;
 }
 
-std::vector<std::pair<std::uint32_t, std::uint32_t>> PatchBoxIndex::meetingPairs(const Cancellation& cancellation) const {
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
-  for (const auto& [box, patch] : boxes_) {
-    cancellation.check();
-    const auto addPair = [&pairs, patch = patch](const BoxEntry& entry) {
-      if (patch < entry.second) pairs.emplace_back(patch, entry.second);
-    };
-    tree_->rtree.query(bgi::intersects(toBox(box)), boost::make_function_output_iterator(addPair));
+namespace {
+
+/// A cell a box covers; sorted by cell, then by the box's lowest angle.
+struct CellEntry {
+  std::uint64_t cell;
+  double lowestAngle;
+  std::uint32_t box;
+  bool operator<(const CellEntry& other) const {
+    return cell != other.cell ? cell < other.cell : lowestAngle < other.lowestAngle;
   }
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
-                             [&](const auto& pair) { return !piecesMeet(pair.first, pair.second); }),
-              pairs.end());
+};
+
+/// A pair of patches as one number, the smaller in the high half (sorted faster).
+std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) { return std::uint64_t{std::min(a, b)} << 32 | std::max(a, b); }
+
+/// The pairs of boxes of different patches in one cell (its entries sorted by
+/// lowest angle) that meet and that the cell reports (BoxGrid), as pair keys.
+void addPairsInCell(const BoxGrid& grid, const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes,
+                    std::vector<CellEntry>::const_iterator cellStart, std::vector<CellEntry>::const_iterator cellEnd,
+                    std::vector<std::uint64_t>& pairKeys) {
+  for (auto i = cellStart; i != cellEnd; ++i) {
+    const auto& [a, patchA] = boxes[i->box];
+    // The boxes that follow up to a's highest angle are the only ones that can meet it.
+    for (auto j = i + 1; j != cellEnd && j->lowestAngle <= a.high[2]; ++j) {
+      const auto& [b, patchB] = boxes[j->box];
+      if (patchA == patchB || !meet(a, b)) continue;
+      const std::uint64_t corner =
+          BoxGrid::key(grid.cellOf(0, std::max(a.low[0], b.low[0])), grid.cellOf(1, std::max(a.low[1], b.low[1])));
+      if (corner == i->cell) pairKeys.push_back(pairKey(patchA, patchB));
+    }
+  }
+}
+
+}  // namespace
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> PatchBoxIndex::meetingPairs(const Cancellation& cancellation) const {
+  const BoxGrid grid(boxes_);
+  std::vector<CellEntry> entries;
+  for (std::uint32_t b = 0; b < boxes_.size(); ++b) {
+    const PatchBox& box = boxes_[b].first;
+    grid.forEachCell(box, [&](std::uint64_t cell) { entries.push_back({cell, box.low[2], b}); });
+  }
+  std::sort(entries.begin(), entries.end());
+  std::vector<std::uint64_t> pairKeys;
+  for (auto cellStart = entries.cbegin(); cellStart != entries.cend();) {
+    cancellation.check();
+    const auto cellEnd = std::find_if(cellStart, entries.cend(),
+                                      [cell = cellStart->cell](const CellEntry& entry) { return entry.cell != cell; });
+    addPairsInCell(grid, boxes_, cellStart, cellEnd, pairKeys);
+    cellStart = cellEnd;
+  }
+  // Two arcs of one patch may both meet another patch.
+  std::sort(pairKeys.begin(), pairKeys.end());
+  pairKeys.erase(std::unique(pairKeys.begin(), pairKeys.end()), pairKeys.end());
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (const std::uint64_t key : pairKeys) {
+    const auto first = static_cast<std::uint32_t>(key >> 32), second = static_cast<std::uint32_t>(key);
+    if (piecesMeet(first, second)) pairs.emplace_back(first, second);
+  }
   return pairs;
 }
 
 bool PatchBoxIndex::pieceMeets(std::uint32_t patch, const PatchBox& query) const {
-  return std::any_of(pieces_.begin() + firstPiece_[patch], pieces_.begin() + firstPiece_[patch + 1],
-                     [&](const PatchBox& piece) { return meet(piece, query); });
+  // The pieces are sorted by their lowest angle and at most widestPiece_ wide: those
+  // that can meet the query start within that of its lowest angle.
+  const auto end = pieces_.begin() + static_cast<std::ptrdiff_t>(firstPiece_[patch + 1]);
+  PatchBox bound = query;
+  bound.low[2] -= widestPiece_;
+  for (auto piece = std::lower_bound(pieces_.begin() + static_cast<std::ptrdiff_t>(firstPiece_[patch]), end, bound,
+                                     lowerInAngle);
+       piece != end && piece->low[2] <= query.high[2]; ++piece) {
+    if (meet(*piece, query)) return true;
+  }
+  return false;
 }
 
 bool PatchBoxIndex::piecesMeet(std::uint32_t first, std::uint32_t second) const {
-  return std::any_of(pieces_.begin() + firstPiece_[first], pieces_.begin() + firstPiece_[first + 1],
+  return std::any_of(pieces_.begin() + static_cast<std::ptrdiff_t>(firstPiece_[first]),
+                     pieces_.begin() + static_cast<std::ptrdiff_t>(firstPiece_[first + 1]),
                      [&](const PatchBox& piece) { return pieceMeets(second, piece); });
 }
 

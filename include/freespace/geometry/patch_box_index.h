@@ -10,9 +10,10 @@
 
 namespace freespace {
 
-/// An R-tree (Boost.Geometry) of the patches' (x, y, theta) boxes (patchBoxes), one
-/// per arc of a patch's range; its answers are refined by each patch's boxes over
-/// pieces of at most kPieceWidth radians, which follow the segment more closely.
+/// The patches' (x, y, theta) boxes (patchBoxes), one per arc of a patch's range, in
+/// an R-tree (Boost.Geometry) for queries and on a uniform (x, y) grid for the pairs
+/// that meet; answers are refined by each patch's boxes over pieces of at most
+/// kPieceWidth radians, which follow the segment more closely.
 class PatchBoxIndex {
  public:
   explicit PatchBoxIndex(const std::vector<PatchGeometry>& patches, const Cancellation& cancellation = {});
@@ -38,9 +39,12 @@ class PatchBoxIndex {
   bool piecesMeet(std::uint32_t first, std::uint32_t second) const;
 
   std::vector<std::pair<PatchBox, std::uint32_t>> boxes_;
-  /// The pieces' boxes, patch by patch: patch i's from firstPiece_[i] to firstPiece_[i + 1].
+  /// The pieces' boxes, patch by patch: patch i's from firstPiece_[i] to firstPiece_[i + 1],
+  /// each patch's sorted by their lowest angle.
   std::vector<PatchBox> pieces_;
   std::vector<std::size_t> firstPiece_;
+  /// The largest difference of angles over a piece (a little more).
+  double widestPiece_ = 0;
   std::unique_ptr<Tree> tree_;
 };
 
