@@ -22,6 +22,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -192,7 +193,8 @@ int run(int argc, char** argv) {
     } else if (argument == "--plot" && i + 1 < argc) {
       plot = argv[++i];
     } else if (argument == "--repeat" && i + 1 < argc) {
-      repeats = std::max(1u, benchmarks::wholeNumber(argument, argv[++i]));
+      repeats = benchmarks::wholeNumber(argument, argv[++i]);
+      if (repeats == 0) throw std::invalid_argument("--repeat needs at least one build, not 0");
     } else if (argument == "--euler") {
       checkShells = true;
     } else {
