@@ -11,7 +11,9 @@
 #include "exact_geometry.h"
 #include "freespace/geometry/patch_box_index.h"
 #include "freespace/geometry/patch_geometry.h"
+#include "freespace/geometry/perturbed_meshes.h"
 #include "freespace/numbers/half_angle.h"
+#include "random_scene.h"
 
 using namespace freespace;
 using namespace freespace::testing;
@@ -68,6 +70,46 @@ struct Coverage {
   }
 };
 
+bool anyMeet(const std::vector<PatchBox>& first, const std::vector<PatchBox>& second) {
+  return std::any_of(first.begin(), first.end(), [&](const PatchBox& a) {
+    return std::any_of(second.begin(), second.end(), [&](const PatchBox& b) {
+      for (int axis = 0; axis < 3; ++axis) {
+        if (a.high[axis] < b.low[axis] || b.high[axis] < a.low[axis]) return false;
+      }
+      return true;
+    });
+  });
+}
+
+/// Checks the index's pairs and queries against the patches' boxes compared one by
+/// one: a pair when an arc box of each meet and a piece of each meet.
+void expectPairsOfMeetingBoxes(const std::vector<PatchGeometry>& geometries) {
+  std::vector<std::vector<PatchBox>> arcs, pieces;
+  for (const PatchGeometry& patch : geometries) {
+    arcs.push_back(patchBoxes(patch));
+    pieces.push_back(patchBoxes(patch, PatchBoxIndex::kPieceWidth));
+  }
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> expected;
+  for (std::uint32_t a = 0; a < arcs.size(); ++a) {
+    for (std::uint32_t b = a + 1; b < arcs.size(); ++b) {
+      if (anyMeet(arcs[a], arcs[b]) && anyMeet(pieces[a], pieces[b])) expected.emplace_back(a, b);
+    }
+  }
+  EXPECT_GT(expected.size(), geometries.size());
+  const PatchBoxIndex index(geometries);
+  EXPECT_EQ(index.meetingPairs(), expected);
+  // Queries: the arc boxes of every third patch.
+  for (std::size_t query = 0; query < arcs.size(); query += 3) {
+    for (const PatchBox& box : arcs[query]) {
+      std::vector<std::uint32_t> meeting;
+      for (std::uint32_t patch = 0; patch < arcs.size(); ++patch) {
+        if (anyMeet(arcs[patch], {box}) && anyMeet(pieces[patch], {box})) meeting.push_back(patch);
+      }
+      EXPECT_EQ(index.meeting(box), meeting);
+    }
+  }
+}
+
 }  // namespace
 
 class BundledScenePatchBoxes : public ::testing::TestWithParam<std::string> {};
@@ -109,40 +151,22 @@ TEST_P(BundledScenePatchBoxes, PiecesContainTheSegments) {
 // likewise the patches that meet a query box.
 TEST_P(BundledScenePatchBoxes, MeetingPairsAreThePairsWhoseBoxesMeet) {
   BundledScene scene(GetParam());
-  const auto meet = [](const std::vector<PatchBox>& first, const std::vector<PatchBox>& second) {
-    return std::any_of(first.begin(), first.end(), [&](const PatchBox& a) {
-      return std::any_of(second.begin(), second.end(), [&](const PatchBox& b) {
-        for (int axis = 0; axis < 3; ++axis) {
-          if (a.high[axis] < b.low[axis] || b.high[axis] < a.low[axis]) return false;
-        }
-        return true;
-      });
-    });
-  };
-  std::vector<std::vector<PatchBox>> arcs, pieces;
-  for (const PatchGeometry& patch : scene.geometries) {
-    arcs.push_back(patchBoxes(patch));
-    pieces.push_back(patchBoxes(patch, PatchBoxIndex::kPieceWidth));
-  }
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> expected;
-  for (std::uint32_t a = 0; a < arcs.size(); ++a) {
-    for (std::uint32_t b = a + 1; b < arcs.size(); ++b) {
-      if (meet(arcs[a], arcs[b]) && meet(pieces[a], pieces[b])) expected.emplace_back(a, b);
-    }
-  }
-  EXPECT_GT(expected.size(), scene.geometries.size());
-  const PatchBoxIndex index(scene.geometries);
-  EXPECT_EQ(index.meetingPairs(), expected);
-  // Queries: the patches with an arc box and a piece that meet the query box.
-  for (std::size_t query = 0; query < arcs.size(); query += 3) {
-    for (const PatchBox& box : arcs[query]) {
-      std::vector<std::uint32_t> meeting;
-      for (std::uint32_t patch = 0; patch < arcs.size(); ++patch) {
-        if (meet(arcs[patch], {box}) && meet(pieces[patch], {box})) meeting.push_back(patch);
-      }
-      EXPECT_EQ(index.meeting(box), meeting);
-    }
-  }
+  expectPairsOfMeetingBoxes(scene.geometries);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledScenePatchBoxes, ::testing::Values("maze.cfg", "room_door.cfg", "cage.cfg"));
+
+// Boxes of very different sizes: a bar 4,000 long beside small blocks, so that the
+// contacts along the bar's long edges have boxes hundreds of times as long as the
+// others (the grid of the pairs takes wider cells then).
+TEST(PatchBoxIndex, MeetingPairsAmongLongAndSmallBoxes) {
+  std::vector<TriangleSoup> parts{boxSoup({10, -2000, 0.45}, {12, 2000, 0.5})};
+  for (int i = 0; i < 4; ++i) {
+    for (int j = 0; j < 4; ++j) parts.push_back(boxSoup({3.0 * i, 3.0 * j, 0.2}, {3.0 * i + 0.5, 3.0 * j + 0.5, 0.7}));
+  }
+  PerturbedMeshes meshes = perturbMeshes(tetrahedronMesh({0, 0, 0.1}, {1, 0, 0.35}, {0, 1, 0.6}, {0.3, 0.3, 0.9}),
+                                         Mesh::fromSoup(joinSoups(parts), "bar and blocks"), PerturbationSettings{});
+  RandomScene scene(std::move(meshes.robot), std::move(meshes.world));  // any two meshes with their topology
+  ASSERT_TRUE(scene.hasDistinctHeights());
+  expectPairsOfMeetingBoxes(scene.allPatchGeometries());
+}
