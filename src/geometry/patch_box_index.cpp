@@ -47,7 +47,7 @@ class BoxGrid {
       extent_ = std::max(extent_, high - low_[axis]);
     }
     std::nth_element(widths.begin(), widths.begin() + static_cast<std::ptrdiff_t>(widths.size() / 2), widths.end());
-    cellWidth_ = std::max({2 * widths[widths.size() / 2], extent_ / kMaxCells, extent_ * 1e-12, 1e-300});
+    cellWidth_ = std::max({2 * widths[widths.size() / 2], extent_ / kMaxCells, 1e-300});
     while (coveredCells(boxes) > kCellsPerBox * boxes.size()) cellWidth_ *= 2;
   }
 
