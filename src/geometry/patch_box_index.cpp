@@ -27,33 +27,22 @@ bool meet(const PatchBox& a, const PatchBox& b) {
   return true;
 }
 
-/// A uniform grid over the boxes' (x, y) extent, for finding the pairs of boxes that
-/// meet: each pair of boxes in one cell is tested, and a meeting pair is reported
-/// only by the cell that holds the low corner of the two boxes' common (x, y) part,
-/// so once. Cells twice as wide as the median box, so that a box covers a few cells
-/// and a cell holds the boxes near it; wider when large boxes would cover too many.
+/// A uniform grid over the boxes' (x, y) square (PatchBoxIndex::Scales), for finding
+/// the pairs of boxes that meet: each pair of boxes in one cell is tested, and a
+/// meeting pair is reported only by the cell that holds the low corner of the two
+/// boxes' common (x, y) part, so once. Cells twice as wide as a typical box, so that
+/// a box covers a few cells and a cell holds the boxes near it; wider when large
+/// boxes would cover too many.
 class BoxGrid {
  public:
-  explicit BoxGrid(const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes) {
-    if (boxes.empty()) return;
-    std::vector<double> widths;
-    for (int axis : {0, 1}) {
-      double high = -HUGE_VAL;
-      for (const auto& entry : boxes) {
-        low_[axis] = std::min(low_[axis], entry.first.low[axis]);
-        high = std::max(high, entry.first.high[axis]);
-        widths.push_back(entry.first.high[axis] - entry.first.low[axis]);
-      }
-      extent_ = std::max(extent_, high - low_[axis]);
-    }
-    std::nth_element(widths.begin(), widths.begin() + static_cast<std::ptrdiff_t>(widths.size() / 2), widths.end());
-    cellWidth_ = std::max({2 * widths[widths.size() / 2], extent_ / kMaxCells, 1e-300});
+  BoxGrid(const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes, const PatchBoxIndex::Scales& scales)
+      : low_(scales.low), cellWidth_(std::max({2 * scales.typicalWidth, scales.side / kMaxCells, 1e-300})) {
     while (coveredCells(boxes) > kCellsPerBox * boxes.size()) cellWidth_ *= 2;
   }
 
-  /// The column (axis 0) or row (axis 1) of the cells that holds the coordinate.
-  std::uint64_t cellOf(int axis, double coordinate) const {
-    const double cell = std::floor((coordinate - low_[axis]) / cellWidth_);
+  /// The column (of an x) or row (of a y) of the cells that holds the coordinate.
+  std::uint64_t cellOf(double coordinate) const {
+    const double cell = std::floor((coordinate - low_) / cellWidth_);
     return std::isnan(cell) ? 0 : static_cast<std::uint64_t>(std::clamp(cell, 0.0, kMaxCells));
   }
   /// The cell's one number.
@@ -63,8 +52,8 @@ class BoxGrid {
   /// Calls `visit(key)` for each cell the box covers.
   template <class Visit>
   void forEachCell(const PatchBox& box, const Visit& visit) const {
-    for (std::uint64_t column = cellOf(0, box.low[0]); column <= cellOf(0, box.high[0]); ++column) {
-      for (std::uint64_t row = cellOf(1, box.low[1]); row <= cellOf(1, box.high[1]); ++row) visit(key(column, row));
+    for (std::uint64_t column = cellOf(box.low[0]); column <= cellOf(box.high[0]); ++column) {
+      for (std::uint64_t row = cellOf(box.low[1]); row <= cellOf(box.high[1]); ++row) visit(key(column, row));
     }
   }
 
@@ -77,18 +66,31 @@ class BoxGrid {
   std::size_t coveredCells(const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes) const {
     std::size_t cells = 0;
     for (const auto& entry : boxes) {
-      cells += (cellOf(0, entry.first.high[0]) - cellOf(0, entry.first.low[0]) + 1) *
-               (cellOf(1, entry.first.high[1]) - cellOf(1, entry.first.low[1]) + 1);
+      cells += (cellOf(entry.first.high[0]) - cellOf(entry.first.low[0]) + 1) *
+               (cellOf(entry.first.high[1]) - cellOf(entry.first.low[1]) + 1);
     }
     return cells;
   }
 
-  double low_[2] = {HUGE_VAL, HUGE_VAL};
-  double extent_ = 0;
-  double cellWidth_ = 1;
+  double low_;
+  double cellWidth_;
 };
 
 bool lowerInAngle(const PatchBox& a, const PatchBox& b) { return a.low[2] < b.low[2]; }
+
+PatchBoxIndex::Scales scalesOf(const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes) {
+  if (boxes.empty()) return {};
+  double low = HUGE_VAL, high = -HUGE_VAL;
+  std::vector<double> widths;
+  for (const auto& [box, patch] : boxes) {
+    low = std::min({low, box.low[0], box.low[1]});
+    high = std::max({high, box.high[0], box.high[1]});
+    widths.push_back(std::max(box.high[0] - box.low[0], box.high[1] - box.low[1]));
+  }
+  const auto middle = widths.begin() + static_cast<std::ptrdiff_t>(widths.size() / 2);
+  std::nth_element(widths.begin(), middle, widths.end());
+  return {low, high - low, *middle};
+}
 
 }  // namespace
 
@@ -113,6 +115,7 @@ PatchBoxIndex::PatchBoxIndex(const std::vector<PatchGeometry>& patches, const Ca
     pieces_.insert(pieces_.end(), pieces.begin(), pieces.end());
   }
   firstPiece_.push_back(pieces_.size());
+  scales_ = scalesOf(boxes_);
   tree_->rtree = bgi::rtree<BoxEntry, bgi::rstar<16>>(entries.begin(), entries.end());
 }
 
@@ -158,7 +161,7 @@ void addPairsInCell(const BoxGrid& grid, const std::vector<std::pair<PatchBox, s
       const auto& [b, patchB] = boxes[j->box];
       if (patchA == patchB || !meet(a, b)) continue;
       const std::uint64_t corner =
-          BoxGrid::key(grid.cellOf(0, std::max(a.low[0], b.low[0])), grid.cellOf(1, std::max(a.low[1], b.low[1])));
+          BoxGrid::key(grid.cellOf(std::max(a.low[0], b.low[0])), grid.cellOf(std::max(a.low[1], b.low[1])));
       if (corner == i->cell) pairKeys.push_back(pairKey(patchA, patchB));
     }
   }
@@ -167,7 +170,7 @@ void addPairsInCell(const BoxGrid& grid, const std::vector<std::pair<PatchBox, s
 }  // namespace
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> PatchBoxIndex::meetingPairs(const Cancellation& cancellation) const {
-  const BoxGrid grid(boxes_);
+  const BoxGrid grid(boxes_, scales_);
   std::vector<CellEntry> entries;
   for (std::uint32_t b = 0; b < boxes_.size(); ++b) {
     const PatchBox& box = boxes_[b].first;

@@ -96,23 +96,7 @@ struct SliceRays::Impl {
   AngleAlgebra& algebra;
   const PatchBoxIndex& index;
 
-  /// The width of the patches' boxes in x and y together, and a typical box's
-  /// width (the median): the scales of the reaches (see meetings).
-  double extent = 0, typicalWidth = 0;
-
-  Impl(const Arrangement& a, AngleAlgebra& alg) : arrangement(a), algebra(alg), index(*a.boxIndex) {
-    double low = HUGE_VAL, high = -HUGE_VAL;
-    std::vector<double> widths;
-    for (const auto& [box, patch] : index.boxes()) {
-      low = std::min({low, box.low[0], box.low[1]});
-      high = std::max({high, box.high[0], box.high[1]});
-      widths.push_back(std::max(box.high[0] - box.low[0], box.high[1] - box.low[1]));
-    }
-    if (widths.empty()) return;
-    extent = high - low;
-    std::nth_element(widths.begin(), widths.begin() + widths.size() / 2, widths.end());
-    typicalWidth = widths[widths.size() / 2];
-  }
+  Impl(const Arrangement& a, AngleAlgebra& alg) : arrangement(a), algebra(alg), index(*a.boxIndex) {}
 
   /// The patches whose boxes meet the box of the ray from `from` along `direction`
   /// up to from + reach direction (to infinity without a reach); the boxes are padded
@@ -218,7 +202,7 @@ RayHit SliceRays::Impl::cast(const AlgebraicAngle& rationalAngle, const Point& f
 
 /// The ray's meetings with every patch that may be its first. An unbounded ray
 /// looks near its start first (twice a typical box's width, at least 1/1024 of the
-/// extent), then four times as far each time: once it certainly meets a segment
+/// boxes' square: PatchBoxIndex::Scales), then four times as far each time: once it certainly meets a segment
 /// within the reach, its first meeting is no farther, and every patch that meets it
 /// that near has a box meeting the reach's box, so the patches beyond need not be
 /// looked at (a ray crosses a floor plan of n rooms past about sqrt(n) of them).
@@ -226,7 +210,8 @@ std::vector<IntervalMeeting> SliceRays::Impl::meetings(const AlgebraicAngle& ang
                                                        const RayIn<slices::IntervalSlice>& ray, const Point& from,
                                                        const Point& direction, bool bounded) const {
   if (!bounded) {
-    for (double reach = std::max(2 * typicalWidth, extent / 1024); reach < 4 * extent; reach *= 4) {
+    const PatchBoxIndex::Scales& scales = index.scales();
+    for (double reach = std::max(2 * scales.typicalWidth, scales.side / 1024); reach < 4 * scales.side; reach *= 4) {
       std::vector<IntervalMeeting> near = meetingsWithin(angle, ray, from, direction, false, reach);
       if (std::any_of(near.begin(), near.end(),
                       [&](const IntervalMeeting& m) { return m.certain && m.distance.upper() < reach; })) {

@@ -31,6 +31,14 @@ class PatchBoxIndex {
   /// Every box with its patch, patch by patch.
   const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes() const { return boxes_; }
 
+  /// The boxes' scales in x and y: the smallest square [low, low + side]^2 that holds
+  /// every box's (x, y) part, and a typical box's width (the median over the boxes of
+  /// the larger of their x and y widths). Zero without boxes.
+  struct Scales {
+    double low = 0, side = 0, typicalWidth = 0;
+  };
+  const Scales& scales() const { return scales_; }
+
  private:
   struct Tree;
   /// Whether a box over a piece of the patch meets the query box.
@@ -39,6 +47,7 @@ class PatchBoxIndex {
   bool piecesMeet(std::uint32_t first, std::uint32_t second) const;
 
   std::vector<std::pair<PatchBox, std::uint32_t>> boxes_;
+  Scales scales_;
   /// The pieces' boxes, patch by patch: patch i's from firstPiece_[i] to firstPiece_[i + 1],
   /// each patch's sorted by their lowest angle.
   std::vector<PatchBox> pieces_;
