@@ -8,10 +8,12 @@
 // the machine running out of memory. These replacements refuse a request larger
 // than the machine's physical memory (as the system's allocator does under Linux's
 // default overcommit rule), allocate the rest with mimalloc, and throw as the
-// standard says.
+// standard says. mimalloc is also given address space advised for huge pages.
 #include <mimalloc.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <new>
 
@@ -22,6 +24,28 @@ std::size_t physicalMemory() {
   return pages > 0 && pageSize > 0 ? static_cast<std::size_t>(pages) * static_cast<std::size_t>(pageSize)
                                    : static_cast<std::size_t>(-1);
 }
+
+/// A build touches hundreds of MB once, and with the system's 4 KiB pages every
+/// first touch is a page fault (58,000 in one build of house_mixed_32). mimalloc is
+/// given arenas of 1 GiB, together a quarter of the physical memory, reserved
+/// without being backed, which it fills before it asks the system for more; they
+/// are advised for transparent huge pages (2 MiB each). (mimalloc places a
+/// reservation of at most 1 GiB where it finds its blocks' owners again.) Where the
+/// system refuses a reservation or the advice, mimalloc allocates as before.
+bool manageHugePageArenas() {
+  constexpr std::size_t kArenaSize = std::size_t{1} << 30;
+  const std::size_t count = std::min<std::size_t>(physicalMemory() / 4 / kArenaSize, 16);
+  for (std::size_t k = 0; k < count; ++k) {
+    mi_arena_id_t arena = 0;
+    if (mi_reserve_os_memory_ex(kArenaSize, true, false, false, &arena) != 0) return false;
+    std::size_t size = 0;
+    void* start = mi_arena_area(arena, &size);
+    if (start == nullptr || madvise(start, size, MADV_HUGEPAGE) != 0) return false;
+  }
+  return count > 0;
+}
+
+[[maybe_unused]] const bool hugePageArenasManaged = manageHugePageArenas();
 
 bool beyondMemory(std::size_t size) {
   static const std::size_t limit = physicalMemory();
