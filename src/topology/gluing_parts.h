@@ -21,6 +21,11 @@ class GlueList {
     if (codeOf(b) < codeOf(a)) std::swap(a, b);
     if (seen_.insert({codeOf(a), codeOf(b)}).second) gluing_.glues.push_back({a, b, edge, at});
   }
+  /// Whether the pair was glued already (then its angle need not be found).
+  bool glued(SubFaceId a, SubFaceId b) const {
+    const std::uint64_t first = codeOf(a), second = codeOf(b);
+    return seen_.count(first < second ? std::pair(first, second) : std::pair(second, first)) != 0;
+  }
   void addUnmatched(SubFaceId face) {
     if (unmatched_.insert(codeOf(face)).second) gluing_.unmatched.push_back(face);
   }
@@ -53,7 +58,8 @@ void glueAround(const std::vector<Ray>& counterclockwise, const FacesLeft& faces
     const Ray &a = counterclockwise[i], &b = counterclockwise[(i + 1) % count];
     const bool aFaces = facesLeft(a), bFaces = !facesLeft(b);
     if (aFaces && bFaces) {
-      glues.add(faceOf(a, true), faceOf(b, false), edge, atOf(a, b));
+      const SubFaceId first = faceOf(a, true), second = faceOf(b, false);
+      if (!glues.glued(first, second)) glues.add(first, second, edge, atOf(a, b));
     } else if (aFaces) {
       glues.addUnmatched(faceOf(a, true));
     } else if (bFaces) {

@@ -203,13 +203,14 @@ SubFaceGluing glueAroundSpirals(const std::vector<PatchGeometry>& patches,
         const PatchSlab& at = subdivisions[patch].slabs[*slab];
         spokes.push_back({patch, k, k == 0 ? at.faces.front() : at.faces.back()});
       }
-      // Sampled only where needed: a lone spoke has no order and glues nothing.
+      // Sampled only where needed: one or two spokes are in their one cyclic order
+      // (most gaps have two), and a lone spoke glues nothing.
       std::optional<AlgebraicAngle> sample;
       const auto sampleHere = [&]() -> const AlgebraicAngle& {
         if (!sample) sample = sampleInGap(order.angles(), gap, algebra);
         return *sample;
       };
-      if (spokes.size() > 1) sortCounterclockwise(spokes, patches, sampleHere());
+      if (spokes.size() > 2) sortCounterclockwise(spokes, patches, sampleHere());
       // The sector counterclockwise after a spoke: its positive side (right of end
       // 0 -> end 1, PatchSegment) faces it when the spiral is the spoke's end 1.
       gluing::glueAround(
