@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <new>
 
 namespace {
@@ -25,14 +26,24 @@ std::size_t physicalMemory() {
                                    : static_cast<std::size_t>(-1);
 }
 
+/// mimalloc's segments: 32 MiB, aligned to their size.
+constexpr std::uintptr_t kSegmentSize = std::uintptr_t{32} << 20;
+
 /// A build touches hundreds of MB once, and with the system's 4 KiB pages every
 /// first touch is a page fault (58,000 in one build of house_mixed_32). mimalloc is
 /// given arenas of 1 GiB, together a quarter of the physical memory, reserved
 /// without being backed, which it fills before it asks the system for more; they
 /// are advised for transparent huge pages (2 MiB each). (mimalloc places a
-/// reservation of at most 1 GiB where it finds its blocks' owners again.) Where the
-/// system refuses a reservation or the advice, mimalloc allocates as before.
+/// reservation of at most 1 GiB where it finds its blocks' owners again.) The
+/// segment it took before, at the process's start, serves first and holds most of a
+/// small build (7,800 page faults on tetra_floorplan_76 without advice): it is
+/// advised too, where its 2 MiB pieces are still untouched. Where the system refuses
+/// a reservation or the advice, mimalloc allocates as before.
 bool manageHugePageArenas() {
+  void* early = mi_malloc(1);
+  madvise(reinterpret_cast<void*>(reinterpret_cast<std::uintptr_t>(early) & ~(kSegmentSize - 1)), kSegmentSize,
+          MADV_HUGEPAGE);
+  mi_free(early);
   constexpr std::size_t kArenaSize = std::size_t{1} << 30;
   const std::size_t count = std::min<std::size_t>(physicalMemory() / 4 / kArenaSize, 16);
   for (std::size_t k = 0; k < count; ++k) {
