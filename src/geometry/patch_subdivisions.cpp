@@ -165,19 +165,25 @@ AngleFunction endValueDifference(const PatchGeometry& patch, const PatchGeometry
 using PointKey = std::array<std::uint32_t, 7>;
 constexpr std::uint32_t kUnnamed = 0, kSpiralPoint = 1, kHorizontalEdge = 2, kVertexPoint = 3;
 
+/// How an event's curve meets its angle: at the start or the end of one of the
+/// curve's arcs, or inside one (at a vertex).
+enum class ArcEnd : std::uint8_t { Start, End, Inside };
+
 /// An event of one patch: the angle, the curve of the patch it involves (none for an
 /// end of the patch's range or an overlap), whether it is an overlap (a horizontal
-/// cut), the ends of the patch's segment the event's point or cut reaches, and the
-/// point's name when known.
+/// cut), the ends of the patch's segment the event's point or cut reaches, the
+/// point's name when known, and whether it starts or ends an arc of the curve.
 struct PatchEvent {
   AlgebraicAngle angle;
   std::uint32_t curve = kNoCurve;
   bool cut = false;
   std::array<bool, 2> onSide{};
   PointKey point{};
+  ArcEnd arcEnd = ArcEnd::Inside;
 };
 
-/// The events at one angle: their curves, each with the segment ends it reaches.
+/// The events at one angle: their curves, each with the segment ends it reaches,
+/// and the curves whose arcs start or end there.
 struct EventGroup {
   AlgebraicAngle angle;
   std::vector<std::uint32_t> curves;
@@ -185,6 +191,7 @@ struct EventGroup {
   std::vector<PointKey> curvePoint;
   bool cut = false;
   std::array<bool, 2> onSide{};
+  std::vector<std::uint32_t> starting, ending;
 };
 
 class UnionFind {
@@ -276,7 +283,8 @@ class PatchSweep {
       for (int end = 0; end < 2; ++end) {
         const AlgebraicAngle& angle = end == 0 ? c.angles.arcs[i].from : c.angles.arcs[i].to;
         const CurveEnd& cause = c.ends[i][end];
-        events_.push_back({angle, curve, false, cause.endOnOtherLine[side], endPoint(curve, cause, angle)});
+        events_.push_back({angle, curve, false, cause.endOnOtherLine[side], endPoint(curve, cause, angle),
+                           end == 0 ? ArcEnd::Start : ArcEnd::End});
       }
     }
   }
@@ -351,13 +359,15 @@ class PatchSweep {
     for (std::size_t index : order) {
       const PatchEvent& event = events[index];
       if (groups.empty() || algebra_.compare(groups.back().angle, event.angle) != 0) {
-        groups.push_back({event.angle, {}, {}, {}, false, {}});
+        groups.push_back({event.angle, {}, {}, {}, false, {}, {}, {}});
       }
       EventGroup& group = groups.back();
       if (event.curve != kNoCurve) {
         group.curves.push_back(event.curve);
         group.curveOnSide.push_back(event.onSide);
         group.curvePoint.push_back(event.point);
+        if (event.arcEnd == ArcEnd::Start) group.starting.push_back(event.curve);
+        if (event.arcEnd == ArcEnd::End) group.ending.push_back(event.curve);
       }
       group.cut = group.cut || event.cut;
       group.onSide[0] = group.onSide[0] || event.onSide[0];
@@ -375,7 +385,8 @@ class PatchSweep {
     const std::size_t first = subdivision_.slabs.size();
     subdivision_.slabs.reserve(first + groups.size() - 1);
     for (std::size_t k = 0; k + 1 < groups.size(); ++k) {
-      addSlab(groups[k].angle, groups[k + 1].angle, algebra_.rationalBetween(groups[k].angle, groups[k + 1].angle));
+      const AlgebraicAngle sample = algebra_.rationalBetween(groups[k].angle, groups[k + 1].angle);
+      addSlab(groups[k].angle, groups[k + 1].angle, sample, k == 0 ? curvesAt(sample) : curvesAfter(groups[k]));
     }
     for (std::size_t k = 1; k + 1 < groups.size(); ++k) join(first + k - 1, first + k, groups[k]);
   }
@@ -383,7 +394,7 @@ class PatchSweep {
   void sweepCircle() {
     if (events_.empty()) {
       const AlgebraicAngle anywhere = AlgebraicAngle::rational(0, 0.0);
-      addSlab(anywhere, anywhere, anywhere);
+      addSlab(anywhere, anywhere, anywhere, curvesAt(anywhere));
       return;
     }
     AlgebraicAngle origin = events_.front().angle;
@@ -398,16 +409,41 @@ class PatchSweep {
       const AlgebraicAngle& to = groups[(k + 1) % count].angle;
       // A single event: the slab runs once around, from it back to it; the rational
       // angle opposite it (t = 0 of the other chart) lies inside.
-      addSlab(from, to, count == 1 ? AlgebraicAngle::rational(1 - from.chart(), 0.0) : algebra_.rationalBetween(from, to));
+      const AlgebraicAngle sample =
+          count == 1 ? AlgebraicAngle::rational(1 - from.chart(), 0.0) : algebra_.rationalBetween(from, to);
+      addSlab(from, to, sample, k == 0 ? curvesAt(sample) : curvesAfter(groups[k]));
     }
     for (std::size_t k = 0; k < count; ++k) join(k, (k + 1) % count, groups[(k + 1) % count]);
   }
 
-  void addSlab(const AlgebraicAngle& from, const AlgebraicAngle& to, const AlgebraicAngle& sample) {
-    PatchSlab slab{from, to, sample, {}, {}};
+  /// The patch's curves at an angle (the first slab of a sweep).
+  std::vector<std::uint32_t> curvesAt(const AlgebraicAngle& angle) {
+    std::vector<std::uint32_t> curves;
     for (std::uint32_t curve : curvesOfPatch_) {
-      if (algebra_.contains(curves_[curve].angles, sample)) slab.curves.push_back(curve);
+      if (algebra_.contains(curves_[curve].angles, angle)) curves.push_back(curve);
     }
+    return curves;
+  }
+
+  /// The curves of the slab after the last one, across the events of `group`: a
+  /// curve's presence changes only where one of its arcs starts or ends, so they are
+  /// the last slab's less those ending there, with those starting there. The last
+  /// slab's order along the segment is kept: a good start for sorting the next.
+  std::vector<std::uint32_t> curvesAfter(const EventGroup& group) const {
+    const std::vector<std::uint32_t>& last = subdivision_.slabs.back().curves;
+    std::vector<std::uint32_t> curves;
+    curves.reserve(last.size() + group.starting.size());
+    for (std::uint32_t curve : last) {
+      if (std::find(group.ending.begin(), group.ending.end(), curve) == group.ending.end()) curves.push_back(curve);
+    }
+    curves.insert(curves.end(), group.starting.begin(), group.starting.end());
+    return curves;
+  }
+
+  /// A slab from `from` to `to` crossed by `curves` (in any order).
+  void addSlab(const AlgebraicAngle& from, const AlgebraicAngle& to, const AlgebraicAngle& sample,
+               std::vector<std::uint32_t> curves) {
+    PatchSlab slab{from, to, sample, std::move(curves), {}};
     // Crossings apart in double intervals are ordered by them, the others exactly.
     std::vector<Crossing> crossings = crossingsAt(sample, slab.curves);
     std::sort(crossings.begin(), crossings.end(), [&](const Crossing& a, const Crossing& b) {
