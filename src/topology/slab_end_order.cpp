@@ -15,8 +15,11 @@ struct TaggedEnd {
   bool to;
 };
 
-bool eventless(const PatchSlab& slab, AngleAlgebra& algebra) {
-  return algebra.compare(slab.from, slab.to) == 0 && algebra.compare(slab.from, slab.sample) == 0;
+/// The one slab of a patch whose range is a whole circle without events (from, to and
+/// sample at one angle); a patch with several slabs has none.
+bool eventless(const std::vector<PatchSlab>& slabs, AngleAlgebra& algebra) {
+  return slabs.size() == 1 && algebra.compare(slabs[0].from, slabs[0].to) == 0 &&
+         algebra.compare(slabs[0].from, slabs[0].sample) == 0;
 }
 
 /// Merges the sorted runs of `ends` that start at `starts` (increasing, the first
@@ -51,13 +54,12 @@ SlabEndOrder::SlabEndOrder(const std::vector<std::uint32_t>& patches, const std:
   for (std::size_t i = 0; i < patches.size(); ++i) {
     const std::vector<PatchSlab>& slabs = subdivisions[patches[i]].slabs;
     ends_.emplace_back(slabs.size());
+    if (slabs.empty() || eventless(slabs, algebra)) continue;
     const std::size_t start = tagged.size();
     for (std::size_t s = 0; s < slabs.size(); ++s) {
-      if (eventless(slabs[s], algebra)) continue;
       tagged.push_back({&slabs[s].from, i, s, false});
       tagged.push_back({&slabs[s].to, i, s, true});
     }
-    if (start == tagged.size()) continue;
     const auto run = tagged.begin() + static_cast<std::ptrdiff_t>(start);
     std::rotate(run, std::is_sorted_until(run, tagged.end(), before), tagged.end());
     if (!std::is_sorted(run, tagged.end(), before)) std::sort(run, tagged.end(), before);

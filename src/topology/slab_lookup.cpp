@@ -27,7 +27,8 @@ const PatchSlab* slabMeeting(const PatchSubdivision& subdivision, const Algebrai
   const std::size_t count = subdivision.slabs.size();
   for (std::size_t step = 0; step < count; ++step) {
     const PatchSlab& slab = subdivision.slabs[ending ? count - 1 - step : step];
-    if (algebra.compare(slab.from, slab.sample) == 0) continue;  // a whole circle without events
+    // A whole circle without events (a patch's only slab then).
+    if (count == 1 && algebra.compare(slab.from, slab.sample) == 0) continue;
     if (algebra.compare(ending ? slab.to : slab.from, angle) == 0) return &slab;
   }
   return nullptr;
