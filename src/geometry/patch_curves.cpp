@@ -260,7 +260,9 @@ PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t
   };
   // A property of the sides' signs can change only where a range ends or a side's
   // SF function vanishes inside both ranges (elsewhere it is false on both sides).
+  // At most two roots per side function (a trigonometric line's).
   std::vector<AlgebraicAngle> breakpoints;
+  breakpoints.reserve(2 * (a.patch.range.arcs.size() + b.patch.range.arcs.size()) + 4);
   appendArcEnds(a.patch.range, breakpoints);
   appendArcEnds(b.patch.range, breakpoints);
   // Side k: the line of `line` at end `end` of `owner`, its roots where `keep` holds
@@ -292,6 +294,7 @@ PatchCurve patchCurve(std::uint32_t first, const PatchGeometry& a, std::uint32_t
   // fills).
   const auto inAAcross = [&](const AlgebraicAngle& angle) { return algebra.contains(aAcross, angle); };
   std::vector<AlgebraicAngle> acrossBreakpoints;
+  acrossBreakpoints.reserve(2 * aAcross.arcs.size() + 4);
   appendArcEnds(aAcross, acrossBreakpoints);
   if (!addSide(2, a, b, 0, inAAcross, acrossBreakpoints) || !addSide(3, a, b, 1, inAAcross, acrossBreakpoints)) {
     return curve;

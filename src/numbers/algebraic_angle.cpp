@@ -81,6 +81,7 @@ std::optional<std::vector<Interval>> quadraticRootsInDoubles(const Polynomial<In
   if (*leading == Sign::Negative) std::swap(first, second);
   if (!(first.upper() < second.lower())) return std::nullopt;
   std::vector<Interval> roots;
+  roots.reserve(2);
   for (const Interval& t : {first, second}) {
     if (t.upper() < -1 || t.lower() > 1) continue;
     if (!(t.lower() > -1 && t.upper() < 1)) return std::nullopt;
@@ -958,6 +959,7 @@ std::array<AngleSet, 2> AngleAlgebra::signPatternSets(const std::vector<std::sha
     if (function->isIdenticallyZero()) return {};
   }
   std::vector<AlgebraicAngle> breakpoints;
+  breakpoints.reserve(2 * functions.size());  // two roots each for trigonometric lines
   for (const auto& function : functions) {
     for (const AlgebraicAngle& root : this->roots(function, kind)) breakpoints.push_back(root);
   }

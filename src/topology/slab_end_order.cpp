@@ -49,7 +49,11 @@ SlabEndOrder::SlabEndOrder(const std::vector<std::uint32_t>& patches, const std:
   // ends in slab order are sorted but for one descent where they pass the cut, and
   // the part after it moved to the front makes one sorted run. The runs are merged
   // (a run still out of order, which no sweep makes, is sorted first).
+  std::size_t slabCount = 0;
+  for (std::uint32_t patch : patches) slabCount += subdivisions[patch].slabs.size();
   std::vector<TaggedEnd> tagged;
+  tagged.reserve(2 * slabCount);
+  ends_.reserve(patches.size());
   std::vector<std::size_t> runStarts;
   for (std::size_t i = 0; i < patches.size(); ++i) {
     const std::vector<PatchSlab>& slabs = subdivisions[patches[i]].slabs;
