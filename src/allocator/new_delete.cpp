@@ -11,6 +11,7 @@
 // standard says. mimalloc is also given address space advised for huge pages.
 #include <mimalloc.h>
 #include <sys/mman.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -20,43 +21,65 @@
 
 namespace {
 
+/// The physical memory's size, or the largest size_t when it is unknown.
 std::size_t physicalMemory() {
   const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
   return pages > 0 && pageSize > 0 ? static_cast<std::size_t>(pages) * static_cast<std::size_t>(pageSize)
                                    : static_cast<std::size_t>(-1);
 }
 
-/// mimalloc's segments: 32 MiB, aligned to their size.
+#if defined(MADV_HUGEPAGE) && MI_MALLOC_VERSION >= 209 && MI_MALLOC_VERSION < 300
+
+/// mimalloc 2's segments: 32 MiB, aligned to their size.
 constexpr std::uintptr_t kSegmentSize = std::uintptr_t{32} << 20;
 
+/// mimalloc places a reservation of at most 1 GiB at addresses of its own choosing,
+/// where it finds a block's segment again (mi_is_in_heap_region); a larger one lands
+/// anywhere.
+constexpr std::size_t kArenaSize = std::size_t{1} << 30;
+constexpr std::size_t kMostArenas = 16;
+
+/// Whether the process's address space is unlimited (no RLIMIT_AS): reserving some
+/// of it then takes nothing from other requests.
+bool unlimitedAddressSpace() {
+  rlimit limit{};
+  return getrlimit(RLIMIT_AS, &limit) == 0 && limit.rlim_cur == RLIM_INFINITY;
+}
+
 /// A build touches hundreds of MB once, and with the system's 4 KiB pages every
-/// first touch is a page fault (58,000 in one build of house_mixed_32). mimalloc is
-/// given arenas of 1 GiB, together a quarter of the physical memory, reserved
-/// without being backed, which it fills before it asks the system for more; they
-/// are advised for transparent huge pages (2 MiB each). (mimalloc places a
-/// reservation of at most 1 GiB where it finds its blocks' owners again.) The
-/// segment it took before, at the process's start, serves first and holds most of a
-/// small build (7,800 page faults on tetra_floorplan_76 without advice): it is
-/// advised too, where its 2 MiB pieces are still untouched. Where the system refuses
-/// a reservation or the advice, mimalloc allocates as before.
-bool manageHugePageArenas() {
+/// first touch is a page fault (58,000 in one build of house_mixed_32). The segment
+/// mimalloc took when the process started, which holds most of a small build, is
+/// advised for transparent huge pages (2 MiB each) where its 2 MiB pieces are still
+/// untouched; and mimalloc is given arenas of 1 GiB, a quarter of the physical memory
+/// in all (at most 16), reserved without being committed (it commits a segment when
+/// it takes one) and advised alike, which it fills before it asks the system for
+/// more. Where the system refuses a reservation or the advice, or the address space
+/// is limited, or the memory size is unknown, mimalloc allocates as before.
+void useHugePages() {
   void* early = mi_malloc(1);
   madvise(reinterpret_cast<void*>(reinterpret_cast<std::uintptr_t>(early) & ~(kSegmentSize - 1)), kSegmentSize,
           MADV_HUGEPAGE);
   mi_free(early);
-  constexpr std::size_t kArenaSize = std::size_t{1} << 30;
-  const std::size_t count = std::min<std::size_t>(physicalMemory() / 4 / kArenaSize, 16);
+  const std::size_t memory = physicalMemory();
+  if (memory == static_cast<std::size_t>(-1) || !unlimitedAddressSpace()) return;
+  const std::size_t count = std::min(memory / 4 / kArenaSize, kMostArenas);
   for (std::size_t k = 0; k < count; ++k) {
     mi_arena_id_t arena = 0;
-    if (mi_reserve_os_memory_ex(kArenaSize, true, false, false, &arena) != 0) return false;
+    if (mi_reserve_os_memory_ex(kArenaSize, /*commit=*/false, /*allow_large=*/false, /*exclusive=*/false, &arena) != 0) {
+      return;
+    }
     std::size_t size = 0;
     void* start = mi_arena_area(arena, &size);
-    if (start == nullptr || madvise(start, size, MADV_HUGEPAGE) != 0) return false;
+    if (start == nullptr || madvise(start, size, MADV_HUGEPAGE) != 0) return;
   }
-  return count > 0;
 }
 
-[[maybe_unused]] const bool hugePageArenasManaged = manageHugePageArenas();
+/// Sets the huge pages up when the program starts.
+const struct HugePageSetup {
+  HugePageSetup() { useHugePages(); }
+} hugePageSetup;
+
+#endif
 
 bool beyondMemory(std::size_t size) {
   static const std::size_t limit = physicalMemory();

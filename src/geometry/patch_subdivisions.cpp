@@ -166,7 +166,7 @@ using PointKey = std::array<std::uint32_t, 7>;
 constexpr std::uint32_t kUnnamed = 0, kSpiralPoint = 1, kHorizontalEdge = 2, kVertexPoint = 3;
 
 /// How an event's curve meets its angle: at the start or the end of one of the
-/// curve's arcs, or inside one (at a vertex).
+/// curve's arcs, or inside one (at a vertex); Inside also for events without a curve.
 enum class ArcEnd : std::uint8_t { Start, End, Inside };
 
 /// An event of one patch: the angle, the curve of the patch it involves (none for an
@@ -426,9 +426,11 @@ class PatchSweep {
   }
 
   /// The curves of the slab after the last one, across the events of `group`: a
-  /// curve's presence changes only where one of its arcs starts or ends, so they are
-  /// the last slab's less those ending there, with those starting there. The last
-  /// slab's order along the segment is kept: a good start for sorting the next.
+  /// curve's presence changes only where one of its arcs starts or ends (a curve's
+  /// arcs have length and are apart, as closures of open sets, AngleAlgebra), so they
+  /// are the last slab's less those ending there, with those starting there. The
+  /// last slab's order along the segment is kept (nearly sorted for the next slab,
+  /// whose few crossings std::sort then orders by insertion).
   std::vector<std::uint32_t> curvesAfter(const EventGroup& group) const {
     const std::vector<std::uint32_t>& last = subdivision_.slabs.back().curves;
     std::vector<std::uint32_t> curves;
