@@ -65,9 +65,8 @@ void useHugePages() {
   const std::size_t count = std::min(memory / 4 / kArenaSize, kMostArenas);
   for (std::size_t k = 0; k < count; ++k) {
     mi_arena_id_t arena = 0;
-    if (mi_reserve_os_memory_ex(kArenaSize, /*commit=*/false, /*allow_large=*/false, /*exclusive=*/false, &arena) != 0) {
-      return;
-    }
+    const bool commit = false, allowLarge = false, exclusive = false;
+    if (mi_reserve_os_memory_ex(kArenaSize, commit, allowLarge, exclusive, &arena) != 0) return;
     std::size_t size = 0;
     void* start = mi_arena_area(arena, &size);
     if (start == nullptr || madvise(start, size, MADV_HUGEPAGE) != 0) return;

@@ -19,13 +19,10 @@ class GlueList {
  public:
   void add(SubFaceId a, SubFaceId b, GluedEdge edge, const AlgebraicAngle& at) {
     if (codeOf(b) < codeOf(a)) std::swap(a, b);
-    if (seen_.insert({codeOf(a), codeOf(b)}).second) gluing_.glues.push_back({a, b, edge, at});
+    if (seen_.insert(pairCode(a, b)).second) gluing_.glues.push_back({a, b, edge, at});
   }
   /// Whether the pair was glued already (then its angle need not be found).
-  bool glued(SubFaceId a, SubFaceId b) const {
-    const std::uint64_t first = codeOf(a), second = codeOf(b);
-    return seen_.count(first < second ? std::pair(first, second) : std::pair(second, first)) != 0;
-  }
+  bool glued(SubFaceId a, SubFaceId b) const { return seen_.count(pairCode(a, b)) != 0; }
   void addUnmatched(SubFaceId face) {
     if (unmatched_.insert(codeOf(face)).second) gluing_.unmatched.push_back(face);
   }
@@ -34,6 +31,11 @@ class GlueList {
  private:
   /// A sub-face as one number, ordered by patch, then face.
   static std::uint64_t codeOf(SubFaceId face) { return (std::uint64_t(face.patch) << 32) | face.face; }
+  /// A pair of sub-faces as two numbers, the smaller first (either order of a, b).
+  static std::pair<std::uint64_t, std::uint64_t> pairCode(SubFaceId a, SubFaceId b) {
+    const std::uint64_t first = codeOf(a), second = codeOf(b);
+    return first < second ? std::pair(first, second) : std::pair(second, first);
+  }
   struct PairHash {
     std::size_t operator()(const std::pair<std::uint64_t, std::uint64_t>& pair) const {
       return std::hash<std::uint64_t>()(pair.first * 0x9e3779b97f4a7c15ULL ^ pair.second);
@@ -69,6 +71,11 @@ void glueAround(const std::vector<Ray>& counterclockwise, const FacesLeft& faces
 }
 
 bool holds(const PatchSlab& slab, const AlgebraicAngle& angle, AngleAlgebra& algebra);
+
+/// Whether the patch's range is a whole circle without events: then its only slab
+/// has its sample at its ends (a patch with several slabs, or with one from an event
+/// around to it, is none).
+bool wholeCircleWithoutEvents(const PatchSubdivision& subdivision, AngleAlgebra& algebra);
 
 /// The index of the slab holding `angle`, searched from `start` on (wrapping).
 std::optional<std::size_t> slabIndexAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle,

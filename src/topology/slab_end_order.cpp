@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "gluing_parts.h"
+
 namespace freespace::gluing {
 
 namespace {
@@ -14,13 +16,6 @@ struct TaggedEnd {
   std::size_t slab;
   bool to;
 };
-
-/// The one slab of a patch whose range is a whole circle without events (from, to and
-/// sample at one angle); a patch with several slabs has none.
-bool eventless(const std::vector<PatchSlab>& slabs, AngleAlgebra& algebra) {
-  return slabs.size() == 1 && algebra.compare(slabs[0].from, slabs[0].to) == 0 &&
-         algebra.compare(slabs[0].from, slabs[0].sample) == 0;
-}
 
 /// Merges the sorted runs of `ends` that start at `starts` (increasing, the first
 /// at 0) pairwise, round by round: log(runs) passes over the ends.
@@ -58,7 +53,7 @@ SlabEndOrder::SlabEndOrder(const std::vector<std::uint32_t>& patches, const std:
   for (std::size_t i = 0; i < patches.size(); ++i) {
     const std::vector<PatchSlab>& slabs = subdivisions[patches[i]].slabs;
     ends_.emplace_back(slabs.size());
-    if (slabs.empty() || eventless(slabs, algebra)) continue;
+    if (slabs.empty() || wholeCircleWithoutEvents(subdivisions[patches[i]], algebra)) continue;
     const std::size_t start = tagged.size();
     for (std::size_t s = 0; s < slabs.size(); ++s) {
       tagged.push_back({&slabs[s].from, i, s, false});

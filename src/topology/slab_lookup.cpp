@@ -20,15 +20,18 @@ std::optional<std::size_t> slabIndexAt(const PatchSubdivision& subdivision, cons
   return std::nullopt;
 }
 
+bool wholeCircleWithoutEvents(const PatchSubdivision& subdivision, AngleAlgebra& algebra) {
+  return subdivision.slabs.size() == 1 && algebra.compare(subdivision.slabs[0].from, subdivision.slabs[0].sample) == 0;
+}
+
 const PatchSlab* slabMeeting(const PatchSubdivision& subdivision, const AlgebraicAngle& angle, bool ending,
                              AngleAlgebra& algebra) {
+  if (wholeCircleWithoutEvents(subdivision, algebra)) return nullptr;
   // Searched from the end the slab is most likely at: horizontal edges are mostly
   // where a patch's range ends (its last slab) or starts (its first).
   const std::size_t count = subdivision.slabs.size();
   for (std::size_t step = 0; step < count; ++step) {
     const PatchSlab& slab = subdivision.slabs[ending ? count - 1 - step : step];
-    // A whole circle without events (a patch's only slab then).
-    if (count == 1 && algebra.compare(slab.from, slab.sample) == 0) continue;
     if (algebra.compare(ending ? slab.to : slab.from, angle) == 0) return &slab;
   }
   return nullptr;
