@@ -305,10 +305,15 @@ const RationalPolynomial& AngleFunction::exact(int chart) const {
 }
 
 bool AngleFunction::isIdenticallyZero() const {
-  for (const Interval& coefficient : approximate_[0].coefficients()) {
-    const std::optional<Sign> sign = certainSign(coefficient);
-    if (sign && *sign != Sign::Zero) return false;
-  }
+  // A coefficient certainly nonzero in double intervals, else in the tight ones
+  // (a nonzero function can be as small as the perturbation squared), else exactly.
+  const auto certainlyNonzero = [](const Polynomial<Interval>& polynomial) {
+    return std::any_of(polynomial.coefficients().begin(), polynomial.coefficients().end(), [](const Interval& c) {
+      const std::optional<Sign> sign = certainSign(c);
+      return sign && *sign != Sign::Zero;
+    });
+  };
+  if (certainlyNonzero(approximate_[0]) || certainlyNonzero(tight(0))) return false;
   return isZero(exact(0));
 }
 
