@@ -376,6 +376,31 @@ TEST(AlgebraicAngle, RootsOneUlpApartAreToldApartWithoutRationals) {
   EXPECT_EQ(statistics.counts(PredicateKind::RootOrder).decided[static_cast<int>(PrecisionLevel::Exact)], 0u);
 }
 
+TEST(AlgebraicAngle, TinyFunctionsAreNotIdenticallyZeroWithoutRationals) {
+  // (1 + c) - 1 for c = 1e-20: every double interval coefficient holds zero (the sum
+  // rounds to 1), the double-doubles hold c exactly; no exact coefficients are needed
+  // (they throw). The same with c = 0 vanishes identically, which only exact
+  // coefficients can prove; the oracle is the exact polynomial.
+  const auto constant = [](double c, bool exactAllowed) {
+    return std::make_shared<AngleFunction>([c, exactAllowed](auto type, int) {
+      using T = typename decltype(type)::type;
+      if constexpr (std::is_same_v<T, Rational>) {
+        if (!exactAllowed) throw std::logic_error("exact coefficients asked for");
+      }
+      return Polynomial<T>({(T(1) + T(c)) - T(1), (T(2) + T(c)) - T(2)});
+    });
+  };
+  const auto tiny = constant(1e-20, false);
+  for (const Interval& coefficient : tiny->approximate(0).coefficients()) {
+    ASSERT_TRUE(coefficient.lower() <= 0 && coefficient.upper() >= 0);
+  }
+  EXPECT_FALSE(tiny->isIdenticallyZero());
+  EXPECT_FALSE(isZero(constant(1e-20, true)->exact(0)));
+  const auto zero = constant(0, true);
+  EXPECT_TRUE(isZero(zero->exact(0)));
+  EXPECT_TRUE(zero->isIdenticallyZero());
+}
+
 RC_GTEST_PROP(AlgebraicAngle, PositiveSetMatchesSampledTrigonometry, ()) {
   std::vector<Form> forms;
   const int count = *rc::gen::inRange(1, 4);
