@@ -89,7 +89,8 @@ class AngleFunction {
   const RationalPolynomial& exact(int chart) const;
   const RationalPolynomial& squareFree(int chart) const;
   /// True when the function vanishes at every angle (decided from the double
-  /// interval coefficients when one is certainly not zero, exactly otherwise).
+  /// interval or else the tight coefficients when one is certainly not zero,
+  /// exactly otherwise).
   bool isIdenticallyZero() const;
   const std::optional<RootKey>& key() const { return key_; }
 
