@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <new>
 
 namespace {
@@ -73,9 +74,24 @@ void useHugePages() {
   }
 }
 
+/// mimalloc gives the pages of a freed span back to the system (decommits them) a
+/// few milliseconds after the span is freed. A build frees and allocates again all
+/// the time, and each give-back splits a huge page, whose 4 KiB pieces then fault and
+/// are zeroed again on the next touch: house_mixed_160 committed 1.6 GiB for a peak
+/// of 0.95 GiB, with 22,000 page faults (1,400 without the give-back) and about 13% of
+/// its time in the kernel. Freed memory is therefore kept for the process's later
+/// allocations, unless the user's environment says otherwise
+/// (MIMALLOC_ALLOW_DECOMMIT). It is set before the first segment of ours is taken.
+void keepFreedMemory() {
+  if (std::getenv("MIMALLOC_ALLOW_DECOMMIT") == nullptr) mi_option_disable(mi_option_allow_decommit);
+}
+
 /// Sets the huge pages up when the program starts.
 const struct HugePageSetup {
-  HugePageSetup() { useHugePages(); }
+  HugePageSetup() {
+    keepFreedMemory();
+    useHugePages();
+  }
 } hugePageSetup;
 
 #endif
