@@ -4,12 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <cstdlib>
 #include <memory>
 #include <new>
 #include <vector>
 
 #ifdef FREESPACE_WITH_MIMALLOC
 #include <mimalloc.h>
+#include <sys/mman.h>
 #endif
 
 TEST(ProgramAllocator, ARequestBeyondThePhysicalMemoryThrowsBadAlloc) {
@@ -37,3 +39,11 @@ TEST(ProgramAllocator, OrdinaryRequestsAreMet) {
   }
   EXPECT_EQ(blocks.size(), 13u);
 }
+
+#if defined(FREESPACE_WITH_MIMALLOC) && defined(MADV_HUGEPAGE) && MI_MALLOC_VERSION >= 209 && MI_MALLOC_VERSION < 300
+TEST(ProgramAllocator, FreedMemoryIsKeptUnlessTheEnvironmentSaysOtherwise) {
+  // Giving freed pages back to the system splits huge pages (src/allocator).
+  if (std::getenv("MIMALLOC_ALLOW_DECOMMIT") != nullptr) GTEST_SKIP() << "MIMALLOC_ALLOW_DECOMMIT is set";
+  EXPECT_FALSE(mi_option_is_enabled(mi_option_allow_decommit));
+}
+#endif
