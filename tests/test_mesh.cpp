@@ -1,5 +1,6 @@
-// Mesh::fromSoup: welding, every validation rule with its message, components,
-// orientation repair and translation, on soups built in code.
+// Mesh::fromSoup: welding, every validation rule with its message (a surface that
+// meets itself among them), components, orientation repair and translation, on soups
+// built in code.
 
 #include "freespace/geometry/mesh.h"
 
@@ -13,6 +14,7 @@
 #include <rapidcheck/gtest.h>
 
 #include "freespace/input_error.h"
+#include "geometry/surface_self_intersection.h"
 
 namespace freespace {
 namespace {
@@ -246,6 +248,65 @@ TEST(Mesh, RejectsAComponentThatEnclosesNoVolume) {
   flat.triangles = {{0, 1, 2}, {0, 3, 1}, {1, 3, 2}, {2, 3, 0}};
   append(soup, flat);
   EXPECT_EQ(problemOf(soup), "component 1 encloses no volume");
+}
+
+TEST(Mesh, RejectsAComponentWhoseSurfaceCrossesItself) {
+  // A box with its top corner (2, 2, 1) pushed down through its bottom: closed and
+  // consistently oriented, but the triangles at that corner cross the bottom.
+  TriangleSoup soup = boxSoup(Point3(5, 5, 5), Point3(6, 6, 6));
+  TriangleSoup folded = boxSoup(Point3(0, 0, 0), Point3(2, 2, 1));
+  folded.vertices[6] = Point3(1.3, 1.1, -0.6);
+  append(soup, folded);
+  EXPECT_TRUE(contains(problemOf(soup), "component 1 intersects itself: triangles 12 (vertices 8, 11, 10) and"));
+  EXPECT_EQ(problemOf(folded).rfind("component 0 intersects itself", 0), 0u) << problemOf(folded);
+}
+
+TEST(Mesh, RejectsAComponentWhoseSurfaceTouchesItself) {
+  // The top corner moved onto the bottom face, inside the bottom triangle (0, 2, 1),
+  // which the top triangle (4, 5, 6) then touches at that corner.
+  TriangleSoup touching = boxSoup(Point3(0, 0, 0), Point3(2, 2, 1));
+  touching.vertices[6] = Point3(1.5, 0.5, 0);
+  EXPECT_EQ(problemOf(touching).rfind("component 0 intersects itself: triangles 1 (vertices 0, 2, 1) and 2 (vertices 4, 5, 6)", 0), 0u)
+      << problemOf(touching);
+}
+
+// The pairs of triangles of one component that firstSelfIntersection reports, by the
+// features they share: (0, 1, 2) in the plane z = 0 against a second triangle.
+std::optional<std::pair<std::uint32_t, std::uint32_t>> pairMeeting(const std::vector<Point3>& others,
+                                                                  const TriangleIndices& second) {
+  std::vector<Point3> vertices = {Point3(0, 0, 0), Point3(4, 0, 0), Point3(0, 4, 0)};
+  vertices.insert(vertices.end(), others.begin(), others.end());
+  return detail::firstSelfIntersection(vertices, {{0, 1, 2}, second}, {0, 0});
+}
+
+TEST(SurfaceSelfIntersection, TrianglesSharingAVertexMeetOnlyWhenAnotherPointIsInBoth) {
+  // Through the first triangle's plane inside it, and above it only.
+  EXPECT_TRUE(pairMeeting({Point3(1, 1, -1), Point3(1, 2, 1)}, {0, 3, 4}));
+  EXPECT_FALSE(pairMeeting({Point3(1, 1, 1), Point3(1, 2, 1)}, {0, 3, 4}));
+  // In the plane: overlapping the first, and outside it beyond the shared vertex.
+  EXPECT_TRUE(pairMeeting({Point3(1, 1, 0), Point3(2, 1, 0)}, {0, 3, 4}));
+  EXPECT_FALSE(pairMeeting({Point3(-1, -1, 0), Point3(-2, -1, 0)}, {0, 3, 4}));
+  // Along the first's edge from the shared vertex: a common segment.
+  EXPECT_TRUE(pairMeeting({Point3(2, 0, 0), Point3(2, -1, 1)}, {0, 3, 4}));
+}
+
+TEST(SurfaceSelfIntersection, TrianglesSharingAnEdgeMeetOnlyWhenFoldedFlat) {
+  EXPECT_TRUE(pairMeeting({Point3(1, 1, 0)}, {1, 0, 3}));     // in the plane, on the first's side
+  EXPECT_FALSE(pairMeeting({Point3(1, -1, 0)}, {1, 0, 3}));   // in the plane, across the edge
+  EXPECT_FALSE(pairMeeting({Point3(1, 1, 1e-300)}, {1, 0, 3}));  // a hair above the plane
+}
+
+TEST(SurfaceSelfIntersection, TrianglesOfDifferentComponentsMayMeet) {
+  const std::vector<Point3> vertices = {Point3(0, 0, 0), Point3(4, 0, 0), Point3(0, 4, 0),
+                                        Point3(1, 1, -1), Point3(1, 2, 1), Point3(2, 1, 1)};
+  EXPECT_TRUE(detail::firstSelfIntersection(vertices, {{0, 1, 2}, {3, 4, 5}}, {0, 0}));
+  EXPECT_FALSE(detail::firstSelfIntersection(vertices, {{0, 1, 2}, {3, 4, 5}}, {0, 1}));
+}
+
+TEST(Mesh, AcceptsComponentsThatOverlapEachOther) {
+  TriangleSoup soup = boxSoup(Point3(0, 0, 0), Point3(2, 2, 2));
+  append(soup, boxSoup(Point3(1, 1, 1), Point3(3, 3, 3)));
+  EXPECT_EQ(problemOf(soup), "");
 }
 
 TEST(Mesh, SeparatesComponentsInOrderOfTheirFirstTriangle) {

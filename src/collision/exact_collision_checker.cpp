@@ -6,7 +6,7 @@
 #include <boost/geometry.hpp>
 #include <boost/geometry/index/rtree.hpp>
 
-#include "closed_triangle_tests.h"
+#include "../geometry/closed_triangle_tests.h"
 #include "placed_pair.h"
 
 namespace freespace {

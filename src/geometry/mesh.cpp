@@ -11,6 +11,7 @@
 #include <boost/multiprecision/gmp.hpp>
 
 #include "freespace/input_error.h"
+#include "surface_self_intersection.h"
 
 namespace freespace {
 namespace {
@@ -432,6 +433,21 @@ void requireVolume(const ComponentSummary& component, Index index, const std::st
   }
 }
 
+void requireNoSelfIntersection(const Surface& surface, const std::vector<Index>& componentOf,
+                               const std::string& source) {
+  const auto pair = detail::firstSelfIntersection(surface.vertices, surface.triangles, componentOf);
+  if (!pair) return;
+  const auto [first, second] = *pair;
+  const TriangleIndices &a = surface.triangles[first], &b = surface.triangles[second];
+  throw InputError(source, "component " + std::to_string(componentOf[first]) +
+                               " intersects itself: triangles " + std::to_string(first) + " (vertices " +
+                               std::to_string(a[0]) + ", " + std::to_string(a[1]) + ", " + std::to_string(a[2]) +
+                               ") and " + std::to_string(second) + " (vertices " + std::to_string(b[0]) + ", " +
+                               std::to_string(b[1]) + ", " + std::to_string(b[2]) +
+                               ") cross or touch away from the vertices they share" +
+                               vertexLocations(surface.vertices, {a[0], a[1], a[2], b[0], b[1], b[2]}));
+}
+
 void flipTriangles(std::vector<TriangleIndices>& triangles, const std::vector<Index>& componentOf,
                    Index component) {
   for (std::size_t t = 0; t < triangles.size(); ++t) {
@@ -442,7 +458,7 @@ void flipTriangles(std::vector<TriangleIndices>& triangles, const std::vector<In
 }  // namespace
 
 Mesh Mesh::fromSoup(const TriangleSoup& soup, const std::string& sourceName,
-                    std::vector<std::string>* warnings) {
+                    std::vector<std::string>* warnings, SelfIntersection selfIntersection) {
   requireFiniteCoordinates(soup, sourceName);
   requireTriangles(soup, sourceName);
   requireIndicesInRange(soup, sourceName);
@@ -470,6 +486,9 @@ Mesh Mesh::fromSoup(const TriangleSoup& soup, const std::string& sourceName,
     mesh.componentBounds_.push_back(component.bounds);
     mesh.componentVertex_.push_back(component.representative);
     mesh.componentVolume_.push_back(std::abs(component.signedVolume));
+  }
+  if (selfIntersection == SelfIntersection::Check) {
+    requireNoSelfIntersection(surface, mesh.triangleComponent_, sourceName);
   }
   mesh.vertices_ = std::move(surface.vertices);
   mesh.triangles_ = std::move(surface.triangles);

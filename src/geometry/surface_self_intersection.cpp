@@ -1,0 +1,157 @@
+#include "surface_self_intersection.h"
+
+#include <algorithm>
+#include <array>
+#include <iterator>
+
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+
+#include "closed_triangle_tests.h"
+#include "freespace/geometry/determinants.h"
+#include "freespace/numbers/adaptive_sign.h"
+#include "freespace/numbers/interval.h"
+#include "freespace/numbers/predicate_statistics.h"
+
+namespace freespace::detail {
+namespace {
+
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+using TreePoint = bg::model::point<double, 3, bg::cs::cartesian>;
+using TreeBox = bg::model::box<TreePoint>;
+using TreeEntry = std::pair<TreeBox, std::uint32_t>;  // box, triangle
+
+/// Exact signs of the determinants of ClosedTriangleTests on mesh vertices.
+class VertexPredicates {
+ public:
+  VertexPredicates(const std::vector<Point3>& vertices, PredicateStatistics& statistics)
+      : vertices_(vertices), engine_(statistics) {}
+
+  Sign orient3d(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    return decide([&](auto point) { return orient3dDeterminant(point(a), point(b), point(c), point(d)); });
+  }
+  Sign orient2d(std::uint32_t a, std::uint32_t b, std::uint32_t c, int droppedAxis) {
+    return decide([&](auto point) { return orient2dDeterminant(point(a), point(b), point(c), droppedAxis); });
+  }
+  Sign between(std::uint32_t a, std::uint32_t b, std::uint32_t c, int droppedAxis) {
+    return decide([&](auto point) { return projectedBetweenDeterminant(point(a), point(b), point(c), droppedAxis); });
+  }
+  Sign compare(std::uint32_t a, std::uint32_t b, int axis) {
+    return decide([&](auto point) { return point(a)[axis] - point(b)[axis]; });
+  }
+
+ private:
+  /// The sign of a determinant written once over the vertices' coordinates: in
+  /// double intervals (the caller's RoundingScope), at rising precision when those
+  /// leave it open.
+  template <class Determinant>
+  Sign decide(const Determinant& determinant) {
+    const Interval estimate = determinant([&](std::uint32_t vertex) {
+      const Point3& p = vertices_[vertex];
+      return Vec3T<Interval>{Interval(p.x()), Interval(p.y()), Interval(p.z())};
+    });
+    if (const std::optional<Sign> sign = certainSign(estimate)) return *sign;
+    return engine_.sign(PredicateKind::Orientation, [&](auto numberType) {
+      using T = typename decltype(numberType)::type;
+      return determinant([&](std::uint32_t vertex) {
+        const Point3& p = vertices_[vertex];
+        return Vec3T<T>{T(p.x()), T(p.y()), T(p.z())};
+      });
+    });
+  }
+
+  const std::vector<Point3>& vertices_;
+  AdaptiveSignEngine engine_;
+};
+
+using Tests = ClosedTriangleTests<VertexPredicates, std::uint32_t>;
+using Triangle = Tests::Triangle;
+
+/// The triangle turned so that it starts at `vertex`, one of its corners.
+Triangle startingAt(const TriangleIndices& t, std::uint32_t vertex) {
+  const int k = t[0] == vertex ? 0 : (t[1] == vertex ? 1 : 2);
+  return {t[k], t[(k + 1) % 3], t[(k + 2) % 3]};
+}
+
+/// Triangles (v, a, b) and (v, c, d) sharing only v meet elsewhere exactly when
+/// segment ab meets the second or segment cd the first. Their intersection is convex;
+/// if it holds a point p other than v, the ray from v through p leaves each triangle
+/// at a point of its edge opposite v, and the nearer of those two exits lies in both.
+bool meetBeyondSharedVertex(const Triangle& p, const Triangle& q, Tests& tests) {
+  return tests.segmentIntersectsTriangle(p[1], p[2], q) || tests.segmentIntersectsTriangle(q[1], q[2], p);
+}
+
+/// Triangles (u, w, a) and (w, u, c) sharing the edge uw meet beyond it exactly when
+/// they lie in one plane on the same side of the edge (folded onto each other): two
+/// planes that differ meet in the edge's line only.
+bool meetBeyondSharedEdge(const Triangle& p, const Triangle& q, VertexPredicates& predicates) {
+  const std::uint32_t u = p[0], w = p[1], a = p[2], c = q[0] == w ? q[2] : (q[1] == w ? q[0] : q[1]);
+  if (predicates.orient3d(u, w, a, c) != Sign::Zero) return false;
+  for (int axis = 0; axis < 3; ++axis) {
+    const Sign sideOfA = predicates.orient2d(u, w, a, axis);
+    // A projection in which the plane does not collapse keeps sides of the edge's line.
+    if (sideOfA != Sign::Zero) return predicates.orient2d(u, w, c, axis) == sideOfA;
+  }
+  return false;  // not reached: the triangle (u, w, a) has an area
+}
+
+bool meetBeyondSharedFeatures(const TriangleIndices& first, const TriangleIndices& second,
+                              VertexPredicates& predicates) {
+  Tests tests(predicates);
+  std::array<std::uint32_t, 3> shared{};
+  int sharedCount = 0;
+  for (std::uint32_t vertex : first) {
+    if (std::find(second.begin(), second.end(), vertex) != second.end()) shared[sharedCount++] = vertex;
+  }
+  switch (sharedCount) {
+    case 0:
+      return tests.trianglesIntersect({first[0], first[1], first[2]}, {second[0], second[1], second[2]});
+    case 1:
+      return meetBeyondSharedVertex(startingAt(first, shared[0]), startingAt(second, shared[0]), tests);
+    default: {
+      // Start the first at the shared vertex its edge to the other shared one leaves.
+      const Triangle p = startingAt(first, shared[0]);
+      return meetBeyondSharedEdge(p[1] == shared[1] ? p : startingAt(first, shared[1]), startingAt(second, shared[0]),
+                                  predicates);
+    }
+  }
+}
+
+TreeBox triangleBox(const std::vector<Point3>& vertices, const TriangleIndices& t) {
+  Box3 box;
+  for (std::uint32_t vertex : t) box.extend(vertices[vertex]);
+  return {TreePoint(box.min().x(), box.min().y(), box.min().z()),
+          TreePoint(box.max().x(), box.max().y(), box.max().z())};
+}
+
+}  // namespace
+
+std::optional<std::pair<std::uint32_t, std::uint32_t>> firstSelfIntersection(
+    const std::vector<Point3>& vertices, const std::vector<TriangleIndices>& triangles,
+    const std::vector<std::uint32_t>& componentOf) {
+  std::vector<TreeEntry> entries;
+  entries.reserve(triangles.size());
+  for (std::uint32_t t = 0; t < triangles.size(); ++t) entries.emplace_back(triangleBox(vertices, triangles[t]), t);
+  const bgi::rtree<TreeEntry, bgi::rstar<16>> tree(entries);
+  PredicateStatistics statistics;
+  VertexPredicates predicates(vertices, statistics);
+  RoundingScope rounding;
+  std::vector<TreeEntry> near;
+  for (const auto& [box, i] : entries) {
+    near.clear();
+    // Closed boxes: triangles that only touch are found too.
+    tree.query(bgi::intersects(box), std::back_inserter(near));
+    std::vector<std::uint32_t> candidates;
+    for (const TreeEntry& entry : near) {
+      if (entry.second > i && componentOf[entry.second] == componentOf[i]) candidates.push_back(entry.second);
+    }
+    std::sort(candidates.begin(), candidates.end());
+    for (std::uint32_t j : candidates) {
+      if (meetBeyondSharedFeatures(triangles[i], triangles[j], predicates)) return std::make_pair(i, j);
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace freespace::detail
