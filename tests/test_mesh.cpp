@@ -290,6 +290,16 @@ TEST(SurfaceSelfIntersection, TrianglesSharingAVertexMeetOnlyWhenAnotherPointIsI
   EXPECT_TRUE(pairMeeting({Point3(2, 0, 0), Point3(2, -1, 1)}, {0, 3, 4}));
 }
 
+TEST(SurfaceSelfIntersection, TrianglesSharingNoVertexMeetWhenTheyCrossOrTouch) {
+  EXPECT_TRUE(pairMeeting({Point3(1, 1, -1), Point3(1, 1, 1), Point3(2, 1, 1)}, {3, 4, 5}));   // crossing
+  EXPECT_FALSE(pairMeeting({Point3(1, 1, 1), Point3(1, 2, 1), Point3(2, 1, 1)}, {3, 4, 5}));   // above
+  // In the plane: overlapping, one corner on the first's edge, and apart across it.
+  EXPECT_TRUE(pairMeeting({Point3(1, 1, 0), Point3(5, 1, 0), Point3(1, 5, 0)}, {3, 4, 5}));
+  EXPECT_TRUE(pairMeeting({Point3(2, 2, 0), Point3(5, 2, 0), Point3(2, 5, 0)}, {3, 4, 5}));
+  EXPECT_FALSE(pairMeeting({Point3(2.5, 2, 0), Point3(5, 2, 0), Point3(2.5, 5, 0)}, {3, 4, 5}));
+  EXPECT_FALSE(pairMeeting({Point3(-1, -1, 0), Point3(-2, -1, 0), Point3(-1, -2, 0)}, {3, 4, 5}));
+}
+
 TEST(SurfaceSelfIntersection, TrianglesSharingAnEdgeMeetOnlyWhenFoldedFlat) {
   EXPECT_TRUE(pairMeeting({Point3(1, 1, 0)}, {1, 0, 3}));     // in the plane, on the first's side
   EXPECT_FALSE(pairMeeting({Point3(1, -1, 0)}, {1, 0, 3}));   // in the plane, across the edge

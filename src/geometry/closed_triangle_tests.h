@@ -26,6 +26,7 @@ class ClosedTriangleTests {
   /// on edges.
   bool trianglesIntersect(const Triangle& P, const Triangle& Q) {
     if (allOnOneSide(P, Q) || allOnOneSide(Q, P)) return false;
+    if (inPlaneOf(P, Q)) return coplanarTrianglesIntersect(P, Q);
     for (int i = 0; i < 3; ++i) {
       if (segmentIntersectsTriangle(P[i], P[(i + 1) % 3], Q)) return true;
       if (segmentIntersectsTriangle(Q[i], Q[(i + 1) % 3], P)) return true;
@@ -69,6 +70,32 @@ class ClosedTriangleTests {
     const Sign s0 = p_.orient3d(plane[0], plane[1], plane[2], T[0]);
     return s0 != Sign::Zero && s0 == p_.orient3d(plane[0], plane[1], plane[2], T[1]) &&
            s0 == p_.orient3d(plane[0], plane[1], plane[2], T[2]);
+  }
+
+  bool inPlaneOf(const Triangle& plane, const Triangle& T) {
+    for (Id corner : T) {
+      if (p_.orient3d(plane[0], plane[1], plane[2], corner) != Sign::Zero) return false;
+    }
+    return true;
+  }
+
+  /// Closed triangles in one plane are apart exactly when an edge of one has the
+  /// other strictly beyond its line (the separating axis theorem for convex polygons:
+  /// an axis normal to an edge suffices), in a projection in which P is not
+  /// degenerate (nor then Q).
+  bool coplanarTrianglesIntersect(const Triangle& P, const Triangle& Q) {
+    const int axis = projectionAxis(P);
+    return !separatedByAnEdge(P, Q, axis) && !separatedByAnEdge(Q, P, axis);
+  }
+
+  bool separatedByAnEdge(const Triangle& T, const Triangle& other, int axis) {
+    for (int i = 0; i < 3; ++i) {
+      const Id from = T[i], to = T[(i + 1) % 3];
+      const Sign outside = -p_.orient2d(from, to, T[(i + 2) % 3], axis);
+      const auto beyond = [&](Id corner) { return p_.orient2d(from, to, corner, axis) == outside; };
+      if (beyond(other[0]) && beyond(other[1]) && beyond(other[2])) return true;
+    }
+    return false;
   }
 
   /// Both a and b lie in T's plane: work in a coordinate projection in which T is

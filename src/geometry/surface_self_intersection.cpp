@@ -82,11 +82,16 @@ bool meetBeyondSharedVertex(const Triangle& p, const Triangle& q, Tests& tests) 
   return tests.segmentIntersectsTriangle(p[1], p[2], q) || tests.segmentIntersectsTriangle(q[1], q[2], p);
 }
 
-/// Triangles (u, w, a) and (w, u, c) sharing the edge uw meet beyond it exactly when
+/// The corner of `t` that is neither u nor w (two of its corners).
+std::uint32_t thirdCorner(const TriangleIndices& t, std::uint32_t u, std::uint32_t w) {
+  return *std::find_if(t.begin(), t.end(), [&](std::uint32_t corner) { return corner != u && corner != w; });
+}
+
+/// Triangles (u, w, a) and (u, w, c) sharing the edge uw meet beyond it exactly when
 /// they lie in one plane on the same side of the edge (folded onto each other): two
 /// planes that differ meet in the edge's line only.
-bool meetBeyondSharedEdge(const Triangle& p, const Triangle& q, VertexPredicates& predicates) {
-  const std::uint32_t u = p[0], w = p[1], a = p[2], c = q[0] == w ? q[2] : (q[1] == w ? q[0] : q[1]);
+bool meetBeyondSharedEdge(std::uint32_t u, std::uint32_t w, std::uint32_t a, std::uint32_t c,
+                          VertexPredicates& predicates) {
   if (predicates.orient3d(u, w, a, c) != Sign::Zero) return false;
   for (int axis = 0; axis < 3; ++axis) {
     const Sign sideOfA = predicates.orient2d(u, w, a, axis);
@@ -110,10 +115,8 @@ bool meetBeyondSharedFeatures(const TriangleIndices& first, const TriangleIndice
     case 1:
       return meetBeyondSharedVertex(startingAt(first, shared[0]), startingAt(second, shared[0]), tests);
     default: {
-      // Start the first at the shared vertex its edge to the other shared one leaves.
-      const Triangle p = startingAt(first, shared[0]);
-      return meetBeyondSharedEdge(p[1] == shared[1] ? p : startingAt(first, shared[1]), startingAt(second, shared[0]),
-                                  predicates);
+      const std::uint32_t u = shared[0], w = shared[1];
+      return meetBeyondSharedEdge(u, w, thirdCorner(first, u, w), thirdCorner(second, u, w), predicates);
     }
   }
 }
