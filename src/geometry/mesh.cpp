@@ -458,7 +458,7 @@ void flipTriangles(std::vector<TriangleIndices>& triangles, const std::vector<In
 }  // namespace
 
 Mesh Mesh::fromSoup(const TriangleSoup& soup, const std::string& sourceName,
-                    std::vector<std::string>* warnings, SelfIntersection selfIntersection) {
+                    std::vector<std::string>* warnings) {
   requireFiniteCoordinates(soup, sourceName);
   requireTriangles(soup, sourceName);
   requireIndicesInRange(soup, sourceName);
@@ -487,9 +487,7 @@ Mesh Mesh::fromSoup(const TriangleSoup& soup, const std::string& sourceName,
     mesh.componentVertex_.push_back(component.representative);
     mesh.componentVolume_.push_back(std::abs(component.signedVolume));
   }
-  if (selfIntersection == SelfIntersection::Check) {
-    requireNoSelfIntersection(surface, mesh.triangleComponent_, sourceName);
-  }
+  requireNoSelfIntersection(surface, mesh.triangleComponent_, sourceName);
   mesh.vertices_ = std::move(surface.vertices);
   mesh.triangles_ = std::move(surface.triangles);
   return mesh;

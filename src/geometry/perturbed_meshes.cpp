@@ -11,11 +11,8 @@ Mesh perturbMesh(const Mesh& mesh, Perturbation& perturbation, const std::string
   for (Point3& vertex : soup.vertices) {
     for (int axis = 0; axis < 3; ++axis) vertex[axis] = perturbation.perturb(vertex[axis]);
   }
-  // The input was checked for surfaces that meet themselves (touching included).
-  // Vertices moved by about 1e-8 of the scene's size (DESIGN.md section 5) cannot make
-  // two triangles meet that were farther apart than that; checking again would cost
-  // several times the perturbation itself.
-  return Mesh::fromSoup(soup, name, nullptr, Mesh::SelfIntersection::Skip);
+  // Checked again: moved vertices can make triangles meet that were a hair apart.
+  return Mesh::fromSoup(soup, name);
 }
 
 }  // namespace

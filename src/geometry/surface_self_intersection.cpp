@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <iterator>
 
 #include <boost/geometry.hpp>
@@ -10,7 +11,7 @@
 #include "closed_triangle_tests.h"
 #include "freespace/geometry/determinants.h"
 #include "freespace/numbers/adaptive_sign.h"
-#include "freespace/numbers/interval.h"
+#include "freespace/numbers/double_double_interval.h"
 #include "freespace/numbers/predicate_statistics.h"
 
 namespace freespace::detail {
@@ -22,16 +23,53 @@ using TreePoint = bg::model::point<double, 3, bg::cs::cartesian>;
 using TreeBox = bg::model::box<TreePoint>;
 using TreeEntry = std::pair<TreeBox, std::uint32_t>;  // box, triangle
 
-/// Exact signs of the determinants of ClosedTriangleTests on mesh vertices.
+/// The sign of a determinant evaluated in doubles (rounding to nearest) when its
+/// rounding error, at most `errorFactor` times the permanent (the same sum over the
+/// absolute values of its products), cannot reach zero; nothing near underflow, where
+/// that bound does not hold, or for values that are not finite.
+std::optional<Sign> certainInDoubles(double determinant, double permanent, double errorFactor) {
+  constexpr double kSmallestPermanent = 1e-250;
+  if (!(permanent > kSmallestPermanent) || !std::isfinite(permanent)) return std::nullopt;
+  const double bound = errorFactor * permanent;
+  if (determinant > bound) return Sign::Positive;
+  if (determinant < -bound) return Sign::Negative;
+  return std::nullopt;
+}
+
+// Forward error bounds of the 2x2 and 3x3 orientation determinants of coordinate
+// differences in doubles (Shewchuk, "Adaptive precision floating-point arithmetic and
+// fast robust geometric predicates", 1997: ccwerrboundA and o3derrboundA), with
+// epsilon = 2^-53.
+constexpr double kEpsilon = 0x1p-53;
+constexpr double kOrient2dError = (3 + 16 * kEpsilon) * kEpsilon;
+constexpr double kOrient3dError = (7 + 56 * kEpsilon) * kEpsilon;
+
+/// Exact signs of the determinants of ClosedTriangleTests on mesh vertices: the
+/// orientations filtered in doubles first (the caller rounds to nearest), every sign
+/// then at rising precision.
 class VertexPredicates {
  public:
   VertexPredicates(const std::vector<Point3>& vertices, PredicateStatistics& statistics)
       : vertices_(vertices), engine_(statistics) {}
 
   Sign orient3d(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+    const Point3 &pa = vertices_[a], b0 = vertices_[b] - pa, c0 = vertices_[c] - pa, d0 = vertices_[d] - pa;
+    const double m1 = c0.y() * d0.z(), m2 = c0.z() * d0.y(), m3 = c0.x() * d0.z(), m4 = c0.z() * d0.x(),
+                 m5 = c0.x() * d0.y(), m6 = c0.y() * d0.x();
+    const double determinant = b0.x() * (m1 - m2) - b0.y() * (m3 - m4) + b0.z() * (m5 - m6);
+    const double permanent = std::abs(b0.x()) * (std::abs(m1) + std::abs(m2)) +
+                             std::abs(b0.y()) * (std::abs(m3) + std::abs(m4)) +
+                             std::abs(b0.z()) * (std::abs(m5) + std::abs(m6));
+    if (const auto sign = certainInDoubles(determinant, permanent, kOrient3dError)) return *sign;
     return decide([&](auto point) { return orient3dDeterminant(point(a), point(b), point(c), point(d)); });
   }
   Sign orient2d(std::uint32_t a, std::uint32_t b, std::uint32_t c, int droppedAxis) {
+    const int u = (droppedAxis + 1) % 3, v = (droppedAxis + 2) % 3;
+    const Point3 &pa = vertices_[a], b0 = vertices_[b] - pa, c0 = vertices_[c] - pa;
+    const double left = b0[u] * c0[v], right = b0[v] * c0[u];
+    if (const auto sign = certainInDoubles(left - right, std::abs(left) + std::abs(right), kOrient2dError)) {
+      return *sign;
+    }
     return decide([&](auto point) { return orient2dDeterminant(point(a), point(b), point(c), droppedAxis); });
   }
   Sign between(std::uint32_t a, std::uint32_t b, std::uint32_t c, int droppedAxis) {
@@ -42,16 +80,10 @@ class VertexPredicates {
   }
 
  private:
-  /// The sign of a determinant written once over the vertices' coordinates: in
-  /// double intervals (the caller's RoundingScope), at rising precision when those
-  /// leave it open.
+  /// The sign of a determinant written once over the vertices' coordinates, at
+  /// rising precision.
   template <class Determinant>
   Sign decide(const Determinant& determinant) {
-    const Interval estimate = determinant([&](std::uint32_t vertex) {
-      const Point3& p = vertices_[vertex];
-      return Vec3T<Interval>{Interval(p.x()), Interval(p.y()), Interval(p.z())};
-    });
-    if (const std::optional<Sign> sign = certainSign(estimate)) return *sign;
     return engine_.sign(PredicateKind::Orientation, [&](auto numberType) {
       using T = typename decltype(numberType)::type;
       return determinant([&](std::uint32_t vertex) {
@@ -139,7 +171,7 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> firstSelfIntersection(
   const bgi::rtree<TreeEntry, bgi::rstar<16>> tree(entries);
   PredicateStatistics statistics;
   VertexPredicates predicates(vertices, statistics);
-  RoundingScope rounding;
+  NearestRoundingScope rounding;
   std::vector<TreeEntry> near;
   for (const auto& [box, i] : entries) {
     near.clear();

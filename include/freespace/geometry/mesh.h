@@ -42,17 +42,10 @@ class Mesh {
  public:
   Mesh() = default;
 
-  /// Whether fromSoup looks for a surface that meets itself (exactly, over the pairs
-  /// of a component's triangles whose boxes meet; about a second for 35,000
-  /// triangles). A soup made from a checked mesh by moving its vertices far less than
-  /// the distances between its triangles (the construction's perturbation) may skip it.
-  enum class SelfIntersection { Check, Skip };
-
   /// Checks and cleans a soup. Throws InputError naming `sourceName` and the defect.
   /// Repairs that change the input (flipped components) are appended to `warnings`.
   static Mesh fromSoup(const TriangleSoup& soup, const std::string& sourceName,
-                       std::vector<std::string>* warnings = nullptr,
-                       SelfIntersection selfIntersection = SelfIntersection::Check);
+                       std::vector<std::string>* warnings = nullptr);
 
   const std::vector<Point3>& vertices() const { return vertices_; }
   const std::vector<TriangleIndices>& triangles() const { return triangles_; }
