@@ -3,32 +3,23 @@
 #include <map>
 #include <vector>
 
-#include <boost/geometry.hpp>
-#include <boost/geometry/index/rtree.hpp>
-
 #include "../geometry/closed_triangle_tests.h"
+#include "../geometry/triangle_box_tree.h"
 #include "placed_pair.h"
 
 namespace freespace {
 
 namespace {
 
-namespace bg = boost::geometry;
 namespace bgi = boost::geometry::index;
-using TreePoint = bg::model::point<double, 3, bg::cs::cartesian>;
-using TreeBox = bg::model::box<TreePoint>;
-using TreeEntry = std::pair<TreeBox, std::uint32_t>;  // box, world triangle
-using TriangleTree = bgi::rtree<TreeEntry, bgi::rstar<16>>;
+using detail::TreeEntry;
+using detail::treeBox;
+using detail::TriangleTree;
 
 using detail::kRobotPoint;
 using detail::PlacedPair;
 using detail::PointId;
 using Tests = detail::ClosedTriangleTests<PlacedPair, PointId>;
-
-TreeBox treeBox(const Box3& box) {
-  return {TreePoint(box.min().x(), box.min().y(), box.min().z()),
-          TreePoint(box.max().x(), box.max().y(), box.max().z())};
-}
 
 Tests::Triangle worldTriangle(const Mesh& world, std::uint32_t triangle) {
   const TriangleIndices& t = world.triangles()[triangle];
@@ -40,22 +31,11 @@ Tests::Triangle robotTriangle(const Mesh& robot, std::uint32_t triangle) {
   return {t[0] | kRobotPoint, t[1] | kRobotPoint, t[2] | kRobotPoint};
 }
 
-TriangleTree buildTree(const Mesh& world) {
-  std::vector<TreeEntry> entries;
-  entries.reserve(world.triangles().size());
-  for (std::uint32_t i = 0; i < world.triangles().size(); ++i) {
-    Box3 box;
-    for (std::uint32_t vertex : world.triangles()[i]) box.extend(world.vertices()[vertex]);
-    entries.emplace_back(treeBox(box), i);
-  }
-  return TriangleTree(entries.begin(), entries.end());  // bulk loading
-}
-
 }  // namespace
 
 struct ExactCollisionChecker::Impl {
   Impl(const Mesh& robotMesh, const Mesh& worldMesh)
-      : robot(robotMesh), world(worldMesh), worldTree(buildTree(world)) {
+      : robot(robotMesh), world(worldMesh), worldTree(detail::triangleTree(world.vertices(), world.triangles())) {
     robotComponentTriangles.resize(robot.componentCount());
     for (std::uint32_t i = 0; i < robot.triangles().size(); ++i) {
       robotComponentTriangles[robot.triangleComponents()[i]].push_back(i);

@@ -65,6 +65,15 @@ class ClosedTriangleTests {
     return static_cast<int>(normalX);
   }
 
+  /// An axis along which T's projection is not degenerate (nor that of anything in
+  /// its plane).
+  int projectionAxis(const Triangle& T) {
+    for (int axis = 2; axis > 0; --axis) {
+      if (p_.orient2d(T[0], T[1], T[2], axis) != Sign::Zero) return axis;
+    }
+    return 0;
+  }
+
  private:
   bool allOnOneSide(const Triangle& plane, const Triangle& T) {
     const Sign s0 = p_.orient3d(plane[0], plane[1], plane[2], T[0]);
@@ -107,13 +116,6 @@ class ClosedTriangleTests {
       if (closedSegmentsIntersect(a, b, T[i], T[(i + 1) % 3], axis)) return true;
     }
     return false;
-  }
-
-  int projectionAxis(const Triangle& T) {
-    for (int axis = 2; axis > 0; --axis) {
-      if (p_.orient2d(T[0], T[1], T[2], axis) != Sign::Zero) return axis;
-    }
-    return 0;
   }
 
   bool insideClosedTriangle(Id q, const Triangle& T, int axis) {

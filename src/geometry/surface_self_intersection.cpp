@@ -5,23 +5,15 @@
 #include <cmath>
 #include <iterator>
 
-#include <boost/geometry.hpp>
-#include <boost/geometry/index/rtree.hpp>
-
 #include "closed_triangle_tests.h"
 #include "freespace/geometry/determinants.h"
 #include "freespace/numbers/adaptive_sign.h"
 #include "freespace/numbers/double_double_interval.h"
 #include "freespace/numbers/predicate_statistics.h"
+#include "triangle_box_tree.h"
 
 namespace freespace::detail {
 namespace {
-
-namespace bg = boost::geometry;
-namespace bgi = boost::geometry::index;
-using TreePoint = bg::model::point<double, 3, bg::cs::cartesian>;
-using TreeBox = bg::model::box<TreePoint>;
-using TreeEntry = std::pair<TreeBox, std::uint32_t>;  // box, triangle
 
 /// The sign of a determinant evaluated in doubles (rounding to nearest) when its
 /// rounding error, at most `errorFactor` times the permanent (the same sum over the
@@ -122,15 +114,12 @@ std::uint32_t thirdCorner(const TriangleIndices& t, std::uint32_t u, std::uint32
 /// Triangles (u, w, a) and (u, w, c) sharing the edge uw meet beyond it exactly when
 /// they lie in one plane on the same side of the edge (folded onto each other): two
 /// planes that differ meet in the edge's line only.
-bool meetBeyondSharedEdge(std::uint32_t u, std::uint32_t w, std::uint32_t a, std::uint32_t c,
+bool meetBeyondSharedEdge(std::uint32_t u, std::uint32_t w, std::uint32_t a, std::uint32_t c, Tests& tests,
                           VertexPredicates& predicates) {
   if (predicates.orient3d(u, w, a, c) != Sign::Zero) return false;
-  for (int axis = 0; axis < 3; ++axis) {
-    const Sign sideOfA = predicates.orient2d(u, w, a, axis);
-    // A projection in which the plane does not collapse keeps sides of the edge's line.
-    if (sideOfA != Sign::Zero) return predicates.orient2d(u, w, c, axis) == sideOfA;
-  }
-  return false;  // not reached: the triangle (u, w, a) has an area
+  // A projection in which the plane does not collapse keeps sides of the edge's line.
+  const int axis = tests.projectionAxis({u, w, a});
+  return predicates.orient2d(u, w, c, axis) == predicates.orient2d(u, w, a, axis);
 }
 
 bool meetBeyondSharedFeatures(const TriangleIndices& first, const TriangleIndices& second,
@@ -148,16 +137,9 @@ bool meetBeyondSharedFeatures(const TriangleIndices& first, const TriangleIndice
       return meetBeyondSharedVertex(startingAt(first, shared[0]), startingAt(second, shared[0]), tests);
     default: {
       const std::uint32_t u = shared[0], w = shared[1];
-      return meetBeyondSharedEdge(u, w, thirdCorner(first, u, w), thirdCorner(second, u, w), predicates);
+      return meetBeyondSharedEdge(u, w, thirdCorner(first, u, w), thirdCorner(second, u, w), tests, predicates);
     }
   }
-}
-
-TreeBox triangleBox(const std::vector<Point3>& vertices, const TriangleIndices& t) {
-  Box3 box;
-  for (std::uint32_t vertex : t) box.extend(vertices[vertex]);
-  return {TreePoint(box.min().x(), box.min().y(), box.min().z()),
-          TreePoint(box.max().x(), box.max().y(), box.max().z())};
 }
 
 }  // namespace
@@ -165,19 +147,17 @@ TreeBox triangleBox(const std::vector<Point3>& vertices, const TriangleIndices& 
 std::optional<std::pair<std::uint32_t, std::uint32_t>> firstSelfIntersection(
     const std::vector<Point3>& vertices, const std::vector<TriangleIndices>& triangles,
     const std::vector<std::uint32_t>& componentOf) {
-  std::vector<TreeEntry> entries;
-  entries.reserve(triangles.size());
-  for (std::uint32_t t = 0; t < triangles.size(); ++t) entries.emplace_back(triangleBox(vertices, triangles[t]), t);
-  const bgi::rtree<TreeEntry, bgi::rstar<16>> tree(entries);
+  const TriangleTree tree = triangleTree(vertices, triangles);
   PredicateStatistics statistics;
   VertexPredicates predicates(vertices, statistics);
   NearestRoundingScope rounding;
   std::vector<TreeEntry> near;
-  for (const auto& [box, i] : entries) {
+  std::vector<std::uint32_t> candidates;
+  for (std::uint32_t i = 0; i < triangles.size(); ++i) {
     near.clear();
+    candidates.clear();
     // Closed boxes: triangles that only touch are found too.
-    tree.query(bgi::intersects(box), std::back_inserter(near));
-    std::vector<std::uint32_t> candidates;
+    tree.query(bgi::intersects(triangleBox(vertices, triangles[i])), std::back_inserter(near));
     for (const TreeEntry& entry : near) {
       if (entry.second > i && componentOf[entry.second] == componentOf[i]) candidates.push_back(entry.second);
     }
