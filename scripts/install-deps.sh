@@ -8,7 +8,8 @@ packages=(
   libompl-dev ompl-demos
   libfcl-dev libccd-dev
   libeigen3-dev
-  libboost-dev libboost-serialization-dev libboost-graph-dev
+  libboost-dev libboost-serialization-dev libboost-graph-dev libboost-program-options-dev
+  libcgal-dev
   libassimp-dev
   libgmp-dev libmpfr-dev libmpfi-dev
   libcli11-dev nlohmann-json3-dev

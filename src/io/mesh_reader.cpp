@@ -36,28 +36,31 @@ std::ifstream openNonEmptyFile(const std::string& path) {
   return file;
 }
 
-Eigen::Matrix4d toEigen(const aiMatrix4x4& matrix) {
-  Eigen::Matrix4d converted;
-  for (int row = 0; row < 4; ++row) {
-    for (int column = 0; column < 4; ++column) converted(row, column) = matrix[row][column];
-  }
-  return converted;
-}
+// OMPL.app's import flags: the same flags give the same vertices (JoinIdenticalVertices
+// merges only corners with equal normals, so GenNormals changes how many remain), and
+// the robot's centre is their average.
+constexpr unsigned kOmplAppImportFlags = aiProcess_GenNormals | aiProcess_Triangulate |
+                                         aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
+                                         aiProcess_OptimizeGraph;
 
-// Appends the triangles of `node`'s meshes, and of its descendants', placed by
-// the transform accumulated from the root. Point and line primitives are skipped.
-void collectTriangles(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& parentTransform,
-                      TriangleSoup& soup) {
-  const Eigen::Matrix4d transform = parentTransform * toEigen(node.mTransformation);
-  const Eigen::Matrix3d linear = transform.topLeftCorner<3, 3>();
-  const Eigen::Vector3d translation = transform.topRightCorner<3, 1>();
+// Appends the triangles of `node`'s meshes, and of its descendants', placed by the
+// transform accumulated from the root, and adds every vertex of those meshes to
+// `vertexSum`. Both are computed in single precision as OMPL.app computes them, so the
+// positions and the sum are OMPL.app's to the bit. Point and line primitives add no
+// triangles.
+void collectTriangles(const aiScene& scene, const aiNode& node, aiMatrix4x4 transform, ImportedMesh& imported,
+                      aiVector3D& vertexSum, std::size_t& vertexCount) {
+  transform *= node.mTransformation;
   for (unsigned m = 0; m < node.mNumMeshes; ++m) {
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
+    TriangleSoup& soup = imported.soup;
     const auto firstVertex = static_cast<std::uint32_t>(soup.vertices.size());
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
-      const aiVector3D& vertex = mesh.mVertices[v];
-      soup.vertices.push_back(linear * Point3(vertex.x, vertex.y, vertex.z) + translation);
+      const aiVector3D placed = transform * mesh.mVertices[v];
+      soup.vertices.emplace_back(placed.x, placed.y, placed.z);
+      vertexSum += placed;
     }
+    vertexCount += mesh.mNumVertices;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
       if (face.mNumIndices != 3) continue;
@@ -66,38 +69,54 @@ void collectTriangles(const aiScene& scene, const aiNode& node, const Eigen::Mat
     }
   }
   for (unsigned c = 0; c < node.mNumChildren; ++c) {
-    collectTriangles(scene, *node.mChildren[c], transform, soup);
+    collectTriangles(scene, *node.mChildren[c], transform, imported, vertexSum, vertexCount);
   }
 }
 
 // Assimp applies its importers' conventions as OMPL.app sees them: a COLLADA
 // file's <unit> scale and its up axis (Z_UP is turned to Y_UP) are in the root
 // node's transform.
-TriangleSoup readWithAssimp(const std::string& path) {
+ImportedMesh importWithAssimp(const std::string& path) {
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(path, aiProcess_Triangulate);
+  const aiScene* scene = importer.ReadFile(path, kOmplAppImportFlags);
   if (!scene) throw InputError(path, std::string("cannot read mesh: ") + importer.GetErrorString());
-  TriangleSoup soup;
-  if (scene->mRootNode) collectTriangles(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), soup);
-  return soup;
+  ImportedMesh imported;
+  aiVector3D vertexSum(0, 0, 0);
+  std::size_t vertexCount = 0;
+  if (scene->mRootNode) collectTriangles(*scene, *scene->mRootNode, aiMatrix4x4(), imported, vertexSum, vertexCount);
+  if (vertexCount > 0) vertexSum /= static_cast<float>(vertexCount);
+  imported.vertexAverage = Point3(vertexSum.x, vertexSum.y, vertexSum.z);
+  return imported;
+}
+
+// Formats OMPL.app cannot read have no convention of their own: the plain average of
+// the vertices as read.
+Point3 averageOf(const std::vector<Point3>& vertices) {
+  Point3 sum = Point3::Zero();
+  for (const Point3& vertex : vertices) sum += vertex;
+  return vertices.empty() ? sum : Point3(sum / static_cast<double>(vertices.size()));
 }
 
 }  // namespace
 
-TriangleSoup readTriangleSoup(const std::string& path) {
+ImportedMesh importMesh(const std::string& path) {
   std::ifstream file = openNonEmptyFile(path);
   const std::string extension = std::filesystem::path(path).extension().string();
   const std::string format = detail::lowercaseExtension(path);
   if (format == ".vtk") {
     const std::string content{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-    return readLegacyVtk(path, content);
+    ImportedMesh imported{readLegacyVtk(path, content), Point3::Zero()};
+    imported.vertexAverage = averageOf(imported.soup.vertices);
+    return imported;
   }
-  if (isAssimpFormat(format)) return readWithAssimp(path);
+  if (isAssimpFormat(format)) return importWithAssimp(path);
   const std::string found = extension.empty() ? ": the file name has no extension"
                                               : " '" + extension + "'";
   throw InputError(path, "unsupported mesh format" + found +
                              " (expected obj, stl, ply, off, dae or vtk)");
 }
+
+TriangleSoup readTriangleSoup(const std::string& path) { return importMesh(path).soup; }
 
 Mesh loadMesh(const std::string& path, std::vector<std::string>* warnings) {
   return Mesh::fromSoup(readTriangleSoup(path), path, warnings);

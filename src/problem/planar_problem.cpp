@@ -1,5 +1,6 @@
 #include "freespace/problem/planar_problem.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -7,11 +8,11 @@
 #include <set>
 #include <sstream>
 
-#include <boost/property_tree/ini_parser.hpp>
-#include <boost/property_tree/ptree.hpp>
+#include <boost/program_options/parsers.hpp>
 
 #include "freespace/input_error.h"
 #include "freespace/io/mesh_reader.h"
+#include "freespace/io/output_file.h"
 
 namespace freespace {
 
@@ -20,12 +21,40 @@ namespace {
 namespace fs = std::filesystem;
 using Section = std::map<std::string, std::string>;
 
-/// The keys of one INI section, taken literally ("start.x" is one key, not a path).
-Section readSection(const boost::property_tree::ptree& tree, const std::string& name) {
+/// The lines of each section, in file order.
+using Sections = std::map<std::string, std::vector<ConfigEntry>>;
+
+/// Parses the file as OMPL.app does (Boost.Program_options, every key accepted): a
+/// line "key = value" under "[section]" comes back as "section.key".
+Sections parseSections(std::istream& input, const std::string& cfgPath) {
+  namespace po = boost::program_options;
+  po::parsed_options parsed(nullptr);
+  try {
+    parsed = po::parse_config_file(input, po::options_description(), true);
+  } catch (const po::error& error) {
+    throw InputError(cfgPath, error.what());
+  }
+  Sections sections;
+  for (const po::option& option : parsed.options) {
+    const std::size_t dot = option.string_key.find('.');
+    const std::string section = dot == std::string::npos ? "" : option.string_key.substr(0, dot);
+    const std::string key = dot == std::string::npos ? option.string_key : option.string_key.substr(dot + 1);
+    sections[section].push_back({key, option.value.empty() ? "" : option.value.front()});
+  }
+  return sections;
+}
+
+/// The section's keys with their values; a repeated key is an error or, when
+/// `lastWins`, takes its last value.
+Section keysOf(const std::vector<ConfigEntry>& entries, const std::string& cfgPath, const std::string& name,
+               bool lastWins) {
   Section section;
-  const auto found = tree.find(name);
-  if (found == tree.not_found()) return section;
-  for (const auto& [key, value] : found->second) section[key] = value.data();
+  for (const ConfigEntry& entry : entries) {
+    if (!section.emplace(entry.key, entry.value).second) {
+      if (!lastWins) throw InputError(cfgPath, "[" + name + "] key '" + entry.key + "' is given more than once");
+      section[entry.key] = entry.value;
+    }
+  }
   return section;
 }
 
@@ -53,6 +82,15 @@ class SectionReader {
       throw InputError(file_, "[" + name_ + "] " + key + " = '" + value + "' is not a finite number");
     }
     return result;
+  }
+
+  /// A whole number from 0 to 2^32 - 1.
+  unsigned count(const std::string& key) {
+    const double value = number(key);
+    if (value < 0 || value > 4294967295.0 || std::floor(value) != value) {
+      throw InputError(file_, "[" + name_ + "] " + key + " = '" + text(key) + "' is not a whole number from 0 to 4294967295");
+    }
+    return static_cast<unsigned>(value);
   }
 
   Pose2 pose(const std::string& prefix) {
@@ -93,10 +131,43 @@ void readProblemSection(SectionReader& section, PlanarProblem& problem) {
   if (section.has("objective.threshold")) problem.objectiveThreshold = section.number("objective.threshold");
 }
 
-void readBenchmarkSection(SectionReader& section, PlanarProblem& problem) {
+// Keys of [benchmark] that OMPL.app's benchmark reads and this project only keeps.
+bool isKeptBenchmarkKey(const std::string& key) {
+  return key == "output" || key == "save_paths" || key == "simplify";
+}
+
+void readBenchmarkSection(SectionReader& section, const std::vector<ConfigEntry>& entries, PlanarProblem& problem) {
   if (section.has("time_limit")) problem.timeLimit = section.number("time_limit");
   if (section.has("mem_limit")) problem.memLimit = section.number("mem_limit");
-  if (section.has("run_count")) problem.runCount = static_cast<unsigned>(section.number("run_count"));
+  if (section.has("run_count")) problem.runCount = section.count("run_count");
+  for (const ConfigEntry& entry : entries) {
+    if (isKeptBenchmarkKey(entry.key)) {
+      section.text(entry.key);  // marks it used
+      problem.benchmarkSettings.push_back(entry);
+    }
+  }
+}
+
+// OMPL.app's grouping of [planner] lines into planners (see PlannerEntry). Its
+// "<planner>.problem.<key>" context lines are parameters like any other here.
+std::vector<PlannerEntry> plannersOf(const std::vector<ConfigEntry>& entries) {
+  std::vector<PlannerEntry> planners;
+  for (const ConfigEntry& entry : entries) {
+    const std::size_t dot = entry.key.find('.');
+    if (dot == std::string::npos) {
+      planners.push_back({entry.key, {}});
+      continue;
+    }
+    const std::string type = entry.key.substr(0, dot);
+    auto latest = std::find_if(planners.rbegin(), planners.rend(),
+                               [&type](const PlannerEntry& planner) { return planner.type == type; });
+    if (latest == planners.rend()) {
+      planners.push_back({type, {}});
+      latest = planners.rbegin();
+    }
+    latest->parameters.push_back({entry.key.substr(dot + 1), entry.value});
+  }
+  return planners;
 }
 
 std::string formatNumber(double value) {
@@ -106,45 +177,7 @@ std::string formatNumber(double value) {
   return stream.str();
 }
 
-}  // namespace
-
-PlanarProblem readProblem(const std::string& cfgPath, std::vector<std::string>* warnings) {
-  std::ifstream input(cfgPath);
-  if (!input) throw InputError(cfgPath, "cannot open file");
-  boost::property_tree::ptree tree;
-  try {
-    boost::property_tree::ini_parser::read_ini(input, tree);
-  } catch (const boost::property_tree::ini_parser_error& error) {
-    throw InputError(cfgPath, "line " + std::to_string(error.line()) + ": " + error.message());
-  }
-  if (tree.find("problem") == tree.not_found()) throw InputError(cfgPath, "missing section [problem]");
-
-  PlanarProblem problem;
-  SectionReader problemSection(cfgPath, "problem", readSection(tree, "problem"), warnings);
-  readProblemSection(problemSection, problem);
-  problemSection.warnUnused();
-
-  SectionReader benchmarkSection(cfgPath, "benchmark", readSection(tree, "benchmark"), warnings);
-  readBenchmarkSection(benchmarkSection, problem);
-  benchmarkSection.warnUnused();
-
-  const auto planners = tree.find("planner");
-  if (planners != tree.not_found()) {
-    for (const auto& [key, value] : planners->second) problem.planners.push_back(key);  // file order
-  }
-  for (const auto& [name, section] : tree) {
-    if (name != "problem" && name != "benchmark" && name != "planner" && warnings) {
-      warnings->push_back(cfgPath + ": unknown section [" + name + "] ignored");
-    }
-  }
-  if (problem.name.empty()) problem.name = fs::path(cfgPath).stem().string();
-  return problem;
-}
-
-void writeProblem(const PlanarProblem& problem, const std::string& cfgPath, bool overwrite) {
-  if (!overwrite && fs::exists(cfgPath)) throw InputError(cfgPath, "already exists (not overwritten)");
-  std::ofstream out(cfgPath);
-  if (!out) throw InputError(cfgPath, "cannot write file");
+void writeProblemSection(std::ostream& out, const PlanarProblem& problem) {
   out << "[problem]\n"
       << "name = " << problem.name << "\n"
       << "robot = " << problem.robot << "\n"
@@ -164,15 +197,63 @@ void writeProblem(const PlanarProblem& problem, const std::string& cfgPath, bool
   }
   if (!problem.objective.empty()) out << "objective = " << problem.objective << "\n";
   if (problem.objectiveThreshold) out << "objective.threshold = " << formatNumber(*problem.objectiveThreshold) << "\n";
+}
+
+void writeBenchmarkAndPlanners(std::ostream& out, const PlanarProblem& problem) {
   out << "\n[benchmark]\n"
       << "time_limit = " << formatNumber(problem.timeLimit) << "\n"
       << "mem_limit = " << formatNumber(problem.memLimit) << "\n"
       << "run_count = " << problem.runCount << "\n";
-  if (!problem.planners.empty()) {
-    out << "\n[planner]\n";
-    for (const std::string& planner : problem.planners) out << planner << " =\n";
+  for (const ConfigEntry& entry : problem.benchmarkSettings) out << entry.key << " = " << entry.value << "\n";
+  if (problem.planners.empty()) return;
+  out << "\n[planner]\n";
+  for (const PlannerEntry& planner : problem.planners) {
+    out << planner.type << " =\n";
+    for (const ConfigEntry& parameter : planner.parameters) {
+      out << planner.type << "." << parameter.key << " = " << parameter.value << "\n";
+    }
   }
-  if (!out) throw InputError(cfgPath, "cannot write file");
+}
+
+}  // namespace
+
+PlanarProblem readProblem(const std::string& cfgPath, std::vector<std::string>* warnings) {
+  std::error_code error;
+  if (fs::is_directory(cfgPath, error)) throw InputError(cfgPath, "cannot open file: it is a directory");
+  std::ifstream input(cfgPath);
+  if (!input) throw InputError(cfgPath, "cannot open file");
+  Sections sections = parseSections(input, cfgPath);
+  if (!sections.count("problem")) throw InputError(cfgPath, "missing section [problem]");
+
+  PlanarProblem problem;
+  SectionReader problemSection(cfgPath, "problem", keysOf(sections["problem"], cfgPath, "problem", false), warnings);
+  readProblemSection(problemSection, problem);
+  problemSection.warnUnused();
+
+  const std::vector<ConfigEntry>& benchmark = sections["benchmark"];
+  SectionReader benchmarkSection(cfgPath, "benchmark", keysOf(benchmark, cfgPath, "benchmark", true), warnings);
+  readBenchmarkSection(benchmarkSection, benchmark, problem);
+  benchmarkSection.warnUnused();
+
+  problem.planners = plannersOf(sections["planner"]);
+  for (const auto& [name, entries] : sections) {
+    if (name.empty() && warnings) {
+      for (const ConfigEntry& entry : entries) {
+        warnings->push_back(cfgPath + ": key '" + entry.key + "' outside any section ignored");
+      }
+    } else if (name != "problem" && name != "benchmark" && name != "planner" && warnings) {
+      warnings->push_back(cfgPath + ": unknown section [" + name + "] ignored");
+    }
+  }
+  if (problem.name.empty()) problem.name = fs::path(cfgPath).stem().string();
+  return problem;
+}
+
+void writeProblem(const PlanarProblem& problem, const std::string& cfgPath, bool overwrite) {
+  writeFile(cfgPath, overwrite, [&problem](std::ostream& out) {
+    writeProblemSection(out, problem);
+    writeBenchmarkAndPlanners(out, problem);
+  });
 }
 
 LoadedProblem loadProblem(const std::string& cfgPath, std::vector<std::string>* warnings) {
@@ -183,12 +264,12 @@ LoadedProblem loadProblem(const std::string& cfgPath, std::vector<std::string>* 
   const std::string robotPath = (folder / loaded.problem.robot).string();
   const std::string worldPath = (folder / loaded.problem.world).string();
 
-  const Mesh robot = loadMesh(robotPath, warnings);
-  Point3 sum = Point3::Zero();
-  for (const Point3& vertex : robot.vertices()) sum += vertex;
-  loaded.robotCentre = sum / static_cast<double>(robot.vertices().size());
-  loaded.robotCentre.z() = 0;
-  loaded.robot = robot.translated(-loaded.robotCentre, robotPath);
+  // The centre comes from the vertices as imported, before any repair, or a state of
+  // the .cfg would place the robot elsewhere than OMPL.app does.
+  ImportedMesh robot = importMesh(robotPath);
+  loaded.robotCentre = Point3(robot.vertexAverage.x(), robot.vertexAverage.y(), 0);
+  for (Point3& vertex : robot.soup.vertices) vertex -= loaded.robotCentre;
+  loaded.robot = Mesh::fromSoup(robot.soup, robotPath, warnings);
   loaded.world = loadMesh(worldPath, warnings);
   return loaded;
 }

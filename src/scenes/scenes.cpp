@@ -52,7 +52,7 @@ Scene assembleScene(const std::string& name, Mesh robot, const TriangleSoup& wor
   problem.volume = planningVolume(scene.robot, scene.world, start, goal);
   problem.timeLimit = 10;
   problem.runCount = 10;
-  problem.planners = {"rrtconnect", "prm"};
+  problem.planners = {{"rrtconnect", {}}, {"prm", {}}};
   return renamedScene(std::move(scene), name);
 }
 
