@@ -1,37 +1,9 @@
 // Reading mesh files: every format, node transforms, the VTK reader, and the
 // malformed files of tests/data/meshes with the message each must produce.
 //
-// Malformed files (tests/data/meshes/), each with a substring of its InputError
-// problem (the full message is "<path>: <problem>"):
-//
-// | file                  | problem contains                                                    |
-// |-----------------------|---------------------------------------------------------------------|
-// | bad_truncated.obj     | borders only one triangle: the surface is not closed                |
-// | bad_open.obj          | edge (4, 5) borders only one triangle: the surface is not closed    |
-// | bad_orientation.obj   | have inconsistent orientation across edge                           |
-// | bad_nonmanifold.obj   | edge (0, 3) is shared by 3 triangles                                |
-// | bad_duplicate.obj     | use the same three vertices                                         |
-// | bad_zero_area.obj     | triangle 0 (vertices 0, 1, 2) has zero area                         |
-// | bad_flat.obj          | component 0 encloses no volume                                      |
-// | bad_nan.obj           | has a non-finite coordinate (nan)                                   |
-// | bad_no_triangles.obj  | contains no triangles                                               |
-// | bad_index.obj         | cannot read mesh: OBJ: vertex index out of range                    |
-// | bad_empty.obj         | file is empty                                                       |
-// | bad_garbage.stl       | cannot read mesh:                                                   |
-// | bad_garbage.ply       | cannot read mesh:                                                   |
-// | bad_format.xyz        | unsupported mesh format '.xyz' (expected obj, stl, ply, off, dae or vtk) |
-// | bad_truncated.vtk     | line 5: expected 24 point coordinates, file ended after 13          |
-// | bad_nan.vtk           | vertex 3 has a non-finite coordinate (nan)                          |
-// | bad_index.vtk         | line 20: point index 9 out of range (8 points)                      |
-// | bad_polygon_size.vtk  | line 14: POLYGONS announces 31 numbers, but its 6 polygons hold 30  |
-// | bad_binary.vtk        | binary VTK is not supported                                         |
-// | bad_dataset.vtk       | line 4: not a POLYDATA dataset (found UNSTRUCTURED_GRID)            |
-// | bad_header.vtk        | not a legacy VTK file                                               |
-// | bad_truncated.off     | borders only one triangle: the surface is not closed                |
-// | bad_nan.off           | vertex 2 has a non-finite coordinate (nan)                          |
-// | bad_truncated.ply     | contains no triangles (the file ends before its faces)              |
-// | bad_truncated.dae     | cannot read mesh: Unable to read file, malformed XML                |
-// | bad_open.stl          | borders only one triangle: the surface is not closed                |
+// Malformed files (tests/data/meshes/bad_*) are listed in kMalformedFiles, each with
+// a substring of its InputError problem (the full message is "<path>: <problem>");
+// the repairable ones (repairable_*) load as the solids they show.
 //
 // A path that does not exist gives "cannot open file".
 
@@ -292,13 +264,10 @@ struct MalformedFile {
 
 // The table at the top of this file.
 const MalformedFile kMalformedFiles[] = {
-    {"bad_truncated.obj", "borders only one triangle: the surface is not closed"},
-    {"bad_open.obj", "edge (4, 5) borders only one triangle: the surface is not closed"},
-    {"bad_orientation.obj", "have inconsistent orientation across edge"},
-    {"bad_nonmanifold.obj", "edge (0, 3) is shared by 3 triangles"},
-    {"bad_duplicate.obj", "use the same three vertices"},
-    {"bad_zero_area.obj", "triangle 0 (vertices 0, 1, 2) has zero area"},
-    {"bad_flat.obj", "component 0 encloses no volume"},
+    {"bad_truncated.obj", "6 triangles enclose nothing (an open sheet, a zero-thickness wall or a crack"},
+    {"bad_nonmanifold.obj", "1 triangle encloses nothing"},
+    {"bad_zero_area.obj", "2 triangles enclose nothing"},
+    {"bad_flat.obj", "3 triangles enclose nothing"},
     {"bad_nan.obj", "has a non-finite coordinate (nan)"},
     {"bad_no_triangles.obj", "contains no triangles"},
     {"bad_index.obj", "cannot read mesh: OBJ: vertex index out of range"},
@@ -313,14 +282,37 @@ const MalformedFile kMalformedFiles[] = {
     {"bad_binary.vtk", "binary VTK is not supported"},
     {"bad_dataset.vtk", "line 4: not a POLYDATA dataset (found UNSTRUCTURED_GRID)"},
     {"bad_header.vtk", "not a legacy VTK file"},
-    {"bad_truncated.off", "borders only one triangle: the surface is not closed"},
+    {"bad_truncated.off", "4 triangles enclose nothing"},
     {"bad_nan.off", "vertex 2 has a non-finite coordinate (nan)"},
     {"bad_truncated.ply", "contains no triangles"},
     {"bad_truncated.dae", "cannot read mesh: Unable to read file, malformed XML"},
-    {"bad_open.stl", "borders only one triangle: the surface is not closed"},
 };
 
 class MalformedMeshFile : public ::testing::TestWithParam<MalformedFile> {};
+
+// Files the old checks refused that repair and interpretation now read as the unit
+// cube (or the 2 x 2 x 2 box) they show, each reporting what it changed.
+TEST(MeshReader, RepairableFilesLoadAsTheSolidsTheyShow) {
+  const struct {
+    const char* name;
+    double volume;
+    const char* change;
+  } files[] = {
+      {"repairable_missing_face.obj", 1, "triangles added to close planar openings"},
+      {"repairable_orientation.obj", 1, "not forming closed oriented surfaces, taken as the solid they enclose"},
+      {"repairable_duplicate.obj", 1, "1 duplicate triangle dropped"},
+      {"repairable_missing_triangle.stl", 8, "1 triangle added to close planar openings"},
+  };
+  for (const auto& file : files) {
+    std::vector<std::string> warnings;
+    const Mesh mesh = loadMesh(kMeshes + file.name, &warnings);
+    EXPECT_DOUBLE_EQ(mesh.volume(), file.volume) << file.name;
+    EXPECT_EQ(mesh.componentCount(), 1u) << file.name;
+    EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(),
+                            [&](const std::string& warning) { return warning.find(file.change) != std::string::npos; }))
+        << file.name;
+  }
+}
 
 TEST_P(MalformedMeshFile, IsRejectedWithItsMessage) {
   const std::string path = kMeshes + GetParam().name;

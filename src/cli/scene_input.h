@@ -16,16 +16,25 @@ class SceneInput {
   /// With `savedSpace`, one file (a saved free space) may stand for ROBOT WORLD.
   void addOptions(CLI::App& command, bool savedSpace = false);
 
+  /// The repair tolerance (under `toleranceNames`, CLI11's comma-separated names)
+  /// and --ignore-open, for commands that read meshes without this input.
+  void addPreparationOptions(CLI::App& command, const std::string& toleranceNames);
+
   /// The saved free space named instead of ROBOT WORLD, if one is.
   std::optional<std::string> savedSpaceFile() const;
 
   /// Loads the meshes (and the problem, with --cfg; the robot is then re-centred as
-  /// in OMPL.app). Warnings go to stderr. Throws InputError.
+  /// in OMPL.app), repaired and interpreted as solids (--tolerance, --ignore-open).
+  /// Warnings and every change made to a mesh go to stderr. Throws InputError.
   LoadedProblem load() const;
 
  private:
+  PreparationSettings preparation() const;
+
   std::string cfg_;
   std::vector<std::string> meshes_;
+  std::optional<double> tolerance_;
+  bool ignoreOpen_ = false;
 };
 
 }  // namespace freespace::cli

@@ -1,23 +1,22 @@
 #include "freespace/geometry/mesh.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
-#include <initializer_list>
 #include <limits>
 #include <string>
 #include <utility>
 
-#include <boost/multiprecision/gmp.hpp>
-
 #include "freespace/input_error.h"
+#include "disjoint_sets.h"
+#include "soup_checks.h"
 #include "surface_self_intersection.h"
 
 namespace freespace {
 namespace {
 
+using detail::vertexLocations;
+
 using Index = std::uint32_t;
-using Rational = boost::multiprecision::mpq_rational;
 
 constexpr Index kNoIndex = std::numeric_limits<Index>::max();
 
@@ -25,194 +24,17 @@ constexpr Index kNoIndex = std::numeric_limits<Index>::max();
 // encloses nothing: the rest is rounding error.
 constexpr double kNoVolumeFraction = 1e-12;
 
-// ---------------------------------------------------------------------------
-// Message text
-
-// Shortest decimal text that reads back as the same double ("0.1", "-inf"); every
-// NaN prints as "nan" (its sign means nothing).
-std::string formatNumber(double value) {
-  if (std::isnan(value)) return "nan";
-  char buffer[32];
-  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
-  return std::string(buffer, end);
-}
-
-std::string formatPoint(const Point3& point) {
-  return "(" + formatNumber(point.x()) + ", " + formatNumber(point.y()) + ", " +
-         formatNumber(point.z()) + ")";
-}
-
-// "; vertex 3 is at (0, 0, 1), vertex 8 at (1, 0, 1)": where the vertices named by a
-// message are, since welded indices do not appear in the user's file.
-std::string vertexLocations(const std::vector<Point3>& vertices,
-                            std::initializer_list<Index> indices) {
-  std::string text;
-  std::vector<Index> listed;
-  for (Index index : indices) {
-    if (std::find(listed.begin(), listed.end(), index) != listed.end()) continue;
-    text += listed.empty() ? "; vertex " + std::to_string(index) + " is at "
-                           : ", vertex " + std::to_string(index) + " at ";
-    text += formatPoint(vertices[index]);
-    listed.push_back(index);
-  }
-  return text;
-}
-
 std::string edgeName(Index low, Index high) {
   return "edge (" + std::to_string(low) + ", " + std::to_string(high) + ")";
 }
 
 // ---------------------------------------------------------------------------
-// Checks on the raw soup
-
-void requireFiniteCoordinates(const TriangleSoup& soup, const std::string& source) {
-  for (std::size_t v = 0; v < soup.vertices.size(); ++v) {
-    for (int axis = 0; axis < 3; ++axis) {
-      const double coordinate = soup.vertices[v][axis];
-      if (!std::isfinite(coordinate)) {
-        throw InputError(source, "vertex " + std::to_string(v) +
-                                     " has a non-finite coordinate (" +
-                                     formatNumber(coordinate) + ")");
-      }
-    }
-  }
-}
-
-void requireTriangles(const TriangleSoup& soup, const std::string& source) {
-  if (soup.triangles.empty()) throw InputError(source, "contains no triangles");
-}
-
-void requireIndicesInRange(const TriangleSoup& soup, const std::string& source) {
-  const std::size_t vertexCount = soup.vertices.size();
-  for (std::size_t t = 0; t < soup.triangles.size(); ++t) {
-    for (Index index : soup.triangles[t]) {
-      if (index >= vertexCount) {
-        throw InputError(source, "triangle " + std::to_string(t) + " refers to vertex " +
-                                     std::to_string(index) + ", but there are only " +
-                                     std::to_string(vertexCount) + " vertices");
-      }
-    }
-  }
-}
-
-// ---------------------------------------------------------------------------
-// Welding
-
-struct Surface {
-  std::vector<Point3> vertices;
-  std::vector<TriangleIndices> triangles;
-};
-
-bool lexicographicallyLess(const Point3& a, const Point3& b) {
-  if (a.x() != b.x()) return a.x() < b.x();
-  if (a.y() != b.y()) return a.y() < b.y();
-  return a.z() < b.z();
-}
-
-// Merges vertices with identical coordinates and drops unused ones; the kept
-// vertices stay in the order of their first appearance in the soup.
-Surface weldIdenticalVertices(const TriangleSoup& soup) {
-  const std::size_t soupSize = soup.vertices.size();
-  std::vector<bool> used(soupSize, false);
-  for (const TriangleIndices& triangle : soup.triangles) {
-    for (Index index : triangle) used[index] = true;
-  }
-
-  std::vector<Index> byPosition;
-  for (Index v = 0; v < soupSize; ++v) {
-    if (used[v]) byPosition.push_back(v);
-  }
-  std::sort(byPosition.begin(), byPosition.end(), [&](Index a, Index b) {
-    const Point3& p = soup.vertices[a];
-    const Point3& q = soup.vertices[b];
-    if (lexicographicallyLess(p, q)) return true;
-    if (lexicographicallyLess(q, p)) return false;
-    return a < b;
-  });
-
-  // Each used soup vertex points to the first soup vertex at the same position.
-  std::vector<Index> firstAtPosition(soupSize, kNoIndex);
-  for (std::size_t i = 0; i < byPosition.size(); ++i) {
-    const bool startsRun =
-        i == 0 || soup.vertices[byPosition[i]] != soup.vertices[byPosition[i - 1]];
-    firstAtPosition[byPosition[i]] = startsRun ? byPosition[i] : firstAtPosition[byPosition[i - 1]];
-  }
-
-  Surface surface;
-  std::vector<Index> weldedIndex(soupSize, kNoIndex);
-  for (Index v = 0; v < soupSize; ++v) {
-    if (used[v] && firstAtPosition[v] == v) {
-      weldedIndex[v] = static_cast<Index>(surface.vertices.size());
-      surface.vertices.push_back(soup.vertices[v]);
-    }
-  }
-  surface.triangles.reserve(soup.triangles.size());
-  for (const TriangleIndices& triangle : soup.triangles) {
-    TriangleIndices welded;
-    for (int corner = 0; corner < 3; ++corner) {
-      welded[corner] = weldedIndex[firstAtPosition[triangle[corner]]];
-    }
-    surface.triangles.push_back(welded);
-  }
-  return surface;
-}
-
-// ---------------------------------------------------------------------------
 // Zero-area and duplicate triangles
 
-// Component k of (b - a) x (c - a) is u[i] v[j] - u[j] v[i]: a 2D orientation
-// determinant. Computed in doubles it is wrong by less than 3.0000000000000018 eps
-// (|u[i] v[j]| + |u[j] v[i]|) (Shewchuk's orient2d bound) when no product under- or
-// overflows; 8 eps leaves room for a non-default rounding mode.
-bool crossProductClearlyNonZero(const Point3& a, const Point3& b, const Point3& c) {
-  constexpr double kUnitRoundoff = std::numeric_limits<double>::epsilon() / 2;
-  constexpr double kErrorFactor = 8 * kUnitRoundoff;
-  constexpr double kSmallestSafeMagnitude = 1e-280;
-  const Point3 u = b - a;
-  const Point3 v = c - a;
-  for (int k = 0; k < 3; ++k) {
-    const int i = (k + 1) % 3;
-    const int j = (k + 2) % 3;
-    const double left = u[i] * v[j];
-    const double right = u[j] * v[i];
-    const double magnitude = std::abs(left) + std::abs(right);
-    if (std::isfinite(magnitude) && magnitude >= kSmallestSafeMagnitude &&
-        std::abs(left - right) > kErrorFactor * magnitude) {
-      return true;
-    }
-  }
-  return false;
-}
-
-bool crossProductExactlyZero(const Point3& a, const Point3& b, const Point3& c) {
-  Rational u[3];
-  Rational v[3];
-  for (int k = 0; k < 3; ++k) {
-    const Rational origin(a[k]);
-    u[k] = Rational(b[k]) - origin;
-    v[k] = Rational(c[k]) - origin;
-  }
-  for (int k = 0; k < 3; ++k) {
-    const int i = (k + 1) % 3;
-    const int j = (k + 2) % 3;
-    if (u[i] * v[j] != u[j] * v[i]) return false;
-  }
-  return true;
-}
-
-bool hasZeroArea(const Surface& surface, const TriangleIndices& triangle) {
-  const auto [a, b, c] = triangle;
-  if (a == b || b == c || c == a) return true;
-  const Point3& p = surface.vertices[a];
-  const Point3& q = surface.vertices[b];
-  const Point3& r = surface.vertices[c];
-  return !crossProductClearlyNonZero(p, q, r) && crossProductExactlyZero(p, q, r);
-}
-
-void requireNonZeroAreas(const Surface& surface, const std::string& source) {
+void requireNonZeroAreas(const TriangleSoup& surface, const std::string& source) {
   for (std::size_t t = 0; t < surface.triangles.size(); ++t) {
     const TriangleIndices& triangle = surface.triangles[t];
-    if (!hasZeroArea(surface, triangle)) continue;
+    if (!detail::hasZeroArea(surface.vertices, triangle)) continue;
     const auto [a, b, c] = triangle;
     throw InputError(source, "triangle " + std::to_string(t) + " (vertices " +
                                  std::to_string(a) + ", " + std::to_string(b) + ", " +
@@ -221,13 +43,7 @@ void requireNonZeroAreas(const Surface& surface, const std::string& source) {
   }
 }
 
-// Whether two triangles on the same three vertices run through them the same way.
-bool sameOrientation(const TriangleIndices& first, const TriangleIndices& second) {
-  const auto start = std::find(second.begin(), second.end(), first[0]) - second.begin();
-  return second[(start + 1) % 3] == first[1];
-}
-
-void requireDistinctTriangles(const Surface& surface, const std::string& source) {
+void requireDistinctTriangles(const TriangleSoup& surface, const std::string& source) {
   std::vector<std::pair<TriangleIndices, Index>> byVertexSet;
   byVertexSet.reserve(surface.triangles.size());
   for (Index t = 0; t < surface.triangles.size(); ++t) {
@@ -252,7 +68,7 @@ void requireDistinctTriangles(const Surface& surface, const std::string& source)
   const TriangleIndices& second = surface.triangles[duplicate.second];
   const auto [a, b, c] = first;
   const std::string orientationNote =
-      sameOrientation(first, second) ? ""
+      detail::sameOrientation(first, second) ? ""
                                      : " in opposite orientations (a double-sided surface?)";
   throw InputError(source, "triangles " + std::to_string(duplicate.first) + " and " +
                                std::to_string(duplicate.second) +
@@ -348,35 +164,11 @@ void requireConsistentOrientation(const std::vector<EdgeUse>& uses,
 // ---------------------------------------------------------------------------
 // Components
 
-class DisjointSets {
- public:
-  explicit DisjointSets(std::size_t size) : parent_(size) {
-    for (Index i = 0; i < size; ++i) parent_[i] = i;
-  }
-
-  Index find(Index element) {
-    while (parent_[element] != element) {
-      parent_[element] = parent_[parent_[element]];
-      element = parent_[element];
-    }
-    return element;
-  }
-
-  void unite(Index a, Index b) {
-    const Index rootA = find(a);
-    const Index rootB = find(b);
-    parent_[std::max(rootA, rootB)] = std::min(rootA, rootB);
-  }
-
- private:
-  std::vector<Index> parent_;
-};
-
 // Component of each triangle through shared edges (every edge has two uses),
 // numbered in the order of each component's first triangle.
 std::vector<Index> connectedComponents(std::size_t triangleCount,
                                        const std::vector<EdgeUse>& uses) {
-  DisjointSets sets(triangleCount);
+  detail::DisjointSets sets(triangleCount);
   for (std::size_t i = 0; i < uses.size(); i += 2) sets.unite(uses[i].triangle, uses[i + 1].triangle);
 
   std::vector<Index> componentOfRoot(triangleCount, kNoIndex);
@@ -399,7 +191,7 @@ struct ComponentSummary {
 // Bounds, first vertex and signed volume (sum of det(v0, v1, v2) / 6, taken
 // relative to the bounding box's min corner for accuracy, dividing once at the end)
 // of each component.
-std::vector<ComponentSummary> summarizeComponents(const Surface& surface,
+std::vector<ComponentSummary> summarizeComponents(const TriangleSoup& surface,
                                                   const std::vector<Index>& componentOf) {
   const Index componentCount =
       componentOf.empty() ? 0 : *std::max_element(componentOf.begin(), componentOf.end()) + 1;
@@ -433,7 +225,7 @@ void requireVolume(const ComponentSummary& component, Index index, const std::st
   }
 }
 
-void requireNoSelfIntersection(const Surface& surface, const std::vector<Index>& componentOf,
+void requireNoSelfIntersection(const TriangleSoup& surface, const std::vector<Index>& componentOf,
                                const std::string& source) {
   const auto pair = detail::firstSelfIntersection(surface.vertices, surface.triangles, componentOf);
   if (!pair) return;
@@ -458,11 +250,17 @@ void flipTriangles(std::vector<TriangleIndices>& triangles, const std::vector<In
 }  // namespace
 
 Mesh Mesh::fromSoup(const TriangleSoup& soup, const std::string& sourceName,
-                    std::vector<std::string>* warnings) {
-  requireFiniteCoordinates(soup, sourceName);
-  requireTriangles(soup, sourceName);
-  requireIndicesInRange(soup, sourceName);
-  Surface surface = weldIdenticalVertices(soup);
+                    std::vector<std::string>* warnings, VertexWelding welding,
+                    SelfIntersectionCheck selfIntersection) {
+  detail::requireFiniteCoordinates(soup, sourceName);
+  detail::requireTriangles(soup, sourceName);
+  detail::requireIndicesInRange(soup, sourceName);
+  TriangleSoup surface = soup;
+  if (welding == VertexWelding::identicalPositions) {
+    surface = detail::weldIdenticalVertices(soup);
+  } else {
+    detail::dropUnusedVertices(surface);
+  }
   requireNonZeroAreas(surface, sourceName);
   requireDistinctTriangles(surface, sourceName);
   const std::vector<EdgeUse> edgeUses = sortedEdgeUses(surface.triangles);
@@ -487,7 +285,9 @@ Mesh Mesh::fromSoup(const TriangleSoup& soup, const std::string& sourceName,
     mesh.componentVertex_.push_back(component.representative);
     mesh.componentVolume_.push_back(std::abs(component.signedVolume));
   }
-  requireNoSelfIntersection(surface, mesh.triangleComponent_, sourceName);
+  if (selfIntersection == SelfIntersectionCheck::perform) {
+    requireNoSelfIntersection(surface, mesh.triangleComponent_, sourceName);
+  }
   mesh.vertices_ = std::move(surface.vertices);
   mesh.triangles_ = std::move(surface.triangles);
   return mesh;
@@ -508,7 +308,7 @@ double Mesh::volume() const {
 Mesh Mesh::translated(const Point3& offset, const std::string& sourceName) const {
   TriangleSoup soup{vertices_, triangles_};
   for (Point3& vertex : soup.vertices) vertex += offset;
-  return fromSoup(soup, sourceName);
+  return fromSoup(soup, sourceName, nullptr, VertexWelding::asIndexed);
 }
 
 }  // namespace freespace

@@ -12,7 +12,7 @@ Mesh perturbMesh(const Mesh& mesh, Perturbation& perturbation, const std::string
     for (int axis = 0; axis < 3; ++axis) vertex[axis] = perturbation.perturb(vertex[axis]);
   }
   // Checked again: moved vertices can make triangles meet that were a hair apart.
-  return Mesh::fromSoup(soup, name);
+  return Mesh::fromSoup(soup, name, nullptr, VertexWelding::asIndexed);
 }
 
 }  // namespace

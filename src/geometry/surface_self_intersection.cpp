@@ -142,11 +142,11 @@ bool meetBeyondSharedFeatures(const TriangleIndices& first, const TriangleIndice
   }
 }
 
-}  // namespace
-
-std::optional<std::pair<std::uint32_t, std::uint32_t>> firstSelfIntersection(
-    const std::vector<Point3>& vertices, const std::vector<TriangleIndices>& triangles,
-    const std::vector<std::uint32_t>& componentOf) {
+/// Calls visit(i, j) for each pair i < j (by i, then j) of triangles that meet beyond
+/// their shared features and are both accepted by `accept`, until visit returns false.
+template <class Accept, class Visit>
+void forEachMeetingPair(const std::vector<Point3>& vertices, const std::vector<TriangleIndices>& triangles,
+                        const Accept& accept, const Visit& visit) {
   const TriangleTree tree = triangleTree(vertices, triangles);
   PredicateStatistics statistics;
   VertexPredicates predicates(vertices, statistics);
@@ -159,14 +159,58 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> firstSelfIntersection(
     // Closed boxes: triangles that only touch are found too.
     tree.query(bgi::intersects(triangleBox(vertices, triangles[i])), std::back_inserter(near));
     for (const TreeEntry& entry : near) {
-      if (entry.second > i && componentOf[entry.second] == componentOf[i]) candidates.push_back(entry.second);
+      if (entry.second > i && accept(i, entry.second)) candidates.push_back(entry.second);
     }
     std::sort(candidates.begin(), candidates.end());
     for (std::uint32_t j : candidates) {
-      if (meetBeyondSharedFeatures(triangles[i], triangles[j], predicates)) return std::make_pair(i, j);
+      if (meetBeyondSharedFeatures(triangles[i], triangles[j], predicates) && !visit(i, j)) return;
     }
   }
-  return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::pair<std::uint32_t, std::uint32_t>> firstSelfIntersection(
+    const std::vector<Point3>& vertices, const std::vector<TriangleIndices>& triangles,
+    const std::vector<std::uint32_t>& componentOf) {
+  std::optional<std::pair<std::uint32_t, std::uint32_t>> first;
+  forEachMeetingPair(
+      vertices, triangles, [&](std::uint32_t i, std::uint32_t j) { return componentOf[i] == componentOf[j]; },
+      [&](std::uint32_t i, std::uint32_t j) {
+        first = std::make_pair(i, j);
+        return false;
+      });
+  return first;
+}
+
+std::vector<std::uint32_t> selfIntersectingComponents(const std::vector<Point3>& vertices,
+                                                      const std::vector<TriangleIndices>& triangles,
+                                                      const std::vector<std::uint32_t>& componentOf) {
+  std::vector<std::uint32_t> found;
+  forEachMeetingPair(
+      vertices, triangles,
+      [&](std::uint32_t i, std::uint32_t j) {
+        return componentOf[i] == componentOf[j] &&
+               std::find(found.begin(), found.end(), componentOf[i]) == found.end();
+      },
+      [&](std::uint32_t i, std::uint32_t) {
+        found.push_back(componentOf[i]);
+        return true;
+      });
+  std::sort(found.begin(), found.end());
+  return found;
+}
+
+std::vector<std::pair<std::uint32_t, std::uint32_t>> meetingPairs(const std::vector<Point3>& vertices,
+                                                                  const std::vector<TriangleIndices>& triangles) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  forEachMeetingPair(
+      vertices, triangles, [](std::uint32_t, std::uint32_t) { return true; },
+      [&](std::uint32_t i, std::uint32_t j) {
+        pairs.emplace_back(i, j);
+        return true;
+      });
+  return pairs;
 }
 
 }  // namespace freespace::detail

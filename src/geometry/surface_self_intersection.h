@@ -19,4 +19,16 @@ std::optional<std::pair<std::uint32_t, std::uint32_t>> firstSelfIntersection(
     const std::vector<Point3>& vertices, const std::vector<TriangleIndices>& triangles,
     const std::vector<std::uint32_t>& componentOf);
 
+/// The components (numbers of `componentOf`) whose surface meets itself, as for
+/// firstSelfIntersection, each once, in increasing order.
+std::vector<std::uint32_t> selfIntersectingComponents(const std::vector<Point3>& vertices,
+                                                      const std::vector<TriangleIndices>& triangles,
+                                                      const std::vector<std::uint32_t>& componentOf);
+
+/// Every pair (i < j, by i and then j) of triangles that meet anywhere but in the
+/// vertices they share and the edge between two shared vertices, decided exactly as
+/// for firstSelfIntersection.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> meetingPairs(const std::vector<Point3>& vertices,
+                                                                  const std::vector<TriangleIndices>& triangles);
+
 }  // namespace freespace::detail

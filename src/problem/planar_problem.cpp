@@ -256,7 +256,8 @@ void writeProblem(const PlanarProblem& problem, const std::string& cfgPath, bool
   });
 }
 
-LoadedProblem loadProblem(const std::string& cfgPath, std::vector<std::string>* warnings) {
+LoadedProblem loadProblem(const std::string& cfgPath, std::vector<std::string>* warnings,
+                          const PreparationSettings& settings) {
   LoadedProblem loaded;
   loaded.cfgPath = cfgPath;
   loaded.problem = readProblem(cfgPath, warnings);
@@ -269,8 +270,8 @@ LoadedProblem loadProblem(const std::string& cfgPath, std::vector<std::string>* 
   ImportedMesh robot = importMesh(robotPath);
   loaded.robotCentre = Point3(robot.vertexAverage.x(), robot.vertexAverage.y(), 0);
   for (Point3& vertex : robot.soup.vertices) vertex -= loaded.robotCentre;
-  loaded.robot = Mesh::fromSoup(robot.soup, robotPath, warnings);
-  loaded.world = loadMesh(worldPath, warnings);
+  loaded.robot = prepareMesh(robot.soup, robotPath, settings, &loaded.robotPreparation, warnings);
+  loaded.world = loadMesh(worldPath, warnings, settings, &loaded.worldPreparation);
   return loaded;
 }
 

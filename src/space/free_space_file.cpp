@@ -216,7 +216,7 @@ Mesh meshOf(const saved::Mesh& stored, const std::string& path) {
   for (std::size_t i = 0; i < stored.triangles.size(); i += 3) {
     soup.triangles.push_back({stored.triangles[i], stored.triangles[i + 1], stored.triangles[i + 2]});
   }
-  Mesh mesh = Mesh::fromSoup(soup, path);
+  Mesh mesh = Mesh::fromSoup(soup, path, nullptr, VertexWelding::asIndexed);
   if (mesh.vertices().size() * 3 != stored.vertices.size()) throw std::out_of_range("a mesh's vertices");
   return mesh;
 }

@@ -21,6 +21,16 @@ struct TriangleSoup {
   std::vector<TriangleIndices> triangles;
 };
 
+/// How Mesh::fromSoup tells which triangles share a vertex.
+enum class VertexWelding {
+  identicalPositions,  // vertices at the same position are one vertex
+  asIndexed,           // by index only: copies of a point stay apart (interpretSolid's components)
+};
+
+/// Whether Mesh::fromSoup checks that no component's surface meets itself (the
+/// costliest check), or the caller has (interpretSolid does).
+enum class SelfIntersectionCheck { perform, alreadyDone };
+
 /// A checked triangle mesh: finite coordinates, identical vertices welded, no
 /// zero-area triangle, a closed edge-manifold surface, every connected component
 /// consistently oriented with outward normals (a component that was inside-out is
@@ -44,8 +54,12 @@ class Mesh {
 
   /// Checks and cleans a soup. Throws InputError naming `sourceName` and the defect.
   /// Repairs that change the input (flipped components) are appended to `warnings`.
+  /// With VertexWelding::asIndexed the soup's vertex indices say which triangles
+  /// share vertices (unused vertices are dropped) and no positions are merged.
   static Mesh fromSoup(const TriangleSoup& soup, const std::string& sourceName,
-                       std::vector<std::string>* warnings = nullptr);
+                       std::vector<std::string>* warnings = nullptr,
+                       VertexWelding welding = VertexWelding::identicalPositions,
+                       SelfIntersectionCheck selfIntersection = SelfIntersectionCheck::perform);
 
   const std::vector<Point3>& vertices() const { return vertices_; }
   const std::vector<TriangleIndices>& triangles() const { return triangles_; }
@@ -60,7 +74,8 @@ class Mesh {
 
   /// Sum of the absolute enclosed volumes of the components.
   double volume() const;
-  /// The same mesh moved by (dx, dy, dz); the result is checked again.
+  /// The same mesh moved by (dx, dy, dz), with the same vertices; the result is
+  /// checked again.
   Mesh translated(const Point3& offset, const std::string& sourceName) const;
 
  private:

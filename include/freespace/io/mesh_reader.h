@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "freespace/geometry/mesh.h"
+#include "freespace/geometry/mesh_preparation.h"
 
 namespace freespace {
 
@@ -29,7 +30,9 @@ ImportedMesh importMesh(const std::string& path);
 /// The triangles of importMesh.
 TriangleSoup readTriangleSoup(const std::string& path);
 
-/// readTriangleSoup followed by Mesh::fromSoup.
-Mesh loadMesh(const std::string& path, std::vector<std::string>* warnings = nullptr);
+/// The mesh a file shows: readTriangleSoup followed by prepareMesh (repair and solid
+/// interpretation; every change is appended to `warnings`).
+Mesh loadMesh(const std::string& path, std::vector<std::string>* warnings = nullptr,
+              const PreparationSettings& settings = {}, PreparationReport* report = nullptr);
 
 }  // namespace freespace

@@ -7,6 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "freespace/geometry/mesh.h"
+#include "freespace/geometry/mesh_preparation.h"
 
 namespace freespace {
 
@@ -77,8 +78,13 @@ struct LoadedProblem {
   Mesh robot;
   Mesh world;
   Point3 robotCentre = Point3::Zero();  // subtracted from the robot's vertices
+  PreparationReport robotPreparation;   // what repair and interpretation changed
+  PreparationReport worldPreparation;
 };
 
-LoadedProblem loadProblem(const std::string& cfgPath, std::vector<std::string>* warnings = nullptr);
+/// Reads the .cfg and loads its meshes (loadMesh, with `settings`); warnings and
+/// every change made to the meshes are appended to `warnings`.
+LoadedProblem loadProblem(const std::string& cfgPath, std::vector<std::string>* warnings = nullptr,
+                          const PreparationSettings& settings = {});
 
 }  // namespace freespace

@@ -1,0 +1,65 @@
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "freespace/geometry/mesh.h"
+
+namespace freespace {
+
+struct SolidSettings {
+  /// Drop triangles that enclose nothing (with a warning) instead of refusing them.
+  bool ignoreOpen = false;
+  /// The repair tolerance (prepareMesh passes the one used): points this close to the
+  /// plane of an opening count as lying in it, and faces enclosing nothing that are
+  /// no thicker than this are slivers, dropped without a word.
+  double tolerance = 0;
+};
+
+/// What the interpretation found and changed.
+struct SolidReport {
+  std::size_t closedComponents = 0;  // closed, oriented, edge-manifold components kept as they are
+  std::size_t soupTriangles = 0;     // triangles of the other components
+  std::size_t soupPieces = 0;        // edge-connected pieces among those
+  std::size_t meetingPairs = 0;      // pairs of soup triangles meeting beyond shared vertices and edges
+  std::size_t refinedTriangles = 0;  // soup triangles split along such meetings
+  std::size_t enclosedRegions = 0;   // connected regions of space the soup encloses
+  std::size_t solids = 0;            // closed components that bound the soup's solid
+  std::size_t boundaryTriangles = 0;
+  std::size_t capTriangles = 0;       // triangles added to close planar openings (left-out faces)
+  std::size_t internalTriangles = 0;  // pieces of triangles inside the solid, dropped
+  std::size_t openTriangles = 0;      // pieces of triangles that enclose nothing
+  std::size_t openSourceTriangles = 0;  // repaired soup triangles they come from
+  Box3 openBounds;                      // where they are
+
+  /// Lines for a user: what was kept, merged and dropped; empty when the mesh was
+  /// made of closed components only.
+  std::vector<std::string> describe() const;
+};
+
+/// The surface of the solid a repaired soup (repairSoup) shows (docs/design.md,
+/// "Real-world meshes"). A closed, consistently oriented, edge-manifold connected
+/// component (through shared edges) whose surface does not meet itself means what it
+/// always means: the solid it bounds; voids it encloses with other components stay
+/// free. Every other triangle belongs to
+/// the soup, whose solid is everything the soup's triangles enclose: the complement of
+/// the unbounded region of space minus those triangles, found exactly (the
+/// triangles are refined along their intersections, then the regions they bound are
+/// told apart by walking around edges and by rays). A planar opening, where a face
+/// was left out (the bottom of a wall, of a car), is closed by a cap of the plane's
+/// region the opening's edges bound, where the cap separates an enclosed region from
+/// the outside. The result holds the closed
+/// components with their vertices as given, then the boundary of the soup's solid,
+/// facing out, as closed edge-manifold components with vertices of their own
+/// (components touching along an edge or at a vertex stay apart). No component of the
+/// result meets itself (checked exactly): build a Mesh from it with
+/// VertexWelding::asIndexed and SelfIntersectionCheck::alreadyDone. New vertices (where triangles cross) are rounded to
+/// doubles. Triangles that enclose nothing (an open sheet, a zero-thickness wall, a
+/// crack) are an InputError naming `sourceName`, how many and where, unless
+/// settings.ignoreOpen, which drops them and appends the same facts to `warnings`.
+TriangleSoup interpretSolid(const TriangleSoup& repaired, const std::string& sourceName,
+                            const SolidSettings& settings = {}, SolidReport* report = nullptr,
+                            std::vector<std::string>* warnings = nullptr);
+
+}  // namespace freespace

@@ -1,0 +1,62 @@
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "freespace/geometry/mesh.h"
+
+namespace freespace {
+
+/// How far apart two points may be and still be taken for one (docs/design.md,
+/// "Real-world meshes").
+struct RepairSettings {
+  /// The tolerance as a fraction of the diagonal of the soup's bounding box, unless
+  /// `absoluteTolerance` is set.
+  double relativeTolerance = 1e-6;
+  /// A tolerance in the model's units; 0 welds only identical points and snaps only
+  /// vertices lying exactly on an edge.
+  std::optional<double> absoluteTolerance;
+};
+
+/// What a repair changed, in counts.
+struct RepairReport {
+  double tolerance = 0;          // as used, in the model's units
+  bool toleranceIsRelative = true;
+  double relativeTolerance = 0;  // the fraction of the diagonal, when relative
+  std::size_t inputVertices = 0;
+  std::size_t inputTriangles = 0;
+  std::size_t pointsWelded = 0;      // distinct positions merged into a nearby one
+  double largestWeldDistance = 0;    // how far a welded point moved at most
+  std::size_t verticesSnapped = 0;   // (vertex, edge) pairs: a vertex inserted into an edge it lies on
+  std::size_t trianglesSplit = 0;    // triangles split at such vertices
+  std::size_t zeroAreaDropped = 0;   // no higher than the tolerance
+  std::size_t duplicatesDropped = 0;          // same three vertices, same orientation
+  std::size_t reversedDuplicatesDropped = 0;  // same three vertices, opposite orientation (double-sided)
+  std::size_t outputVertices = 0;
+  std::size_t outputTriangles = 0;
+
+  /// Whether any point moved or any triangle was dropped or split.
+  bool changedAnything() const;
+  /// One line per kind of change, then the tolerance ("tolerance 1.4e-4 (1e-6 of
+  /// the bounding box diagonal)").
+  std::vector<std::string> describe() const;
+};
+
+/// Repairs a soup before it is interpreted as a solid (docs/design.md, "Real-world
+/// meshes"): welds points closer than the tolerance (each cluster of points chained
+/// by distances within it goes to its point that comes first in the soup), inserts
+/// vertices into the edges they lie on within the tolerance where an edge is used by
+/// an odd number of triangles (T-junctions: the triangles along the edge are split),
+/// and drops triangles of zero area (exactly, or no higher than the tolerance: a
+/// sliver) and all but the first of triangles on the same three vertices, in either
+/// orientation. The result
+/// has distinct vertices, each used by a triangle, in the order of their first use;
+/// triangles keep their order. Throws InputError naming `sourceName` for a
+/// non-finite coordinate, an index out of range or no triangles, and
+/// std::invalid_argument for a negative or non-finite tolerance.
+TriangleSoup repairSoup(const TriangleSoup& soup, const std::string& sourceName, const RepairSettings& settings,
+                        RepairReport* report = nullptr);
+
+}  // namespace freespace

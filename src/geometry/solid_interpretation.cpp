@@ -1,0 +1,177 @@
+#include "freespace/geometry/solid_interpretation.h"
+
+#include <algorithm>
+#include <map>
+
+#include "disjoint_sets.h"
+#include "freespace/input_error.h"
+#include "soup_checks.h"
+#include "soup_enclosure.h"
+#include "surface_self_intersection.h"
+
+namespace freespace {
+
+namespace {
+
+using Index = std::uint32_t;
+
+// One side of an edge: the triangle and the direction it runs along the edge.
+struct EdgeUse {
+  Index low;
+  Index high;
+  Index triangle;
+  bool lowToHigh;
+};
+
+std::vector<EdgeUse> sortedEdgeUses(const std::vector<TriangleIndices>& triangles) {
+  std::vector<EdgeUse> uses;
+  uses.reserve(3 * triangles.size());
+  for (Index t = 0; t < triangles.size(); ++t) {
+    for (int corner = 0; corner < 3; ++corner) {
+      const Index from = triangles[t][corner], to = triangles[t][(corner + 1) % 3];
+      uses.push_back({std::min(from, to), std::max(from, to), t, from < to});
+    }
+  }
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) {
+    return a.low != b.low ? a.low < b.low : (a.high != b.high ? a.high < b.high : a.triangle < b.triangle);
+  });
+  return uses;
+}
+
+// Components through shared edges, and which of them are closed, consistently
+// oriented and edge-manifold: every edge used twice, once in each direction.
+struct ComponentKinds {
+  std::vector<Index> componentOf;  // of each triangle: its component's first triangle
+  std::vector<bool> closed;        // indexed by that first triangle
+};
+
+ComponentKinds classifyComponents(const std::vector<TriangleIndices>& triangles) {
+  const std::vector<EdgeUse> uses = sortedEdgeUses(triangles);
+  detail::DisjointSets components(triangles.size());
+  std::vector<Index> badTriangles;
+  std::size_t first = 0;
+  while (first < uses.size()) {
+    std::size_t end = first + 1;
+    while (end < uses.size() && uses[end].low == uses[first].low && uses[end].high == uses[first].high) ++end;
+    for (std::size_t i = first + 1; i < end; ++i) components.unite(uses[first].triangle, uses[i].triangle);
+    const bool manifold = end - first == 2 && uses[first].lowToHigh != uses[first + 1].lowToHigh;
+    if (!manifold) badTriangles.push_back(uses[first].triangle);
+    first = end;
+  }
+  ComponentKinds kinds;
+  kinds.componentOf.resize(triangles.size());
+  for (Index t = 0; t < triangles.size(); ++t) kinds.componentOf[t] = components.find(t);
+  kinds.closed.assign(triangles.size(), true);
+  for (Index t : badTriangles) kinds.closed[kinds.componentOf[t]] = false;
+  return kinds;
+}
+
+std::size_t countDistinct(std::vector<Index> values) {
+  std::sort(values.begin(), values.end());
+  return static_cast<std::size_t>(std::unique(values.begin(), values.end()) - values.begin());
+}
+
+std::string openTrianglesText(const detail::EnclosedSolid& solid) {
+  const std::size_t count = solid.openSourceTriangles.size();
+  return std::to_string(count) + (count == 1 ? " triangle encloses" : " triangles enclose") +
+         " nothing (an open sheet, a zero-thickness wall or a crack wider than the tolerance): no volume lies "
+         "behind " + (count == 1 ? "it" : "them") + ", between " + detail::formatPoint(solid.openBounds.min()) +
+         " and " + detail::formatPoint(solid.openBounds.max());
+}
+
+// The boundary's components meet themselves nowhere in exact arithmetic; rounding the
+// points where triangles cross to doubles could make one touch itself, in principle.
+void requireSimpleBoundary(const detail::EnclosedSolid& solid, const std::string& sourceName) {
+  const auto pair = detail::firstSelfIntersection(solid.boundary.vertices, solid.boundary.triangles,
+                                                  solid.boundaryComponent);
+  if (!pair) return;
+  const Point3& at = solid.boundary.vertices[solid.boundary.triangles[pair->first][0]];
+  throw InputError(sourceName, "the solid the triangles enclose has parts closer than double precision can keep "
+                               "apart (near " + detail::formatPoint(at) + ")");
+}
+
+// Appends triangles with the vertices they use, renumbered from `soup`'s end in the
+// order of their indices (a mesh whose vertices are all used keeps its numbering).
+void appendTriangles(const std::vector<Point3>& vertices, const std::vector<TriangleIndices>& triangles,
+                     TriangleSoup& soup) {
+  TriangleSoup part{vertices, triangles};
+  detail::dropUnusedVertices(part);
+  const auto offset = static_cast<Index>(soup.vertices.size());
+  soup.vertices.insert(soup.vertices.end(), part.vertices.begin(), part.vertices.end());
+  for (TriangleIndices triangle : part.triangles) {
+    for (Index& corner : triangle) corner += offset;
+    soup.triangles.push_back(triangle);
+  }
+}
+
+}  // namespace
+
+std::vector<std::string> SolidReport::describe() const {
+  using detail::countOf;
+  std::vector<std::string> lines;
+  if (soupTriangles == 0) return lines;
+  lines.push_back(countOf(soupTriangles, "triangle") + " in " + countOf(soupPieces, "piece") +
+                  " not forming closed oriented surfaces, taken as the solid they enclose: " +
+                  countOf(enclosedRegions, "enclosed region") + " bounded by " + countOf(boundaryTriangles, "triangle") +
+                  " in " + countOf(solids, "solid"));
+  if (refinedTriangles > 0) {
+    lines.push_back(countOf(refinedTriangles, "triangle") + " split where " + countOf(meetingPairs, "pair") +
+                    " of them cross or overlap");
+  }
+  if (capTriangles > 0) {
+    lines.push_back(countOf(capTriangles, "triangle") + " added to close planar openings (faces left out)");
+  }
+  if (internalTriangles > 0) {
+    lines.push_back(countOf(internalTriangles, "piece") + " of triangles inside the solid dropped (internal walls)");
+  }
+  if (openTriangles > 0) lines.push_back(countOf(openSourceTriangles, "triangle") + " that enclose nothing dropped");
+  if (closedComponents > 0) lines.push_back(countOf(closedComponents, "closed component") + " kept as they are");
+  return lines;
+}
+
+TriangleSoup interpretSolid(const TriangleSoup& repaired, const std::string& sourceName, const SolidSettings& settings,
+                            SolidReport* report, std::vector<std::string>* warnings) {
+  ComponentKinds kinds = classifyComponents(repaired.triangles);
+  for (Index component : detail::selfIntersectingComponents(repaired.vertices, repaired.triangles, kinds.componentOf)) {
+    kinds.closed[component] = false;  // a closed surface that crosses itself: the solid it encloses
+  }
+  std::vector<TriangleIndices> closed, soup;
+  std::vector<Index> closedComponents, soupPieces;
+  for (Index t = 0; t < repaired.triangles.size(); ++t) {
+    const Index component = kinds.componentOf[t];
+    (kinds.closed[component] ? closed : soup).push_back(repaired.triangles[t]);
+    (kinds.closed[component] ? closedComponents : soupPieces).push_back(component);
+  }
+  SolidReport counts;
+  counts.closedComponents = countDistinct(closedComponents);
+  counts.soupTriangles = soup.size();
+  counts.soupPieces = countDistinct(soupPieces);
+
+  TriangleSoup result;
+  appendTriangles(repaired.vertices, closed, result);
+  if (!soup.empty()) {
+    const detail::EnclosedSolid solid = detail::enclosedSolid(repaired.vertices, soup, settings.tolerance);
+    counts.capTriangles = solid.capFaces;
+    counts.meetingPairs = solid.meetingPairs;
+    counts.refinedTriangles = solid.refinedTriangles;
+    counts.enclosedRegions = solid.boundedCells;
+    counts.solids = solid.components;
+    counts.boundaryTriangles = solid.boundary.triangles.size();
+    counts.internalTriangles = solid.internalFaces;
+    counts.openTriangles = solid.openFaces;
+    counts.openSourceTriangles = solid.openSourceTriangles.size();
+    counts.openBounds = solid.openBounds;
+    if (solid.openFaces > 0) {
+      if (!settings.ignoreOpen) {
+        throw InputError(sourceName, openTrianglesText(solid) + "; --ignore-open drops them with a warning");
+      }
+      if (warnings) warnings->push_back(sourceName + ": " + openTrianglesText(solid) + ": dropped (--ignore-open)");
+    }
+    requireSimpleBoundary(solid, sourceName);
+    appendTriangles(solid.boundary.vertices, solid.boundary.triangles, result);
+  }
+  if (report) *report = counts;
+  return result;
+}
+
+}  // namespace freespace

@@ -1,0 +1,473 @@
+// The cells of space a soup complex bounds, and the solid it encloses
+// (soup_complex.h; docs/design.md, "Real-world meshes").
+//
+// Sides. Face f = (a, b, c) has a front side, the one its normal (b - a) x (c - a)
+// points to, and a back side: side 2f and 2f + 1. Around an edge from its lower vertex
+// u to its higher vertex v, order the faces by the angle of their third vertex w about
+// the axis u -> v (right-handed). A face that runs along the edge from u to v has its
+// normal pointing towards rising angles, so its front side faces the wedge after it;
+// one that runs from v to u has its back side there. The wedge between consecutive
+// faces is one region of space: the side of the first facing forward and the side of
+// the second facing backward belong to one cell. Sides joined this way around every
+// edge form shells; one cell may have several shells (one inside another), which a
+// ray joins: from a point of a face, off one side, to the first face it meets (see
+// Cells for which cells are bounded).
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Interval_nt.h>
+
+#include "disjoint_sets.h"
+#include "soup_complex.h"
+#include "surface_self_intersection.h"
+
+namespace freespace::detail {
+
+namespace {
+
+using Index = std::uint32_t;
+using ExactTriangle = ExactKernel::Triangle_3;
+using ExactVector = ExactKernel::Vector_3;
+using ExactRay = ExactKernel::Ray_3;
+
+Index frontSide(Index face) { return 2 * face; }
+Index backSide(Index face) { return 2 * face + 1; }
+Index faceOf(Index side) { return side / 2; }
+bool isFront(Index side) { return side % 2 == 0; }
+
+// A face at an edge: which face, and whether it runs along the edge from its lower
+// vertex to its higher one.
+struct EdgeFace {
+  Index face;
+  bool forward;
+};
+
+Index risingSide(const EdgeFace& entry) { return entry.forward ? frontSide(entry.face) : backSide(entry.face); }
+Index fallingSide(const EdgeFace& entry) { return entry.forward ? backSide(entry.face) : frontSide(entry.face); }
+
+Index thirdVertex(const TriangleIndices& face, Index u, Index v) {
+  return *std::find_if(face.begin(), face.end(), [&](Index corner) { return corner != u && corner != v; });
+}
+
+// The faces around each edge, in the order of their angle about the edge.
+class EdgeFans {
+ public:
+  explicit EdgeFans(const SoupComplex& complex) : complex_(complex) {
+    std::map<std::pair<Index, Index>, std::vector<EdgeFace>> fans;
+    for (Index f = 0; f < complex.faces.size(); ++f) {
+      const TriangleIndices& face = complex.faces[f];
+      for (int corner = 0; corner < 3; ++corner) {
+        const Index from = face[corner], to = face[(corner + 1) % 3];
+        fans[{std::min(from, to), std::max(from, to)}].push_back({f, from < to});
+      }
+    }
+    for (auto& [edge, fan] : fans) {
+      if (fan.size() > 2) sortByAngle(edge.first, edge.second, fan);
+      fans_.push_back(std::move(fan));
+    }
+  }
+
+  const std::vector<std::vector<EdgeFace>>& fans() const { return fans_; }
+
+ private:
+  // Angles measured from the first face's half-plane: (0, pi) where the first face's
+  // normal (as if it ran from u to v) points, (pi, 2 pi) on the other side, and pi in
+  // its plane (an angle of 0 would mean two faces overlapping, which a complex has not).
+  void sortByAngle(Index u, Index v, std::vector<EdgeFace>& fan) const {
+    const std::vector<ExactPoint>& p = complex_.points;
+    const auto apex = [&](const EdgeFace& entry) { return p[thirdVertex(complex_.faces[entry.face], u, v)]; };
+    const ExactPoint reference = apex(fan.front());
+    const auto half = [&](const EdgeFace& entry) {
+      if (entry.face == fan.front().face) return 0;
+      const CGAL::Orientation side = CGAL::orientation(p[u], p[v], reference, apex(entry));
+      return side == CGAL::POSITIVE ? 1 : (side == CGAL::ZERO ? 2 : 3);
+    };
+    std::sort(fan.begin() + 1, fan.end(), [&](const EdgeFace& a, const EdgeFace& b) {
+      const int halfA = half(a), halfB = half(b);
+      if (halfA != halfB) return halfA < halfB;
+      return CGAL::orientation(p[u], p[v], apex(a), apex(b)) == CGAL::POSITIVE;
+    });
+  }
+
+  const SoupComplex& complex_;
+  std::vector<std::vector<EdgeFace>> fans_;
+};
+
+// Where a ray first meets the complex: the side of the face it meets, or nothing.
+struct RayHit {
+  bool degenerate = false;  // through an edge or a vertex, or along a face: try another ray
+  std::optional<Index> side;
+};
+
+class RayCaster {
+ public:
+  explicit RayCaster(const SoupComplex& complex) : complex_(complex) {
+    triangles_.reserve(complex.faces.size());
+    for (const TriangleIndices& face : complex.faces) {
+      triangles_.emplace_back(complex.points[face[0]], complex.points[face[1]], complex.points[face[2]]);
+    }
+    tree_.insert(triangles_.begin(), triangles_.end());
+    tree_.build();
+  }
+
+  // The side of the first face that a ray from the centre of `side`'s face, leaving
+  // towards that side, meets; nothing if it escapes.
+  std::optional<Index> firstHit(Index side) const {
+    for (int attempt = 0; attempt < kAttempts; ++attempt) {
+      const RayHit hit = cast(side, attempt);
+      if (!hit.degenerate) return hit.side;
+    }
+    throw std::logic_error("soup cells: every ray from a face met an edge or a vertex");
+  }
+
+ private:
+  using Primitive = CGAL::AABB_triangle_primitive<ExactKernel, std::vector<ExactTriangle>::const_iterator>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<ExactKernel, Primitive>>;
+  static constexpr int kAttempts = 32;
+
+  // The face's normal on the side's side, tilted after the first attempt by a
+  // smaller amount each time (so the ray stays on that side).
+  ExactVector direction(const ExactTriangle& face, bool front, int attempt) const {
+    ExactVector normal = CGAL::normal(face[0], face[1], face[2]);
+    if (!front) normal = -normal;
+    if (attempt == 0) return normal;
+    const ExactVector along = face[1] - face[0], across = face[2] - face[0];
+    const double scale = 1.0 / (4 * (attempt + 1));
+    return normal + along * (scale * ((attempt % 3) - 1)) + across * (scale * ((attempt % 5) - 2) / 2);
+  }
+
+  RayHit cast(Index side, int attempt) const {
+    const Index face = faceOf(side);
+    const ExactTriangle& triangle = triangles_[face];
+    const ExactPoint origin = CGAL::centroid(triangle[0], triangle[1], triangle[2]);
+    const ExactVector towards = direction(triangle, isFront(side), attempt);
+    const ExactRay ray(origin, towards);
+    std::vector<typename Tree::template Intersection_and_primitive_id<ExactRay>::Type> hits;
+    tree_.all_intersections(ray, std::back_inserter(hits));
+    RayHit result;
+    std::optional<ExactKernel::FT> nearest;
+    for (const auto& [where, primitive] : hits) {
+      const Index other = static_cast<Index>(primitive - triangles_.begin());
+      if (other == face) continue;
+      const ExactPoint* point = boost::get<ExactPoint>(&where);
+      if (!point || onBoundary(triangles_[other], *point)) return {true, std::nullopt};
+      const ExactKernel::FT distance = CGAL::squared_distance(origin, *point);
+      if (nearest && distance == *nearest) return {true, std::nullopt};
+      if (nearest && distance > *nearest) continue;
+      nearest = distance;
+      const ExactVector normal = CGAL::normal(triangles_[other][0], triangles_[other][1], triangles_[other][2]);
+      result.side = CGAL::scalar_product(normal, towards) < 0 ? frontSide(other) : backSide(other);
+    }
+    return result;
+  }
+
+  static bool onBoundary(const ExactTriangle& triangle, const ExactPoint& point) {
+    for (int i = 0; i < 3; ++i) {
+      if (CGAL::collinear(triangle[i], triangle[(i + 1) % 3], point)) return true;
+    }
+    return false;
+  }
+
+  const SoupComplex& complex_;
+  std::vector<ExactTriangle> triangles_;
+  Tree tree_;
+};
+
+// The sign of the volume a shell bounds, its faces turned towards the shell's cell:
+// negative when the cell lies inside the shell (the shell is the cell's outer
+// boundary), positive when outside (the shell bounds a hole of the cell), zero for a
+// shell that encloses nothing (both sides of a sheet). Summed in intervals, exactly
+// when those cannot tell.
+class ShellVolumes {
+ public:
+  explicit ShellVolumes(const SoupComplex& complex) : complex_(complex) {}
+
+  CGAL::Sign sign(const std::vector<Index>& sides) const {
+    if (const std::optional<CGAL::Sign> sign = intervalSign(sides)) return *sign;
+    return exactSign(sides);
+  }
+
+ private:
+  // The face's corners in the order that turns its normal towards the side.
+  std::array<Index, 3> corners(Index side) const {
+    const TriangleIndices& face = complex_.faces[faceOf(side)];
+    return isFront(side) ? std::array<Index, 3>{face[0], face[1], face[2]}
+                         : std::array<Index, 3>{face[0], face[2], face[1]};
+  }
+
+  std::optional<CGAL::Sign> intervalSign(const std::vector<Index>& sides) const {
+    using Interval = CGAL::Interval_nt<false>;
+    const CGAL::Protect_FPU_rounding<true> rounding;
+    const ExactPoint& origin = complex_.points[corners(sides.front())[0]];
+    const auto relative = [&](Index point, int axis) {
+      return Interval(CGAL::to_interval(complex_.points[point][axis])) - Interval(CGAL::to_interval(origin[axis]));
+    };
+    Interval total = 0;
+    for (Index side : sides) {
+      const std::array<Index, 3> c = corners(side);
+      Interval m[3][3];
+      for (int row = 0; row < 3; ++row) {
+        for (int axis = 0; axis < 3; ++axis) m[row][axis] = relative(c[row], axis);
+      }
+      total += m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    }
+    if (total.inf() > 0) return CGAL::POSITIVE;
+    if (total.sup() < 0) return CGAL::NEGATIVE;
+    return std::nullopt;
+  }
+
+  CGAL::Sign exactSign(const std::vector<Index>& sides) const {
+    using Exact = std::decay_t<decltype(CGAL::exact(ExactKernel::FT()))>;
+    const ExactPoint& origin = complex_.points[corners(sides.front())[0]];
+    Exact total = 0;
+    for (Index side : sides) {
+      const std::array<Index, 3> c = corners(side);
+      Exact m[3][3];
+      for (int row = 0; row < 3; ++row) {
+        for (int axis = 0; axis < 3; ++axis) {
+          m[row][axis] = CGAL::exact(complex_.points[c[row]][axis]) - CGAL::exact(origin[axis]);
+        }
+      }
+      total += m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+               m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    }
+    return CGAL::sign(total);
+  }
+
+  const SoupComplex& complex_;
+};
+
+// Cells: sides joined around edges into shells, shells into cells by rays. A cell is
+// bounded exactly when one of its shells is its outer boundary (negative volume): the
+// unbounded cell has none. So a shell needs a ray only when it bounds a hole of its
+// cell (or nothing), to find the cell's other shells; a ray that meets its own shell
+// again is tried from other faces of the shell. A hole's shell whose rays find no
+// other shell stays a cell of its own, counted unbounded: that can only happen inside
+// the solid, where such a shell then bounds a closed piece that overlaps the solid.
+class Cells {
+ public:
+  Cells(const SoupComplex& complex, const EdgeFans& fans) : sides_(2 * complex.faces.size()) {
+    for (const std::vector<EdgeFace>& fan : fans.fans()) {
+      for (std::size_t i = 0; i < fan.size(); ++i) sides_.unite(risingSide(fan[i]), fallingSide(fan[(i + 1) % fan.size()]));
+    }
+    std::map<Index, std::vector<Index>> shells;  // first side -> its sides
+    for (Index side = 0; side < 2 * complex.faces.size(); ++side) shells[sides_.find(side)].push_back(side);
+    const ShellVolumes volumes(complex);
+    const RayCaster rays(complex);
+    std::vector<Index> outerShells;
+    for (const auto& [first, members] : shells) {
+      if (volumes.sign(members) == CGAL::NEGATIVE) {
+        outerShells.push_back(first);
+      } else {
+        linkByRay(first, members, rays);
+      }
+    }
+    bounded_.assign(2 * complex.faces.size(), false);
+    for (Index shell : outerShells) bounded_[sides_.find(shell)] = true;
+  }
+
+  bool isOutside(Index side) { return !bounded_[sides_.find(side)]; }
+  Index cellOf(Index side) { return sides_.find(side); }
+
+  std::size_t boundedCount() { return static_cast<std::size_t>(std::count(bounded_.begin(), bounded_.end(), true)); }
+
+ private:
+  static constexpr std::size_t kFacesTried = 8;
+
+  void linkByRay(Index shell, const std::vector<Index>& members, const RayCaster& rays) {
+    const std::size_t step = std::max<std::size_t>(1, members.size() / kFacesTried);
+    for (std::size_t i = 0; i < members.size(); i += step) {
+      const std::optional<Index> hit = rays.firstHit(members[i]);
+      if (!hit) return;  // escaped: an unbounded cell, which needs no link
+      if (sides_.find(*hit) != shell) {
+        sides_.unite(shell, *hit);
+        return;
+      }
+    }
+  }
+
+  DisjointSets sides_;
+  std::vector<bool> bounded_;
+};
+
+double roundedCoordinate(const ExactKernel::FT& value) { return CGAL::to_double(CGAL::exact(value)); }
+
+// Adds a boundary face, turned so that its front faces the unbounded cell, with the
+// vertex copies of its component.
+void addBoundaryFace(const SoupComplex& complex, Index face, bool flip, Index component,
+                     std::map<std::pair<Index, Index>, Index>& copies, EnclosedSolid& solid) {
+  TriangleIndices corners = complex.faces[face];
+  if (flip) std::swap(corners[1], corners[2]);
+  for (Index& corner : corners) {
+    const auto [found, inserted] = copies.emplace(std::make_pair(component, corner), solid.boundary.vertices.size());
+    if (inserted) {
+      const ExactPoint& point = complex.points[corner];
+      solid.boundary.vertices.emplace_back(roundedCoordinate(point.x()), roundedCoordinate(point.y()),
+                                           roundedCoordinate(point.z()));
+    }
+    corner = found->second;
+  }
+  solid.boundary.triangles.push_back(corners);
+  solid.boundaryComponent.push_back(component);
+}
+
+void recordOpenFace(const SoupComplex& complex, Index face, EnclosedSolid& solid) {
+  ++solid.openFaces;
+  solid.openSourceTriangles.push_back(complex.sourceTriangle[face]);
+  for (Index corner : complex.faces[face]) {
+    const ExactPoint& point = complex.points[corner];
+    solid.openBounds.extend(Point3(CGAL::to_double(point.x()), CGAL::to_double(point.y()), CGAL::to_double(point.z())));
+  }
+}
+
+// The complex without the faces of withdrawn caps (soup triangles from firstCap on).
+SoupComplex withoutWithdrawnCaps(const SoupComplex& complex, Index firstCap, const std::vector<bool>& withdrawn) {
+  SoupComplex kept;
+  kept.points = complex.points;
+  for (Index face = 0; face < complex.faces.size(); ++face) {
+    const Index source = complex.sourceTriangle[face];
+    if (source >= firstCap && withdrawn[source - firstCap]) continue;
+    kept.faces.push_back(complex.faces[face]);
+    kept.sourceTriangle.push_back(source);
+  }
+  return kept;
+}
+
+double approximateArea(const SoupComplex& complex, Index face) {
+  const TriangleIndices& corners = complex.faces[face];
+  return std::sqrt(CGAL::to_double(CGAL::squared_area(complex.points[corners[0]], complex.points[corners[1]],
+                                                      complex.points[corners[2]])));
+}
+
+// Withdraws the caps of every enclosed region whose caps make up half its boundary or
+// more: a missing face of a convex piece is always less than the others together,
+// while a courtyard capped at its floor and its sky is mostly caps. Returns whether
+// it withdrew any.
+bool withdrawDominantCaps(const SoupComplex& complex, Cells& cells, Index firstCap, std::vector<bool>& withdrawn) {
+  struct Areas {
+    double caps = 0;
+    double total = 0;
+    std::vector<Index> capSources;
+  };
+  std::map<Index, Areas> areasOfCell;  // bounded cell -> its boundary's areas
+  for (Index face = 0; face < complex.faces.size(); ++face) {
+    const bool frontOutside = cells.isOutside(frontSide(face)), backOutside = cells.isOutside(backSide(face));
+    if (frontOutside == backOutside) continue;
+    Areas& areas = areasOfCell[cells.cellOf(frontOutside ? backSide(face) : frontSide(face))];
+    const double area = approximateArea(complex, face);
+    areas.total += area;
+    const Index source = complex.sourceTriangle[face];
+    if (source < firstCap) continue;
+    areas.caps += area;
+    areas.capSources.push_back(source - firstCap);
+  }
+  bool any = false;
+  for (const auto& [cell, areas] : areasOfCell) {
+    if (areas.capSources.empty() || areas.caps < areas.total / 2) continue;
+    for (Index cap : areas.capSources) withdrawn[cap] = true;
+    any = true;
+  }
+  return any;
+}
+
+// A face whose corners all lie within the tolerance of one line.
+bool isSliver(const SoupComplex& complex, Index face, double tolerance) {
+  Point3 corners[3];
+  for (int i = 0; i < 3; ++i) {
+    const ExactPoint& point = complex.points[complex.faces[face][i]];
+    corners[i] = Point3(CGAL::to_double(point.x()), CGAL::to_double(point.y()), CGAL::to_double(point.z()));
+  }
+  const double longest = std::max({(corners[1] - corners[0]).norm(), (corners[2] - corners[1]).norm(),
+                                   (corners[0] - corners[2]).norm()});
+  return (corners[1] - corners[0]).cross(corners[2] - corners[0]).norm() <= tolerance * longest;
+}
+
+// The faces of a complex whose cells are known, sorted into boundary, internal and
+// open ones; the boundary joined into components across the solid: around an edge,
+// each wedge of solid between two boundary faces (other faces left out) joins them.
+EnclosedSolid classifiedFaces(const SoupComplex& complex, const EdgeFans& fans, Cells& cells, Index firstCap,
+                              double tolerance) {
+  EnclosedSolid solid;
+  solid.boundedCells = cells.boundedCount();
+  const Index faceCount = static_cast<Index>(complex.faces.size());
+  const auto isBoundary = [&](Index face) { return cells.isOutside(frontSide(face)) != cells.isOutside(backSide(face)); };
+  DisjointSets pieces(faceCount);
+  for (const std::vector<EdgeFace>& fan : fans.fans()) {
+    std::vector<EdgeFace> boundary;
+    std::copy_if(fan.begin(), fan.end(), std::back_inserter(boundary), [&](const EdgeFace& entry) { return isBoundary(entry.face); });
+    for (std::size_t i = 0; i < boundary.size(); ++i) {
+      if (!cells.isOutside(risingSide(boundary[i]))) pieces.unite(boundary[i].face, boundary[(i + 1) % boundary.size()].face);
+    }
+  }
+
+  std::map<Index, Index> componentOfPiece;
+  std::map<std::pair<Index, Index>, Index> copies;  // (component, complex point) -> boundary vertex
+  for (Index face = 0; face < faceCount; ++face) {
+    const bool frontOutside = cells.isOutside(frontSide(face)), backOutside = cells.isOutside(backSide(face));
+    const bool cap = complex.sourceTriangle[face] >= firstCap;
+    if (frontOutside != backOutside) {
+      if (cap) ++solid.capFaces;
+      const auto [found, inserted] = componentOfPiece.emplace(pieces.find(face), componentOfPiece.size());
+      addBoundaryFace(complex, face, backOutside, found->second, copies, solid);
+    } else if (!cap && !frontOutside) {
+      ++solid.internalFaces;
+    } else if (!cap && !isSliver(complex, face, tolerance)) {
+      recordOpenFace(complex, face, solid);
+    }
+  }
+  solid.components = componentOfPiece.size();
+  std::sort(solid.openSourceTriangles.begin(), solid.openSourceTriangles.end());
+  solid.openSourceTriangles.erase(std::unique(solid.openSourceTriangles.begin(), solid.openSourceTriangles.end()),
+                                  solid.openSourceTriangles.end());
+  return solid;
+}
+
+}  // namespace
+
+EnclosedSolid enclosedSolid(const SoupComplex& complex, Index firstCap, double tolerance) {
+  const Index sources = complex.sourceTriangle.empty()
+                            ? 0
+                            : *std::max_element(complex.sourceTriangle.begin(), complex.sourceTriangle.end()) + 1;
+  std::vector<bool> withdrawn(std::max(sources, firstCap) - firstCap, false);
+  for (;;) {
+    const SoupComplex kept = withoutWithdrawnCaps(complex, firstCap, withdrawn);
+    const EdgeFans fans(kept);
+    Cells cells(kept, fans);
+    if (!withdrawDominantCaps(kept, cells, firstCap, withdrawn)) {
+      return classifiedFaces(kept, fans, cells, firstCap, tolerance);
+    }
+  }
+}
+
+EnclosedSolid enclosedSolid(const std::vector<Point3>& vertices, const std::vector<TriangleIndices>& triangles,
+                            double tolerance) {
+  const PlanarCaps caps = planarCaps(vertices, triangles, tolerance);
+  std::vector<ExactPoint> points;
+  points.reserve(vertices.size() + caps.newPoints.size());
+  for (const Point3& vertex : vertices) points.emplace_back(vertex.x(), vertex.y(), vertex.z());
+  points.insert(points.end(), caps.newPoints.begin(), caps.newPoints.end());
+  std::vector<TriangleIndices> all = triangles;
+  all.insert(all.end(), caps.triangles.begin(), caps.triangles.end());
+
+  const Index firstCap = static_cast<Index>(triangles.size());
+  std::vector<std::pair<Index, Index>> pairs = meetingPairs(vertices, triangles);
+  const std::size_t soupPairs = pairs.size();
+  const std::vector<std::pair<Index, Index>> withCaps = capMeetingPairs(points, all, firstCap);
+  pairs.insert(pairs.end(), withCaps.begin(), withCaps.end());
+
+  const SoupComplex complex = refineSoup(points, all, pairs);
+  EnclosedSolid solid = enclosedSolid(complex, firstCap, tolerance);
+  solid.meetingPairs = soupPairs;
+  solid.refinedTriangles = complex.refinedTriangles;
+  return solid;
+}
+
+}  // namespace freespace::detail

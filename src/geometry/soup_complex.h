@@ -1,0 +1,58 @@
+#pragma once
+
+// The arrangement of a triangle soup's triangles (docs/design.md, "Real-world
+// meshes"), in CGAL's filtered exact kernel: the project's own predicates decide signs
+// of determinants of input coordinates, but refining triangles along their
+// intersections needs new points (exact constructions), which CGAL provides.
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
+#include "soup_enclosure.h"
+
+namespace freespace::detail {
+
+using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using ExactPoint = ExactKernel::Point_3;
+
+/// Triangles that meet only in shared vertices and whole shared edges, covering the
+/// same point set as the soup they come from: each soup triangle that meets another
+/// beyond their shared features is split along the intersections (coplanar
+/// triangles that overlap are triangulated together, so their common parts become
+/// one face).
+struct SoupComplex {
+  std::vector<ExactPoint> points;  // the soup's vertices (same indices), then new points
+  std::vector<TriangleIndices> faces;
+  std::vector<std::uint32_t> sourceTriangle;  // the soup triangle each face lies in (one of them, if several)
+  std::size_t refinedTriangles = 0;           // soup triangles that were split
+};
+
+/// `pairs` lists every pair of the triangles (on `points`) that meet beyond their
+/// shared features; the other triangles become faces as they are.
+SoupComplex refineSoup(const std::vector<ExactPoint>& points, const std::vector<TriangleIndices>& triangles,
+                       const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs);
+
+/// Triangles that would close a soup's planar openings (see enclosedSolid), on the
+/// soup's vertices and new points where its edges cross in the plane.
+struct PlanarCaps {
+  std::vector<ExactPoint> newPoints;  // numbered after the soup's vertices
+  std::vector<TriangleIndices> triangles;
+};
+
+PlanarCaps planarCaps(const std::vector<Point3>& vertices, const std::vector<TriangleIndices>& triangles,
+                      double tolerance);
+
+/// The pairs (i, j), i < j, of `triangles` on `points` that meet beyond their shared
+/// vertices and edge, with i or j at least `firstCap`, decided exactly.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> capMeetingPairs(const std::vector<ExactPoint>& points,
+                                                                     const std::vector<TriangleIndices>& triangles,
+                                                                     std::uint32_t firstCap);
+
+/// The solid a complex encloses; faces of soup triangles from `firstCap` on are caps
+/// (see enclosedSolid in soup_enclosure.h).
+EnclosedSolid enclosedSolid(const SoupComplex& complex, std::uint32_t firstCap, double tolerance);
+
+}  // namespace freespace::detail

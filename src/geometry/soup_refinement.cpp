@@ -1,0 +1,232 @@
+// Refinement of a soup's triangles along their intersections (soup_complex.h).
+
+#include <map>
+#include <optional>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Projection_traits_xy_3.h>
+#include <CGAL/Projection_traits_xz_3.h>
+#include <CGAL/Projection_traits_yz_3.h>
+#include <CGAL/intersections.h>
+
+#include "disjoint_sets.h"
+#include "soup_complex.h"
+#include "triangle_box_tree.h"
+
+namespace freespace::detail {
+
+namespace {
+
+using Index = std::uint32_t;
+using ExactSegment = ExactKernel::Segment_3;
+using ExactTriangle = ExactKernel::Triangle_3;
+// A point, a segment, a triangle or a polygon (the last two: coplanar overlaps).
+using TriangleIntersection =
+    decltype(CGAL::intersection(std::declval<ExactTriangle>(), std::declval<ExactTriangle>()))::value_type;
+
+// What a cluster of coplanar triangles must be split along: segments and points where
+// other triangles meet them.
+struct Constraints {
+  std::vector<ExactSegment> segments;
+  std::vector<ExactPoint> points;
+};
+
+struct LessXyz {
+  bool operator()(const ExactPoint& a, const ExactPoint& b) const { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; }
+};
+
+// The points of a complex, each once: the triangles' points keep their indices.
+class PointIndex {
+ public:
+  explicit PointIndex(const std::vector<ExactPoint>& points) : points_(points) {}
+
+  // Only points of refined triangles are looked up, so the map holds just those.
+  void addSoupVertex(Index vertex) { index_.emplace(points_[vertex], vertex); }
+
+  Index indexOf(const ExactPoint& point) {
+    const auto [found, inserted] = index_.emplace(point, static_cast<Index>(points_.size()));
+    if (inserted) points_.push_back(point);
+    return found->second;
+  }
+
+  std::vector<ExactPoint> release() { return std::move(points_); }
+  const ExactPoint& operator[](Index index) const { return points_[index]; }
+
+ private:
+  std::vector<ExactPoint> points_;
+  std::map<ExactPoint, Index, LessXyz> index_;
+};
+
+ExactTriangle exactTriangle(const PointIndex& points, const TriangleIndices& triangle) {
+  return {points[triangle[0]], points[triangle[1]], points[triangle[2]]};
+}
+
+// A coplanar intersection with area: the two triangles are triangulated together.
+bool hasArea(const TriangleIntersection& intersection) {
+  return boost::get<ExactTriangle>(&intersection) != nullptr ||
+         boost::get<std::vector<ExactPoint>>(&intersection) != nullptr;
+}
+
+void addIntersection(const TriangleIntersection& intersection, Constraints& constraints) {
+  if (const auto* point = boost::get<ExactPoint>(&intersection)) constraints.points.push_back(*point);
+  if (const auto* segment = boost::get<ExactSegment>(&intersection)) constraints.segments.push_back(*segment);
+}
+
+// The axis to drop so that the plane's projection keeps its area: the normal's
+// largest component (nonzero for a triangle that has an area).
+int droppedAxis(const ExactTriangle& triangle) {
+  const auto normal = CGAL::normal(triangle[0], triangle[1], triangle[2]);
+  const double x = std::abs(CGAL::to_double(normal.x())), y = std::abs(CGAL::to_double(normal.y())),
+               z = std::abs(CGAL::to_double(normal.z()));
+  return x >= y && x >= z ? 0 : (y >= z ? 1 : 2);
+}
+
+// Triangulates the union of a cluster's coplanar triangles with its constraints, in a
+// projection given by `Traits`, and appends the faces inside the triangles.
+template <class Traits>
+void triangulateCluster(const std::vector<Index>& members, const std::vector<TriangleIndices>& triangles,
+                        const Constraints& constraints, PointIndex& points, SoupComplex& complex) {
+  using Triangulation = CGAL::Constrained_Delaunay_triangulation_2<Traits, CGAL::Default, CGAL::Exact_intersections_tag>;
+  Triangulation triangulation;
+  for (Index t : members) {
+    for (int corner = 0; corner < 3; ++corner) {
+      triangulation.insert_constraint(points[triangles[t][corner]], points[triangles[t][(corner + 1) % 3]]);
+    }
+  }
+  for (const ExactSegment& segment : constraints.segments) {
+    if (segment.is_degenerate()) {
+      triangulation.insert(segment.source());
+    } else {
+      triangulation.insert_constraint(segment.source(), segment.target());
+    }
+  }
+  for (const ExactPoint& point : constraints.points) triangulation.insert(point);
+
+  const auto orientation = Traits().orientation_2_object();
+  const auto inside = [&](Index t, const ExactPoint& point) {
+    const ExactPoint &a = points[triangles[t][0]], &b = points[triangles[t][1]], &c = points[triangles[t][2]];
+    const CGAL::Orientation turn = orientation(a, b, c);
+    return orientation(a, b, point) == turn && orientation(b, c, point) == turn && orientation(c, a, point) == turn;
+  };
+  for (auto face = triangulation.finite_faces_begin(); face != triangulation.finite_faces_end(); ++face) {
+    const ExactPoint centre = CGAL::centroid(face->vertex(0)->point(), face->vertex(1)->point(), face->vertex(2)->point());
+    const auto source = std::find_if(members.begin(), members.end(), [&](Index t) { return inside(t, centre); });
+    if (source == members.end()) continue;  // in the convex hull of the triangles, outside them
+    complex.faces.push_back({points.indexOf(face->vertex(0)->point()), points.indexOf(face->vertex(1)->point()),
+                             points.indexOf(face->vertex(2)->point())});
+    complex.sourceTriangle.push_back(*source);
+  }
+}
+
+void triangulateCluster(const std::vector<Index>& members, const std::vector<TriangleIndices>& triangles,
+                        const Constraints& constraints, PointIndex& points, SoupComplex& complex) {
+  switch (droppedAxis(exactTriangle(points, triangles[members.front()]))) {
+    case 0:
+      return triangulateCluster<CGAL::Projection_traits_yz_3<ExactKernel>>(members, triangles, constraints, points,
+                                                                            complex);
+    case 1:
+      return triangulateCluster<CGAL::Projection_traits_xz_3<ExactKernel>>(members, triangles, constraints, points,
+                                                                            complex);
+    default:
+      return triangulateCluster<CGAL::Projection_traits_xy_3<ExactKernel>>(members, triangles, constraints, points,
+                                                                            complex);
+  }
+}
+
+// Whether two triangles meet anywhere but in the vertices they share and the edge
+// between two shared vertices.
+bool meetBeyondSharedFeatures(const std::vector<ExactPoint>& points, const TriangleIndices& first,
+                              const TriangleIndices& second) {
+  std::vector<Index> shared;
+  for (Index vertex : first) {
+    if (std::find(second.begin(), second.end(), vertex) != second.end()) shared.push_back(vertex);
+  }
+  const ExactTriangle a(points[first[0]], points[first[1]], points[first[2]]);
+  const ExactTriangle b(points[second[0]], points[second[1]], points[second[2]]);
+  const auto intersection = CGAL::intersection(a, b);
+  if (!intersection) return false;
+  if (shared.size() == 1) {
+    const auto* point = boost::get<ExactPoint>(&*intersection);
+    return !point || *point != points[shared[0]];
+  }
+  if (shared.size() == 2) {
+    const auto* segment = boost::get<ExactSegment>(&*intersection);
+    return !segment || !((segment->source() == points[shared[0]] && segment->target() == points[shared[1]]) ||
+                         (segment->source() == points[shared[1]] && segment->target() == points[shared[0]]));
+  }
+  return true;
+}
+
+TreeBox exactTriangleBox(const std::vector<ExactPoint>& points, const TriangleIndices& triangle) {
+  const CGAL::Bbox_3 box = points[triangle[0]].bbox() + points[triangle[1]].bbox() + points[triangle[2]].bbox();
+  return {TreePoint(box.xmin(), box.ymin(), box.zmin()), TreePoint(box.xmax(), box.ymax(), box.zmax())};
+}
+
+}  // namespace
+
+std::vector<std::pair<Index, Index>> capMeetingPairs(const std::vector<ExactPoint>& points,
+                                                     const std::vector<TriangleIndices>& triangles, Index firstCap) {
+  std::vector<TreeEntry> entries;
+  for (Index t = 0; t < triangles.size(); ++t) entries.emplace_back(exactTriangleBox(points, triangles[t]), t);
+  const TriangleTree tree(entries.begin(), entries.end());
+  std::vector<std::pair<Index, Index>> pairs;
+  for (Index cap = firstCap; cap < triangles.size(); ++cap) {
+    std::vector<TreeEntry> near;
+    tree.query(bgi::intersects(entries[cap].first), std::back_inserter(near));
+    for (const TreeEntry& entry : near) {
+      const Index other = entry.second;
+      if (other == cap || (other >= firstCap && other < cap)) continue;  // each pair of caps once
+      if (meetBeyondSharedFeatures(points, triangles[cap], triangles[other])) {
+        pairs.emplace_back(std::min(cap, other), std::max(cap, other));
+      }
+    }
+  }
+  return pairs;
+}
+
+SoupComplex refineSoup(const std::vector<ExactPoint>& soupPoints, const std::vector<TriangleIndices>& triangles,
+                       const std::vector<std::pair<Index, Index>>& pairs) {
+  PointIndex points(soupPoints);
+  std::vector<bool> refined(triangles.size(), false);
+  for (const auto& [first, second] : pairs) refined[first] = refined[second] = true;
+  for (Index t = 0; t < triangles.size(); ++t) {
+    if (!refined[t]) continue;
+    for (Index vertex : triangles[t]) points.addSoupVertex(vertex);
+  }
+
+  // Intersections: coplanar overlaps join clusters, the rest constrain them.
+  DisjointSets clusters(triangles.size());
+  std::vector<std::pair<Index, TriangleIntersection>> pieces;  // (triangle, piece)
+  for (const auto& [first, second] : pairs) {
+    const auto intersection =
+        CGAL::intersection(exactTriangle(points, triangles[first]), exactTriangle(points, triangles[second]));
+    if (!intersection) continue;
+    if (hasArea(*intersection)) {
+      clusters.unite(first, second);
+      continue;
+    }
+    pieces.emplace_back(first, *intersection);
+    pieces.emplace_back(second, *intersection);
+  }
+  std::map<Index, std::vector<Index>> members;  // cluster -> its triangles
+  std::map<Index, Constraints> constraints;     // cluster -> what splits it
+  for (Index t = 0; t < triangles.size(); ++t) {
+    if (refined[t]) members[clusters.find(t)].push_back(t);
+  }
+  for (const auto& [triangle, piece] : pieces) addIntersection(piece, constraints[clusters.find(triangle)]);
+
+  SoupComplex complex;
+  for (Index t = 0; t < triangles.size(); ++t) {
+    if (refined[t]) continue;
+    complex.faces.push_back(triangles[t]);
+    complex.sourceTriangle.push_back(t);
+  }
+  for (const auto& [cluster, clusterMembers] : members) {
+    triangulateCluster(clusterMembers, triangles, constraints[cluster], points, complex);
+    complex.refinedTriangles += clusterMembers.size();
+  }
+  complex.points = points.release();
+  return complex;
+}
+
+}  // namespace freespace::detail
