@@ -12,6 +12,8 @@ namespace freespace::cli {
 
 namespace {
 
+const std::string kSceneFamilies = "tetra_floorplan_<rooms>, soup_maze_<thousands of triangles>";
+
 struct GenerateOptions {
   std::string out;
   std::vector<std::string> scenes;
@@ -31,17 +33,17 @@ void runGenerate(const GenerateOptions& options) {
   const std::vector<std::string> names = options.scenes.empty() ? sceneNames() : options.scenes;
   for (const std::string& name : names) {
     if (!isSceneName(name)) {
-      throw InputError("--scene", "unknown scene '" + name + "'; valid scenes: " + joined(sceneNames()) +
-                                      ", tetra_floorplan_<rooms>");
+      throw InputError("--scene",
+                       "unknown scene '" + name + "'; valid scenes: " + joined(sceneNames()) + ", " + kSceneFamilies);
     }
   }
   for (const std::string& name : names) {
     Scene scene = makeScene(name, options.seed);
     if (!options.nameSuffix.empty()) scene = renamedScene(std::move(scene), scene.name + options.nameSuffix);
     const std::string cfg = writeScene(scene, options.out, options.format, options.force);
-    std::cout << cfg << ": robot " << scene.robot.triangles().size() << " triangles, world "
-              << scene.world.triangles().size() << " triangles, " << (scene.expectSolvable ? "solvable" : "no path")
-              << "\n";
+    std::cout << cfg << ": robot " << writtenSoup(scene.robot, scene.robotSoup).triangles.size() << " triangles, world "
+              << writtenSoup(scene.world, scene.worldSoup).triangles.size() << " triangles, "
+              << (scene.expectSolvable ? "solvable" : "no path") << "\n";
   }
 }
 
@@ -53,7 +55,7 @@ void addGenerateCommand(CLI::App& app) {
       "generate", "Write test scenes: robot and world meshes and an OMPL.app problem (.cfg) for each");
   command->add_option("--out", options->out, "Folder to write into (created if needed)")->required();
   command->add_option("--scene", options->scenes,
-                      "Scenes to write (default: all): " + joined(sceneNames()) + ", tetra_floorplan_<rooms>");
+                      "Scenes to write (default: all): " + joined(sceneNames()) + ", " + kSceneFamilies);
   command->add_option("--format", options->format, "Mesh format")
       ->capture_default_str()
       ->check(CLI::IsMember({"obj", "dae", "stl", "ply", "off", "vtk"}));

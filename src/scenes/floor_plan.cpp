@@ -5,6 +5,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "floor_plan_walls.h"
 #include "freespace/scenes/scene_generator.h"
 #include "seeded_random.h"
 
@@ -108,41 +109,37 @@ Opening doorOpening(const WallSegment& wall, const FloorPlanLayout& layout, deta
   return {centre - layout.doorWidth / 2, centre + layout.doorWidth / 2};
 }
 
+double randomHeight(const std::vector<double>& heights, detail::SeededRandom& random) {
+  return heights[static_cast<std::size_t>(random.integer(0, static_cast<std::int64_t>(heights.size()) - 1))];
+}
+
 /// Every wall with its door cut out, one union extruded to one height.
-TriangleSoup wallsOfOneHeight(const std::vector<WallSegment>& walls, const FloorPlanLayout& layout,
-                              detail::SeededRandom& random) {
+TriangleSoup wallsOfOneHeight(const std::vector<detail::PlannedWall>& walls, const FloorPlanLayout& layout) {
   std::vector<Box2> rectangles;
-  for (const WallSegment& wall : walls) {
-    std::vector<Opening> openings;
-    if (wall.hasDoor) openings.push_back(doorOpening(wall, layout, random));
-    const std::vector<Box2> pieces = wallRectangles(wall.from, wall.to, layout.wallThickness, openings);
+  for (const detail::PlannedWall& wall : walls) {
+    const std::vector<Box2> pieces = wallRectangles(wall.from, wall.to, layout.wallThickness, wall.openings);
     rectangles.insert(rectangles.end(), pieces.begin(), pieces.end());
   }
   return extrudeRectangleUnion(rectangles, 0, layout.wallHeight);
 }
 
-/// Each wall at one of the heights, chosen at random, between square posts at the
-/// grid's nodes, each post as high as the highest wall it holds. Walls reach one
-/// grid step into the posts, so the solids overlap without sharing an edge.
-TriangleSoup wallsOfSeveralHeights(const std::vector<WallSegment>& walls, const FloorPlanLayout& layout,
-                                   detail::SeededRandom& random) {
+/// Each wall at its own height, between square posts at the grid's nodes, each
+/// post as high as the highest wall it holds. Walls reach one grid step into the
+/// posts, so the solids overlap without sharing an edge.
+TriangleSoup wallsOfSeveralHeights(const std::vector<detail::PlannedWall>& walls, const FloorPlanLayout& layout) {
   const double thickness = layout.wallThickness;
   std::map<std::pair<double, double>, double> posts;  // node -> height
   std::vector<TriangleSoup> parts;
-  for (const WallSegment& wall : walls) {
-    std::vector<Opening> openings;
-    if (wall.hasDoor) openings.push_back(doorOpening(wall, layout, random));
-    const double height = layout.wallHeights[static_cast<std::size_t>(
-        random.integer(0, static_cast<std::int64_t>(layout.wallHeights.size()) - 1))];
+  for (const detail::PlannedWall& wall : walls) {
     const Point2 direction = (wall.to - wall.from).normalized();
     // wallRectangles adds half the thickness past both ends.
     const double inset = thickness - kSceneGrid;
     const std::vector<Box2> pieces =
-        wallRectangles(wall.from + inset * direction, wall.to - inset * direction, thickness, openings);
-    parts.push_back(extrudeRectangleUnion(pieces, 0, height));
+        wallRectangles(wall.from + inset * direction, wall.to - inset * direction, thickness, wall.openings);
+    parts.push_back(extrudeRectangleUnion(pieces, 0, wall.height));
     for (const Point2& node : {wall.from, wall.to}) {
       double& post = posts[{node.x(), node.y()}];
-      post = std::max(post, height);
+      post = std::max(post, wall.height);
     }
   }
   for (const auto& [node, height] : posts) {
@@ -154,22 +151,38 @@ TriangleSoup wallsOfSeveralHeights(const std::vector<WallSegment>& walls, const 
 
 }  // namespace
 
-FloorPlan makeFloorPlan(const FloorPlanLayout& layout, std::uint64_t seed) {
+namespace detail {
+
+PlannedFloorPlan planFloorPlan(const FloorPlanLayout& layout, std::uint64_t seed) {
   if (layout.rooms == 0 || layout.columns == 0 ||
       !(layout.doorWidth > 0 && layout.doorWidth + layout.wallThickness < layout.cellSize)) {
     throw std::invalid_argument("floor plan: needs rooms, columns, and doors narrower than a room");
   }
-  detail::SeededRandom random(seed);
+  SeededRandom random(seed);
   const RoomGrid grid(layout);
   std::vector<WallSegment> walls = grid.walls();
   addSpanningTreeDoors(walls, layout.rooms, random);
   addExtraDoors(walls, layout.extraDoors, random);
 
-  FloorPlan plan;
-  plan.walls = layout.wallHeights.size() > 1 ? wallsOfSeveralHeights(walls, layout, random)
-                                             : wallsOfOneHeight(walls, layout, random);
+  PlannedFloorPlan plan;
+  for (const WallSegment& wall : walls) {
+    PlannedWall& planned = plan.walls.emplace_back();
+    planned.from = wall.from;
+    planned.to = wall.to;
+    if (wall.hasDoor) planned.openings.push_back(doorOpening(wall, layout, random));
+    planned.height = layout.wallHeights.size() > 1 ? randomHeight(layout.wallHeights, random) : layout.wallHeight;
+  }
   for (unsigned room = 0; room < layout.rooms; ++room) plan.roomCentres.push_back(grid.centre(static_cast<int>(room)));
   return plan;
+}
+
+}  // namespace detail
+
+FloorPlan makeFloorPlan(const FloorPlanLayout& layout, std::uint64_t seed) {
+  detail::PlannedFloorPlan plan = detail::planFloorPlan(layout, seed);
+  const TriangleSoup walls =
+      layout.wallHeights.size() > 1 ? wallsOfSeveralHeights(plan.walls, layout) : wallsOfOneHeight(plan.walls, layout);
+  return {walls, std::move(plan.roomCentres)};
 }
 
 }  // namespace freespace

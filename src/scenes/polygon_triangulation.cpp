@@ -188,6 +188,16 @@ double twiceSignedArea(const Polygon2& polygon) {
   return sum;
 }
 
+Polygon2 counterClockwise(Polygon2 polygon) {
+  if (twiceSignedArea(polygon) < 0) std::reverse(polygon.begin(), polygon.end());
+  return polygon;
+}
+
+Polygon2 clockwise(Polygon2 polygon) {
+  if (twiceSignedArea(polygon) > 0) std::reverse(polygon.begin(), polygon.end());
+  return polygon;
+}
+
 std::vector<TriangleIndices> triangulateRegion(const Polygon2& outer, const std::vector<Polygon2>& holes) {
   double expectedArea = twiceSignedArea(outer);
   if (outer.size() < 3 || expectedArea <= 0) {

@@ -1,8 +1,8 @@
 // Closed triangle surfaces from polygons: prisms, side profiles, boxes, unions of
 // rectangles.
 
-#include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 #include "freespace/scenes/scene_generator.h"
 #include "polygon_triangulation.h"
@@ -10,16 +10,6 @@
 
 namespace freespace {
 namespace {
-
-Polygon2 counterClockwise(Polygon2 polygon) {
-  if (detail::twiceSignedArea(polygon) < 0) std::reverse(polygon.begin(), polygon.end());
-  return polygon;
-}
-
-Polygon2 clockwise(Polygon2 polygon) {
-  if (detail::twiceSignedArea(polygon) > 0) std::reverse(polygon.begin(), polygon.end());
-  return polygon;
-}
 
 void checkPolygon(const Polygon2& polygon) {
   if (polygon.size() < 3 || detail::twiceSignedArea(polygon) == 0) {
@@ -32,10 +22,10 @@ void checkPolygon(const Polygon2& polygon) {
 TriangleSoup extrudeRegion(const PolygonWithHoles& region, double z0, double z1) {
   if (!(z0 < z1)) throw std::invalid_argument("extrusion: z0 must be below z1");
   checkPolygon(region.outer);
-  std::vector<Polygon2> boundaries{counterClockwise(region.outer)};
+  std::vector<Polygon2> boundaries{detail::counterClockwise(region.outer)};
   for (const Polygon2& hole : region.holes) {
     checkPolygon(hole);
-    boundaries.push_back(clockwise(hole));
+    boundaries.push_back(detail::clockwise(hole));
   }
 
   // Corner k of the concatenated boundaries becomes vertex 2k (bottom) and 2k + 1 (top).

@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "freespace/scenes/scene_generator.h"
+#include "freespace/scenes/soup_variants.h"
 
 namespace freespace {
 namespace {
@@ -94,6 +95,17 @@ Mesh makeOverhangRobot() {
   const TriangleSoup base = makeBox(Box3(Point3(-0.5, -0.5, 0), Point3(0.5, 0.5, 0.5)));
   const TriangleSoup plate = makeBox(Box3(Point3(-1, -0.5, 0.625), Point3(1, 1.5, 0.875)));
   return centredRobot(joinParts({base, plate}), "overhang robot");
+}
+
+SoupRobot makeGluedCarRobot(double height) {
+  const Polygon2 outline{{-0.75, -0.375}, {0, -0.375}, {0.75, -0.375}, {0.75, 0.375}, {0, 0.375}, {-0.75, 0.375}};
+  const TriangleSoup soup = doubleSided(gluedPrisms(outline, 0, height));
+  Point3 sum = Point3::Zero();
+  for (const Point3& v : soup.vertices) sum += v;
+  if (sum.x() != 0 || sum.y() != 0) {
+    throw std::logic_error("glued car robot: its triangulation is not symmetric, so its vertices are off centre");
+  }
+  return {soup, makeCheckedMesh(extrudePolygon(outline, 0, height), "glued car robot")};
 }
 
 }  // namespace freespace

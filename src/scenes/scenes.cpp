@@ -13,14 +13,19 @@
 #include "freespace/input_error.h"
 #include "freespace/io/mesh_writer.h"
 #include "freespace/scenes/scene_generator.h"
+#include "named_scenes.h"
 
 namespace freespace {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using detail::assembleScene;
+using detail::kPi;
+
 constexpr double kWallThickness = 0.25;
 constexpr unsigned kDefaultTetraRooms = 8;
+constexpr unsigned kDefaultSoupMazeRooms = 16;
 const std::string kTetraFloorplan = "tetra_floorplan";
+const std::string kSoupMaze = "soup_maze";
 
 /// The planning volume: the environment and the robot's reach around the start
 /// and the goal, with a margin, rounded outwards to quarter units.
@@ -39,6 +44,10 @@ Box2 planningVolume(const Mesh& robot, const Mesh& world, const Pose2& start, co
               ((volume.max().array() + margin) / step).ceil() * step);
 }
 
+}  // namespace
+
+namespace detail {
+
 Scene assembleScene(const std::string& name, Mesh robot, const TriangleSoup& world, const Pose2& start,
                     const Pose2& goal, bool solvable, const std::string& description) {
   Scene scene;
@@ -55,6 +64,10 @@ Scene assembleScene(const std::string& name, Mesh robot, const TriangleSoup& wor
   problem.planners = {{"rrtconnect", {}}, {"prm", {}}};
   return renamedScene(std::move(scene), name);
 }
+
+}  // namespace detail
+
+namespace {
 
 TriangleSoup walls(const std::vector<Box2>& rectangles, double height) {
   return extrudeRectangleUnion(rectangles, 0, height);
@@ -223,13 +236,18 @@ const std::vector<std::pair<std::string, SceneBuilder>>& sceneBuilders() {
        [](std::uint64_t seed) {
          return renamedScene(makeTetraFloorplanScene(kDefaultTetraRooms, seed), kTetraFloorplan);
        }},
+      {kSoupMaze, [](std::uint64_t seed) { return detail::soupMazeScene(kSoupMaze, kDefaultSoupMazeRooms, seed); }},
+      {"soup_pieces", [](std::uint64_t) { return detail::soupPiecesScene(); }},
+      {"soup_open_sheet", [](std::uint64_t) { return detail::soupOpenSheetScene(); }},
+      {"soup_crack", [](std::uint64_t) { return detail::soupCrackScene(); }},
   };
   return builders;
 }
 
-/// The room count in "tetra_floorplan_<N>", or 0 when the name has another form.
-unsigned tetraFloorplanRooms(const std::string& name) {
-  const std::string prefix = kTetraFloorplan + "_";
+/// N in "<family>_<N>" (a scene of the family's size N), or 0 when the name has
+/// another form.
+unsigned familySize(const std::string& name, const std::string& family) {
+  const std::string prefix = family + "_";
   if (name.size() <= prefix.size() || name.compare(0, prefix.size(), prefix) != 0 || name.size() > prefix.size() + 6) {
     return 0;
   }
@@ -255,15 +273,19 @@ std::vector<std::string> sceneNames() {
 
 bool isSceneName(const std::string& name) {
   const std::vector<std::string> names = sceneNames();
-  return std::find(names.begin(), names.end(), name) != names.end() || tetraFloorplanRooms(name) > 0;
+  return std::find(names.begin(), names.end(), name) != names.end() || familySize(name, kTetraFloorplan) > 0 ||
+         familySize(name, kSoupMaze) > 0;
 }
 
 Scene makeScene(const std::string& name, std::uint64_t seed) {
   for (const auto& [known, builder] : sceneBuilders()) {
     if (known == name) return builder(seed);
   }
-  if (const unsigned rooms = tetraFloorplanRooms(name); rooms > 0) {
+  if (const unsigned rooms = familySize(name, kTetraFloorplan); rooms > 0) {
     return renamedScene(makeTetraFloorplanScene(rooms, seed), name);
+  }
+  if (const unsigned thousands = familySize(name, kSoupMaze); thousands > 0) {
+    return renamedScene(makeSoupMazeScene(thousands, seed), name);
   }
   throw std::invalid_argument("unknown scene '" + name + "'");
 }
@@ -314,8 +336,8 @@ std::string writeScene(const Scene& scene, const std::string& directory, const s
   std::error_code error;
   fs::create_directories(folder, error);
   if (error) throw InputError(directory, "cannot create directory: " + error.message());
-  writeMesh(scene.robot, robotPath, overwrite);
-  writeMesh(scene.world, worldPath, overwrite);
+  writeSoup(writtenSoup(scene.robot, scene.robotSoup), robotPath, overwrite);
+  writeSoup(writtenSoup(scene.world, scene.worldSoup), worldPath, overwrite);
   writeProblem(problem, cfgPath, overwrite);
   return cfgPath;
 }

@@ -123,7 +123,9 @@ TriangleSoup makeStarObstacles(const std::vector<Point2>& centres, double maxRad
 // ---------------------------------------------------------------------------------
 // Robots. Each stands on z = 0 and has the average of its distinct vertices at
 // x = y = 0, so re-centring it as OMPL.app does (loadProblem) leaves it in place and
-// a pose is the position of that point. "Width" below is along y, "length" along x.
+// a pose is the position of that point (robots written as soups, soup_variants.h,
+// have the average of the soup's vertices as written there, duplicates included).
+// "Width" below is along y, "length" along x.
 
 /// A bar of length x width x height (convex; its smallest width is `width`).
 Mesh makeBarRobot(double length, double width, double height);
@@ -153,9 +155,11 @@ Mesh makeOverhangRobot();
 std::vector<std::string> sceneNames();
 
 /// Builds a named scene. "tetra_floorplan_<N>" builds makeTetraFloorplanScene(N);
-/// "tetra_floorplan" has 8 rooms. Scenes with random parts (maze, random_polyhedra,
-/// tetra_floorplan) depend on `seed`; the others ignore it. Throws
-/// std::invalid_argument for an unknown name.
+/// "tetra_floorplan" has 8 rooms. "soup_maze_<N>" builds makeSoupMazeScene(N);
+/// "soup_maze" has 16 rooms. The soup_* scenes are written as triangle soups
+/// (Scene::robotSoup, Scene::worldSoup; soup_variants.h). Scenes with random parts
+/// (maze, random_polyhedra, tetra_floorplan, soup_maze) depend on `seed`; the others
+/// ignore it. Throws std::invalid_argument for an unknown name.
 Scene makeScene(const std::string& name, std::uint64_t seed = 1);
 bool isSceneName(const std::string& name);
 
@@ -164,12 +168,17 @@ bool isSceneName(const std::string& name);
 /// scaling benchmarks.
 Scene makeTetraFloorplanScene(unsigned rooms, std::uint64_t seed = 1);
 
+/// "soup_maze_<thousands>": a soup maze (soup_maze with more rooms) written as about
+/// `thousandTriangles` thousand triangles; a family for loading benchmarks.
+Scene makeSoupMazeScene(unsigned thousandTriangles, std::uint64_t seed = 1);
+
 /// The same scene under another name (and file names).
 Scene renamedScene(Scene scene, const std::string& name);
 
 /// Writes "<name>_robot.<ext>", "<name>_world.<ext>" and "<name>.cfg" into
-/// `directory` (created if needed); the problem's robot and world fields name the
-/// written files. Refuses (InputError) to overwrite any of them unless `overwrite`.
+/// `directory` (created if needed): the scene's soups where it has them, else its
+/// meshes (writtenSoup); the problem's robot and world fields name the written
+/// files. Refuses (InputError) to overwrite any of them unless `overwrite`.
 /// Returns the path of the .cfg.
 std::string writeScene(const Scene& scene, const std::string& directory, const std::string& meshExtension = "obj",
                        bool overwrite = false);
