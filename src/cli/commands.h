@@ -14,5 +14,6 @@ void addBuildCommand(CLI::App& app);
 void addLocateCommand(CLI::App& app);
 void addSliceCommand(CLI::App& app);
 void addExportCommand(CLI::App& app);
+void addRepairCommand(CLI::App& app);
 
 }  // namespace freespace::cli

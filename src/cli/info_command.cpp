@@ -35,7 +35,7 @@ void printBox(const char* label, const Box3& box) {
             << box.max().y() << "] x [" << box.min().z() << ", " << box.max().z() << "]\n";
 }
 
-void printMesh(const char* role, const nlohmann::json& info, const Mesh& mesh) {
+void printMesh(const char* role, const nlohmann::json& info, const Mesh& mesh, const PreparationReport& preparation) {
   std::cout << role << ": " << info["file"].get<std::string>() << "\n"
             << "  vertices " << mesh.vertices().size() << ", triangles " << mesh.triangles().size() << ", components "
             << mesh.componentCount() << ", volume " << mesh.volume() << "\n"
@@ -45,6 +45,9 @@ void printMesh(const char* role, const nlohmann::json& info, const Mesh& mesh) {
     std::cout << "  component " << i << ": ";
     printBox("", mesh.componentBounds()[i]);
   }
+  const std::vector<std::string> changes = preparation.changes();
+  if (changes.empty()) std::cout << "  read as it is (" << preparation.repair.describe().back() << ")\n";
+  for (const std::string& change : changes) std::cout << "  repaired: " << change << "\n";
 }
 
 }  // namespace
@@ -60,8 +63,10 @@ void addInfoCommand(CLI::App& app) {
   command->add_flag("--json", options->json, "print JSON");
   command->callback([options]() {
     const LoadedProblem loaded = options->input.load();
-    const nlohmann::json robot = meshJson(loaded.problem.robot, loaded.robot);
-    const nlohmann::json world = meshJson(loaded.problem.world, loaded.world);
+    nlohmann::json robot = meshJson(loaded.problem.robot, loaded.robot);
+    nlohmann::json world = meshJson(loaded.problem.world, loaded.world);
+    robot["repair"] = preparationJson(loaded.robotPreparation);
+    world["repair"] = preparationJson(loaded.worldPreparation);
     if (options->json) {
       nlohmann::json all = {{"robot", robot}, {"world", world}};
       if (!loaded.cfgPath.empty()) {
@@ -70,12 +75,12 @@ void addInfoCommand(CLI::App& app) {
       std::cout << all.dump(2) << "\n";
       return;
     }
-    printMesh("robot", robot, loaded.robot);
+    printMesh("robot", robot, loaded.robot, loaded.robotPreparation);
     if (!loaded.cfgPath.empty()) {
       std::cout << "  re-centred: its vertex average (" << loaded.robotCentre.x() << ", " << loaded.robotCentre.y()
                 << ") was moved to the origin\n";
     }
-    printMesh("world", world, loaded.world);
+    printMesh("world", world, loaded.world, loaded.worldPreparation);
   });
 }
 

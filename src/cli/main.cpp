@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   freespace::cli::addLocateCommand(app);
   freespace::cli::addSliceCommand(app);
   freespace::cli::addExportCommand(app);
+  freespace::cli::addRepairCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

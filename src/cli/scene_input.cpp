@@ -1,6 +1,5 @@
 #include "scene_input.h"
 
-#include <cmath>
 #include <iostream>
 
 #include "freespace/input_error.h"
@@ -16,25 +15,7 @@ void SceneInput::addOptions(CLI::App& command, bool savedSpace) {
                  : command.add_option("meshes", meshes_, "ROBOT WORLD mesh files (instead of --cfg)")->expected(2);
   cfg->excludes(meshes);
   meshes->excludes(cfg);
-  addPreparationOptions(command, "--repair-tolerance");
-}
-
-void SceneInput::addPreparationOptions(CLI::App& command, const std::string& toleranceNames) {
-  command.add_option(toleranceNames, tolerance_,
-                     "Weld points closer than this and insert vertices into edges they lie on within it (model "
-                     "units; 0: only identical points; default: 1e-6 of each mesh's bounding box diagonal)")
-      ->check(CLI::NonNegativeNumber);
-  command.add_flag("--ignore-open", ignoreOpen_,
-                   "Drop triangles that enclose nothing (open sheets, zero-thickness walls, cracks) with a warning "
-                   "instead of refusing the mesh");
-}
-
-PreparationSettings SceneInput::preparation() const {
-  if (tolerance_ && !std::isfinite(*tolerance_)) throw InputError("--repair-tolerance", "must be a finite number, at least 0");
-  PreparationSettings settings;
-  settings.repair.absoluteTolerance = tolerance_;
-  settings.solid.ignoreOpen = ignoreOpen_;
-  return settings;
+  preparation_.addOptions(command, "--repair-tolerance");
 }
 
 std::optional<std::string> SceneInput::savedSpaceFile() const {
@@ -46,10 +27,10 @@ LoadedProblem SceneInput::load() const {
   std::vector<std::string> warnings;
   LoadedProblem loaded;
   if (!cfg_.empty()) {
-    loaded = loadProblem(cfg_, &warnings, preparation());
+    loaded = loadProblem(cfg_, &warnings, preparation_.settings());
   } else if (meshes_.size() == 2) {
-    loaded.robot = loadMesh(meshes_[0], &warnings, preparation(), &loaded.robotPreparation);
-    loaded.world = loadMesh(meshes_[1], &warnings, preparation(), &loaded.worldPreparation);
+    loaded.robot = loadMesh(meshes_[0], &warnings, preparation_.settings(), &loaded.robotPreparation);
+    loaded.world = loadMesh(meshes_[1], &warnings, preparation_.settings(), &loaded.worldPreparation);
     loaded.problem.robot = meshes_[0];
     loaded.problem.world = meshes_[1];
   } else {

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "freespace/problem/planar_problem.h"
+#include "preparation_options.h"
 
 namespace freespace::cli {
 
@@ -15,10 +16,6 @@ class SceneInput {
  public:
   /// With `savedSpace`, one file (a saved free space) may stand for ROBOT WORLD.
   void addOptions(CLI::App& command, bool savedSpace = false);
-
-  /// The repair tolerance (under `toleranceNames`, CLI11's comma-separated names)
-  /// and --ignore-open, for commands that read meshes without this input.
-  void addPreparationOptions(CLI::App& command, const std::string& toleranceNames);
 
   /// The saved free space named instead of ROBOT WORLD, if one is.
   std::optional<std::string> savedSpaceFile() const;
@@ -29,12 +26,9 @@ class SceneInput {
   LoadedProblem load() const;
 
  private:
-  PreparationSettings preparation() const;
-
   std::string cfg_;
   std::vector<std::string> meshes_;
-  std::optional<double> tolerance_;
-  bool ignoreOpen_ = false;
+  PreparationOptions preparation_;
 };
 
 }  // namespace freespace::cli

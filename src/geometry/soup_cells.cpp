@@ -349,7 +349,8 @@ double approximateArea(const SoupComplex& complex, Index face) {
 
 // Withdraws the caps of every enclosed region whose caps make up half its boundary or
 // more: a missing face of a convex piece is always less than the others together,
-// while a courtyard capped at its floor and its sky is mostly caps. Returns whether
+// while a courtyard capped at its floor and its sky is mostly caps. A region's
+// boundary is every face side in it, whatever lies on the other side. Returns whether
 // it withdrew any.
 bool withdrawDominantCaps(const SoupComplex& complex, Cells& cells, Index firstCap, std::vector<bool>& withdrawn) {
   struct Areas {
@@ -358,13 +359,12 @@ bool withdrawDominantCaps(const SoupComplex& complex, Cells& cells, Index firstC
     std::vector<Index> capSources;
   };
   std::map<Index, Areas> areasOfCell;  // bounded cell -> its boundary's areas
-  for (Index face = 0; face < complex.faces.size(); ++face) {
-    const bool frontOutside = cells.isOutside(frontSide(face)), backOutside = cells.isOutside(backSide(face));
-    if (frontOutside == backOutside) continue;
-    Areas& areas = areasOfCell[cells.cellOf(frontOutside ? backSide(face) : frontSide(face))];
-    const double area = approximateArea(complex, face);
+  for (Index side = 0; side < 2 * complex.faces.size(); ++side) {
+    if (cells.isOutside(side)) continue;
+    Areas& areas = areasOfCell[cells.cellOf(side)];
+    const double area = approximateArea(complex, faceOf(side));
     areas.total += area;
-    const Index source = complex.sourceTriangle[face];
+    const Index source = complex.sourceTriangle[faceOf(side)];
     if (source < firstCap) continue;
     areas.caps += area;
     areas.capSources.push_back(source - firstCap);

@@ -99,6 +99,45 @@ TriangleSoup weldWithinTolerance(const TriangleSoup& welded, double tolerance, R
   return result;
 }
 
+// Moves every coordinate to the most frequent value among those within the
+// tolerance above the smallest of its group (groups taken from the smallest value
+// up), axis by axis: float noise that tilts faces meant to be level or flush by a
+// hair is removed, so that they meet exactly. No coordinate moves by more than the
+// tolerance; points that become identical are welded afterwards.
+void snapCoordinates(TriangleSoup& soup, double tolerance, RepairReport& report) {
+  if (tolerance == 0) return;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<Index> order(soup.vertices.size());
+    for (Index v = 0; v < order.size(); ++v) order[v] = v;
+    std::sort(order.begin(), order.end(),
+              [&](Index a, Index b) { return soup.vertices[a][axis] < soup.vertices[b][axis]; });
+    std::size_t first = 0;
+    while (first < order.size()) {
+      const double start = soup.vertices[order[first]][axis];
+      std::size_t end = first;
+      while (end < order.size() && soup.vertices[order[end]][axis] <= start + tolerance) ++end;
+      // The most frequent value of the sorted run [first, end).
+      double chosen = start;
+      std::size_t best = 0;
+      for (std::size_t i = first; i < end;) {
+        std::size_t j = i;
+        while (j < end && soup.vertices[order[j]][axis] == soup.vertices[order[i]][axis]) ++j;
+        if (j - i > best) {
+          best = j - i;
+          chosen = soup.vertices[order[i]][axis];
+        }
+        i = j;
+      }
+      for (std::size_t i = first; i < end; ++i) {
+        double& value = soup.vertices[order[i]][axis];
+        if (value != chosen) ++report.coordinatesSnapped;
+        value = chosen;
+      }
+      first = end;
+    }
+  }
+}
+
 // ---------------------------------------------------------------------------
 // Zero-area and duplicate triangles
 
@@ -344,7 +383,9 @@ double toleranceFor(const TriangleSoup& soup, const RepairSettings& settings, Re
 }  // namespace
 
 bool RepairReport::changedAnything() const {
-  return pointsWelded + verticesSnapped + zeroAreaDropped + duplicatesDropped + reversedDuplicatesDropped > 0;
+  return pointsWelded + coordinatesSnapped + verticesSnapped + zeroAreaDropped + duplicatesDropped +
+             reversedDuplicatesDropped >
+         0;
 }
 
 std::vector<std::string> RepairReport::describe() const {
@@ -353,6 +394,10 @@ std::vector<std::string> RepairReport::describe() const {
   if (pointsWelded > 0) {
     lines.push_back(countOf(pointsWelded, "point") + " welded to a point within the tolerance (moved at most " +
                     detail::formatNumber(largestWeldDistance) + ")");
+  }
+  if (coordinatesSnapped > 0) {
+    lines.push_back(countOf(coordinatesSnapped, "coordinate") + " moved to a value within the tolerance shared by "
+                    "others (float noise)");
   }
   if (verticesSnapped > 0) {
     lines.push_back(countOf(verticesSnapped, "vertex insertion") + " into edges the vertices lie on (T-junctions), "
@@ -363,7 +408,7 @@ std::vector<std::string> RepairReport::describe() const {
   }
   if (duplicatesDropped > 0) lines.push_back(countOf(duplicatesDropped, "duplicate triangle") + " dropped");
   if (reversedDuplicatesDropped > 0) {
-    lines.push_back(countOf(reversedDuplicatesDropped, "reversed copy") + " of triangles dropped (a double-sided surface)");
+    lines.push_back(countOf(reversedDuplicatesDropped, "triangle") + " dropped as reversed copies of others (a double-sided surface)");
   }
   const std::string tolerance = "tolerance " + detail::formatNumber(this->tolerance);
   lines.push_back(toleranceIsRelative ? tolerance + " (" + detail::formatNumber(relativeTolerance) +
@@ -383,6 +428,8 @@ TriangleSoup repairSoup(const TriangleSoup& soup, const std::string& sourceName,
   counts.tolerance = toleranceFor(soup, settings, counts);
 
   TriangleSoup repaired = weldWithinTolerance(detail::weldIdenticalVertices(soup), counts.tolerance, counts);
+  snapCoordinates(repaired, counts.tolerance, counts);
+  repaired = detail::weldIdenticalVertices(repaired);
   dropZeroAreaAndDuplicates(repaired, counts.tolerance, counts);
   snapJunctions(repaired, counts.tolerance, counts);
   dropZeroAreaAndDuplicates(repaired, counts.tolerance, counts);

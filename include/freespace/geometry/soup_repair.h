@@ -29,6 +29,7 @@ struct RepairReport {
   std::size_t inputTriangles = 0;
   std::size_t pointsWelded = 0;      // distinct positions merged into a nearby one
   double largestWeldDistance = 0;    // how far a welded point moved at most
+  std::size_t coordinatesSnapped = 0;  // x, y or z values moved to a nearby shared value
   std::size_t verticesSnapped = 0;   // (vertex, edge) pairs: a vertex inserted into an edge it lies on
   std::size_t trianglesSplit = 0;    // triangles split at such vertices
   std::size_t zeroAreaDropped = 0;   // no higher than the tolerance
@@ -46,7 +47,10 @@ struct RepairReport {
 
 /// Repairs a soup before it is interpreted as a solid (docs/design.md, "Real-world
 /// meshes"): welds points closer than the tolerance (each cluster of points chained
-/// by distances within it goes to its point that comes first in the soup), inserts
+/// by distances within it goes to its point that comes first in the soup), moves
+/// each coordinate to the most frequent value among those within the tolerance of it
+/// (axis by axis, in groups from the smallest value up, so that float noise no
+/// longer tilts faces meant to be level or flush), inserts
 /// vertices into the edges they lie on within the tolerance where an edge is used by
 /// an odd number of triangles (T-junctions: the triangles along the edge are split),
 /// and drops triangles of zero area (exactly, or no higher than the tolerance: a

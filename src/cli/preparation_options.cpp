@@ -1,0 +1,64 @@
+#include "preparation_options.h"
+
+#include <cmath>
+
+#include "freespace/input_error.h"
+
+namespace freespace::cli {
+
+void PreparationOptions::addOptions(CLI::App& command, const std::string& toleranceNames) {
+  toleranceName_ = toleranceNames.substr(0, toleranceNames.find(','));
+  command.add_option(toleranceNames, tolerance_,
+                     "Weld points closer than this and insert vertices into edges they lie on within it (model "
+                     "units; 0: only identical points; default: 1e-6 of each mesh's bounding box diagonal)");
+  command.add_flag("--ignore-open", ignoreOpen_,
+                   "Drop triangles that enclose nothing (open sheets, zero-thickness walls, cracks) with a warning "
+                   "instead of refusing the mesh");
+}
+
+PreparationSettings PreparationOptions::settings() const {
+  if (tolerance_ && !(std::isfinite(*tolerance_) && *tolerance_ >= 0)) {
+    throw InputError(toleranceName_, "must be a finite number, at least 0");
+  }
+  PreparationSettings settings;
+  settings.repair.absoluteTolerance = tolerance_;
+  settings.solid.ignoreOpen = ignoreOpen_;
+  return settings;
+}
+
+nlohmann::json preparationJson(const PreparationReport& report) {
+  const RepairReport& repair = report.repair;
+  const SolidReport& solid = report.solid;
+  nlohmann::json json = {
+      {"tolerance", repair.tolerance},
+      {"tolerance_relative_to_diagonal", repair.toleranceIsRelative ? nlohmann::json(repair.relativeTolerance)
+                                                                     : nlohmann::json(nullptr)},
+      {"points_welded", repair.pointsWelded},
+      {"largest_weld_distance", repair.largestWeldDistance},
+      {"coordinates_snapped", repair.coordinatesSnapped},
+      {"vertices_snapped", repair.verticesSnapped},
+      {"triangles_split", repair.trianglesSplit},
+      {"zero_area_dropped", repair.zeroAreaDropped},
+      {"duplicates_dropped", repair.duplicatesDropped},
+      {"reversed_duplicates_dropped", repair.reversedDuplicatesDropped},
+      {"closed_components_kept", solid.closedComponents},
+      {"soup_triangles", solid.soupTriangles},
+      {"soup_pieces", solid.soupPieces},
+      {"crossing_pairs", solid.meetingPairs},
+      {"triangles_refined", solid.refinedTriangles},
+      {"enclosed_regions", solid.enclosedRegions},
+      {"solids", solid.solids},
+      {"boundary_triangles", solid.boundaryTriangles},
+      {"cap_triangles", solid.capTriangles},
+      {"internal_triangles_dropped", solid.internalTriangles},
+      {"open_triangles_dropped", solid.openSourceTriangles},
+  };
+  if (solid.openSourceTriangles > 0) {
+    const Box3& box = solid.openBounds;
+    json["open_bounds"] = {{"min", {box.min().x(), box.min().y(), box.min().z()}},
+                           {"max", {box.max().x(), box.max().y(), box.max().z()}}};
+  }
+  return json;
+}
+
+}  // namespace freespace::cli
