@@ -80,7 +80,7 @@ TEST(MeshReader, FlipsAnInsideOutFileWithAWarning) {
   std::vector<std::string> warnings;
   const Mesh mesh = loadMesh(path, &warnings);
   ASSERT_EQ(warnings.size(), 1u);
-  EXPECT_EQ(warnings[0], path + ": component 0 was inside-out and has been flipped");
+  EXPECT_EQ(warnings[0], path + ": 12 triangles of closed components turned to face outward like their neighbours");
   EXPECT_EQ(mesh.volume(), 1.0);
 }
 
@@ -299,7 +299,7 @@ TEST(MeshReader, RepairableFilesLoadAsTheSolidsTheyShow) {
     const char* change;
   } files[] = {
       {"repairable_missing_face.obj", 1, "triangles added to close planar openings"},
-      {"repairable_orientation.obj", 1, "not forming closed oriented surfaces, taken as the solid they enclose"},
+      {"repairable_orientation.obj", 1, "2 triangles of closed components turned to face outward"},
       {"repairable_duplicate.obj", 1, "1 duplicate triangle dropped"},
       {"repairable_missing_triangle.stl", 8, "1 triangle added to close planar openings"},
   };

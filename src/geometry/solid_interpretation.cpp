@@ -23,6 +23,18 @@ struct EdgeUse {
   bool lowToHigh;
 };
 
+// Calls visit(first, count) for the run of uses of each edge.
+template <class Visitor>
+void forEachEdge(const std::vector<EdgeUse>& uses, Visitor visit) {
+  std::size_t first = 0;
+  while (first < uses.size()) {
+    std::size_t end = first + 1;
+    while (end < uses.size() && uses[end].low == uses[first].low && uses[end].high == uses[first].high) ++end;
+    visit(first, end - first);
+    first = end;
+  }
+}
+
 std::vector<EdgeUse> sortedEdgeUses(const std::vector<TriangleIndices>& triangles) {
   std::vector<EdgeUse> uses;
   uses.reserve(3 * triangles.size());
@@ -38,32 +50,109 @@ std::vector<EdgeUse> sortedEdgeUses(const std::vector<TriangleIndices>& triangle
   return uses;
 }
 
-// Components through shared edges, and which of them are closed, consistently
-// oriented and edge-manifold: every edge used twice, once in each direction.
+// Components through shared edges, and which of them are closed and edge-manifold:
+// every edge used by two triangles.
 struct ComponentKinds {
   std::vector<Index> componentOf;  // of each triangle: its component's first triangle
   std::vector<bool> closed;        // indexed by that first triangle
 };
 
-ComponentKinds classifyComponents(const std::vector<TriangleIndices>& triangles) {
-  const std::vector<EdgeUse> uses = sortedEdgeUses(triangles);
+ComponentKinds classifyComponents(const std::vector<TriangleIndices>& triangles, const std::vector<EdgeUse>& uses) {
   detail::DisjointSets components(triangles.size());
   std::vector<Index> badTriangles;
-  std::size_t first = 0;
-  while (first < uses.size()) {
-    std::size_t end = first + 1;
-    while (end < uses.size() && uses[end].low == uses[first].low && uses[end].high == uses[first].high) ++end;
-    for (std::size_t i = first + 1; i < end; ++i) components.unite(uses[first].triangle, uses[i].triangle);
-    const bool manifold = end - first == 2 && uses[first].lowToHigh != uses[first + 1].lowToHigh;
-    if (!manifold) badTriangles.push_back(uses[first].triangle);
-    first = end;
-  }
+  forEachEdge(uses, [&](std::size_t first, std::size_t count) {
+    for (std::size_t i = first + 1; i < first + count; ++i) components.unite(uses[first].triangle, uses[i].triangle);
+    if (count != 2) badTriangles.push_back(uses[first].triangle);
+  });
   ComponentKinds kinds;
   kinds.componentOf.resize(triangles.size());
   for (Index t = 0; t < triangles.size(); ++t) kinds.componentOf[t] = components.find(t);
   kinds.closed.assign(triangles.size(), true);
   for (Index t : badTriangles) kinds.closed[kinds.componentOf[t]] = false;
   return kinds;
+}
+
+// Turns triangles of closed components so that each component is consistently
+// oriented, spreading its first triangle's orientation across edges (a surface in
+// space that is closed and edge-manifold can always be oriented unless it crosses
+// itself: a component where the spreading meets a contradiction is no longer
+// counted closed). Returns how many triangles were turned.
+std::size_t orientConsistently(std::vector<TriangleIndices>& triangles, const std::vector<EdgeUse>& uses,
+                               ComponentKinds& kinds) {
+  std::vector<std::vector<std::pair<Index, bool>>> neighbours(triangles.size());  // (triangle, same direction)
+  forEachEdge(uses, [&](std::size_t first, std::size_t count) {
+    if (count != 2) return;
+    const EdgeUse &a = uses[first], &b = uses[first + 1];
+    neighbours[a.triangle].emplace_back(b.triangle, a.lowToHigh == b.lowToHigh);
+    neighbours[b.triangle].emplace_back(a.triangle, a.lowToHigh == b.lowToHigh);
+  });
+  std::vector<int> turned(triangles.size(), -1);  // -1 unseen, 0 kept, 1 turned
+  std::size_t count = 0;
+  for (Index start = 0; start < triangles.size(); ++start) {
+    if (!kinds.closed[kinds.componentOf[start]] || turned[start] >= 0) continue;
+    turned[start] = 0;
+    std::vector<Index> stack{start};
+    while (!stack.empty()) {
+      const Index t = stack.back();
+      stack.pop_back();
+      for (const auto& [other, sameDirection] : neighbours[t]) {
+        const int wanted = sameDirection ? 1 - turned[t] : turned[t];  // neighbours run an edge both ways
+        if (turned[other] < 0) {
+          turned[other] = wanted;
+          stack.push_back(other);
+        } else if (turned[other] != wanted) {
+          kinds.closed[kinds.componentOf[start]] = false;
+        }
+      }
+    }
+  }
+  for (Index t = 0; t < triangles.size(); ++t) {
+    if (turned[t] == 1 && kinds.closed[kinds.componentOf[t]]) {
+      std::swap(triangles[t][1], triangles[t][2]);
+      ++count;
+    }
+  }
+  return count;
+}
+
+// Turns every closed component whose triangles face inward (a negative enclosed
+// volume); returns how many triangles were turned.
+std::size_t orientOutward(const std::vector<Point3>& vertices, std::vector<TriangleIndices>& triangles,
+                          const ComponentKinds& kinds) {
+  std::map<Index, Box3> bounds;
+  for (Index t = 0; t < triangles.size(); ++t) {
+    for (Index v : triangles[t]) bounds[kinds.componentOf[t]].extend(vertices[v]);
+  }
+  std::map<Index, double> volume;  // six times the signed volume, from each box's corner
+  for (Index t = 0; t < triangles.size(); ++t) {
+    const Point3& origin = bounds[kinds.componentOf[t]].min();
+    const Point3 a = vertices[triangles[t][0]] - origin, b = vertices[triangles[t][1]] - origin,
+                 c = vertices[triangles[t][2]] - origin;
+    volume[kinds.componentOf[t]] += a.dot(b.cross(c));
+  }
+  std::size_t count = 0;
+  for (Index t = 0; t < triangles.size(); ++t) {
+    if (!kinds.closed[kinds.componentOf[t]] || !(volume[kinds.componentOf[t]] < 0)) continue;
+    std::swap(triangles[t][1], triangles[t][2]);
+    ++count;
+  }
+  return count;
+}
+
+// A closed surface that crosses itself stands for the solid it encloses: its
+// component joins the soup. Only closed components are checked.
+void markSelfIntersectingAsSoup(const std::vector<Point3>& vertices, const std::vector<TriangleIndices>& triangles,
+                                ComponentKinds& kinds) {
+  std::vector<TriangleIndices> closed;
+  std::vector<Index> componentOf;
+  for (Index t = 0; t < triangles.size(); ++t) {
+    if (!kinds.closed[kinds.componentOf[t]]) continue;
+    closed.push_back(triangles[t]);
+    componentOf.push_back(kinds.componentOf[t]);
+  }
+  for (Index component : detail::selfIntersectingComponents(vertices, closed, componentOf)) {
+    kinds.closed[component] = false;
+  }
 }
 
 std::size_t countDistinct(std::vector<Index> values) {
@@ -109,40 +198,47 @@ void appendTriangles(const std::vector<Point3>& vertices, const std::vector<Tria
 std::vector<std::string> SolidReport::describe() const {
   using detail::countOf;
   std::vector<std::string> lines;
-  if (soupTriangles == 0) return lines;
-  lines.push_back(countOf(soupTriangles, "triangle") + " in " + countOf(soupPieces, "piece") +
-                  " not forming closed oriented surfaces, taken as the solid they enclose: " +
-                  countOf(enclosedRegions, "enclosed region") + " bounded by " + countOf(boundaryTriangles, "triangle") +
-                  " in " + countOf(solids, "solid"));
-  if (refinedTriangles > 0) {
-    lines.push_back(countOf(refinedTriangles, "triangle") + " split where " + countOf(meetingPairs, "pair") +
-                    " of them cross or overlap");
+  if (soupTriangles > 0) {
+    lines.push_back(countOf(soupTriangles, "triangle") + " in " + countOf(soupPieces, "piece") +
+                    " not forming closed surfaces, taken as the solid they enclose: " +
+                    countOf(enclosedRegions, "enclosed region") + " bounded by " +
+                    countOf(boundaryTriangles, "triangle") + " in " + countOf(solids, "solid"));
+    if (refinedTriangles > 0) {
+      lines.push_back(countOf(refinedTriangles, "triangle") + " split where " + countOf(meetingPairs, "pair") +
+                      " of them cross or overlap");
+    }
+    if (capTriangles > 0) {
+      lines.push_back(countOf(capTriangles, "triangle") + " added to close planar openings (faces left out)");
+    }
+    if (internalTriangles > 0) {
+      lines.push_back(countOf(internalTriangles, "piece") + " of triangles inside the solid dropped (internal walls)");
+    }
+    if (openTriangles > 0) lines.push_back(countOf(openSourceTriangles, "triangle") + " that enclose nothing dropped");
+    if (closedComponents > 0) lines.push_back(countOf(closedComponents, "closed component") + " kept as they are");
   }
-  if (capTriangles > 0) {
-    lines.push_back(countOf(capTriangles, "triangle") + " added to close planar openings (faces left out)");
+  if (trianglesTurned > 0) {
+    lines.push_back(countOf(trianglesTurned, "triangle") + " of closed components turned to face outward like their "
+                    "neighbours");
   }
-  if (internalTriangles > 0) {
-    lines.push_back(countOf(internalTriangles, "piece") + " of triangles inside the solid dropped (internal walls)");
-  }
-  if (openTriangles > 0) lines.push_back(countOf(openSourceTriangles, "triangle") + " that enclose nothing dropped");
-  if (closedComponents > 0) lines.push_back(countOf(closedComponents, "closed component") + " kept as they are");
   return lines;
 }
 
 TriangleSoup interpretSolid(const TriangleSoup& repaired, const std::string& sourceName, const SolidSettings& settings,
                             SolidReport* report, std::vector<std::string>* warnings) {
-  ComponentKinds kinds = classifyComponents(repaired.triangles);
-  for (Index component : detail::selfIntersectingComponents(repaired.vertices, repaired.triangles, kinds.componentOf)) {
-    kinds.closed[component] = false;  // a closed surface that crosses itself: the solid it encloses
-  }
+  std::vector<TriangleIndices> triangles = repaired.triangles;
+  const std::vector<EdgeUse> uses = sortedEdgeUses(triangles);
+  ComponentKinds kinds = classifyComponents(triangles, uses);
+  SolidReport counts;
+  const std::size_t turnedAgainstNeighbours = orientConsistently(triangles, uses, kinds);
+  counts.trianglesTurned = turnedAgainstNeighbours + orientOutward(repaired.vertices, triangles, kinds);
+  markSelfIntersectingAsSoup(repaired.vertices, triangles, kinds);
   std::vector<TriangleIndices> closed, soup;
   std::vector<Index> closedComponents, soupPieces;
-  for (Index t = 0; t < repaired.triangles.size(); ++t) {
+  for (Index t = 0; t < triangles.size(); ++t) {
     const Index component = kinds.componentOf[t];
-    (kinds.closed[component] ? closed : soup).push_back(repaired.triangles[t]);
+    (kinds.closed[component] ? closed : soup).push_back(triangles[t]);
     (kinds.closed[component] ? closedComponents : soupPieces).push_back(component);
   }
-  SolidReport counts;
   counts.closedComponents = countDistinct(closedComponents);
   counts.soupTriangles = soup.size();
   counts.soupPieces = countDistinct(soupPieces);

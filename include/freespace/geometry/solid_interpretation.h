@@ -19,7 +19,8 @@ struct SolidSettings {
 
 /// What the interpretation found and changed.
 struct SolidReport {
-  std::size_t closedComponents = 0;  // closed, oriented, edge-manifold components kept as they are
+  std::size_t closedComponents = 0;  // closed, edge-manifold components kept as they are
+  std::size_t trianglesTurned = 0;   // their triangles turned to face outward like their neighbours
   std::size_t soupTriangles = 0;     // triangles of the other components
   std::size_t soupPieces = 0;        // edge-connected pieces among those
   std::size_t meetingPairs = 0;      // pairs of soup triangles meeting beyond shared vertices and edges
@@ -39,10 +40,10 @@ struct SolidReport {
 };
 
 /// The surface of the solid a repaired soup (repairSoup) shows (docs/design.md,
-/// "Real-world meshes"). A closed, consistently oriented, edge-manifold connected
-/// component (through shared edges) whose surface does not meet itself means what it
-/// always means: the solid it bounds; voids it encloses with other components stay
-/// free. Every other triangle belongs to
+/// "Real-world meshes"). A closed, edge-manifold connected component (through shared
+/// edges) whose surface does not meet itself means what it always means: the solid
+/// it bounds (its triangles are turned to face outward, all alike); voids it encloses
+/// with other components stay free. Every other triangle belongs to
 /// the soup, whose solid is everything the soup's triangles enclose: the complement of
 /// the unbounded region of space minus those triangles, found exactly (the
 /// triangles are refined along their intersections, then the regions they bound are
