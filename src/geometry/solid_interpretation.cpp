@@ -1,6 +1,7 @@
 #include "freespace/geometry/solid_interpretation.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
 
 #include "disjoint_sets.h"
@@ -79,12 +80,18 @@ ComponentKinds classifyComponents(const std::vector<TriangleIndices>& triangles,
 // counted closed). Returns how many triangles were turned.
 std::size_t orientConsistently(std::vector<TriangleIndices>& triangles, const std::vector<EdgeUse>& uses,
                                ComponentKinds& kinds) {
-  std::vector<std::vector<std::pair<Index, bool>>> neighbours(triangles.size());  // (triangle, same direction)
+  // Up to three neighbours across manifold edges: (triangle, runs the edge the same way).
+  struct Neighbours {
+    std::array<std::pair<Index, bool>, 3> across;
+    int count = 0;
+  };
+  std::vector<Neighbours> neighbours(triangles.size());
   forEachEdge(uses, [&](std::size_t first, std::size_t count) {
     if (count != 2) return;
     const EdgeUse &a = uses[first], &b = uses[first + 1];
-    neighbours[a.triangle].emplace_back(b.triangle, a.lowToHigh == b.lowToHigh);
-    neighbours[b.triangle].emplace_back(a.triangle, a.lowToHigh == b.lowToHigh);
+    Neighbours &ofA = neighbours[a.triangle], &ofB = neighbours[b.triangle];
+    if (ofA.count < 3) ofA.across[ofA.count++] = {b.triangle, a.lowToHigh == b.lowToHigh};
+    if (ofB.count < 3) ofB.across[ofB.count++] = {a.triangle, a.lowToHigh == b.lowToHigh};
   });
   std::vector<int> turned(triangles.size(), -1);  // -1 unseen, 0 kept, 1 turned
   std::size_t count = 0;
@@ -95,7 +102,8 @@ std::size_t orientConsistently(std::vector<TriangleIndices>& triangles, const st
     while (!stack.empty()) {
       const Index t = stack.back();
       stack.pop_back();
-      for (const auto& [other, sameDirection] : neighbours[t]) {
+      for (int i = 0; i < neighbours[t].count; ++i) {
+        const auto [other, sameDirection] = neighbours[t].across[i];
         const int wanted = sameDirection ? 1 - turned[t] : turned[t];  // neighbours run an edge both ways
         if (turned[other] < 0) {
           turned[other] = wanted;
@@ -119,11 +127,11 @@ std::size_t orientConsistently(std::vector<TriangleIndices>& triangles, const st
 // volume); returns how many triangles were turned.
 std::size_t orientOutward(const std::vector<Point3>& vertices, std::vector<TriangleIndices>& triangles,
                           const ComponentKinds& kinds) {
-  std::map<Index, Box3> bounds;
+  std::vector<Box3> bounds(triangles.size());  // by component (its first triangle)
   for (Index t = 0; t < triangles.size(); ++t) {
     for (Index v : triangles[t]) bounds[kinds.componentOf[t]].extend(vertices[v]);
   }
-  std::map<Index, double> volume;  // six times the signed volume, from each box's corner
+  std::vector<double> volume(triangles.size(), 0);  // six times the signed volume, from each box's corner
   for (Index t = 0; t < triangles.size(); ++t) {
     const Point3& origin = bounds[kinds.componentOf[t]].min();
     const Point3 a = vertices[triangles[t][0]] - origin, b = vertices[triangles[t][1]] - origin,

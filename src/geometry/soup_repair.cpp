@@ -53,21 +53,29 @@ std::vector<Index> clusterFirsts(const std::vector<Point3>& points, double toler
   if (tolerance > 0 && !points.empty()) {
     Box3 bounds;
     for (const Point3& point : points) bounds.extend(point);
-    std::unordered_map<GridCell, std::vector<Index>, GridCellHash> grid;
+    // Each cell holds a list of its points: the last one added, then `next` links.
+    constexpr Index kEnd = std::numeric_limits<Index>::max();
+    std::unordered_map<GridCell, Index, GridCellHash> lastInCell;
+    lastInCell.reserve(points.size());
+    std::vector<Index> next(points.size(), kEnd);
     for (Index p = 0; p < points.size(); ++p) {
       const GridCell cell = cellOf(points[p], bounds.min(), tolerance);
       for (std::int64_t dx = -1; dx <= 1; ++dx) {
         for (std::int64_t dy = -1; dy <= 1; ++dy) {
           for (std::int64_t dz = -1; dz <= 1; ++dz) {
-            const auto found = grid.find({cell[0] + dx, cell[1] + dy, cell[2] + dz});
-            if (found == grid.end()) continue;
-            for (Index q : found->second) {
+            const auto found = lastInCell.find({cell[0] + dx, cell[1] + dy, cell[2] + dz});
+            if (found == lastInCell.end()) continue;
+            for (Index q = found->second; q != kEnd; q = next[q]) {
               if ((points[p] - points[q]).norm() <= tolerance) clusters.unite(p, q);
             }
           }
         }
       }
-      grid[cell].push_back(p);
+      const auto [slot, inserted] = lastInCell.emplace(cell, p);
+      if (!inserted) {
+        next[p] = slot->second;
+        slot->second = p;
+      }
     }
   }
   std::vector<Index> first(points.size());
@@ -151,26 +159,40 @@ bool flatWithinTolerance(const std::vector<Point3>& vertices, const TriangleIndi
 }
 
 void dropZeroAreaAndDuplicates(TriangleSoup& soup, double tolerance, RepairReport& report) {
-  std::map<TriangleIndices, TriangleIndices> firstOnVertexSet;  // sorted corners -> triangle kept
-  std::vector<TriangleIndices> kept;
-  kept.reserve(soup.triangles.size());
-  for (const TriangleIndices& triangle : soup.triangles) {
+  std::vector<std::pair<TriangleIndices, Index>> byVertexSet;  // sorted corners, triangle
+  byVertexSet.reserve(soup.triangles.size());
+  for (Index t = 0; t < soup.triangles.size(); ++t) {
+    const TriangleIndices& triangle = soup.triangles[t];
     if (flatWithinTolerance(soup.vertices, triangle, tolerance) || detail::hasZeroArea(soup.vertices, triangle)) {
       ++report.zeroAreaDropped;
       continue;
     }
     TriangleIndices vertexSet = triangle;
     std::sort(vertexSet.begin(), vertexSet.end());
-    const auto [found, inserted] = firstOnVertexSet.emplace(vertexSet, triangle);
-    if (inserted) {
-      kept.push_back(triangle);
-    } else if (detail::sameOrientation(found->second, triangle)) {
+    byVertexSet.emplace_back(vertexSet, t);
+  }
+  std::sort(byVertexSet.begin(), byVertexSet.end());
+  std::vector<bool> kept(soup.triangles.size(), false);
+  for (std::size_t i = 0; i < byVertexSet.size(); ++i) {
+    if (i == 0 || byVertexSet[i].first != byVertexSet[i - 1].first) {
+      kept[byVertexSet[i].second] = true;  // the first of its vertex set: sorted by triangle within a set
+      continue;
+    }
+    std::size_t first = i;
+    while (first > 0 && byVertexSet[first - 1].first == byVertexSet[i].first) --first;
+    const TriangleIndices& original = soup.triangles[byVertexSet[first].second];
+    if (detail::sameOrientation(original, soup.triangles[byVertexSet[i].second])) {
       ++report.duplicatesDropped;
     } else {
       ++report.reversedDuplicatesDropped;
     }
   }
-  soup.triangles = std::move(kept);
+  std::vector<TriangleIndices> remaining;
+  remaining.reserve(byVertexSet.size());
+  for (Index t = 0; t < soup.triangles.size(); ++t) {
+    if (kept[t]) remaining.push_back(soup.triangles[t]);
+  }
+  soup.triangles = std::move(remaining);
 }
 
 // ---------------------------------------------------------------------------
@@ -428,8 +450,9 @@ TriangleSoup repairSoup(const TriangleSoup& soup, const std::string& sourceName,
   counts.tolerance = toleranceFor(soup, settings, counts);
 
   TriangleSoup repaired = weldWithinTolerance(detail::weldIdenticalVertices(soup), counts.tolerance, counts);
+  const std::size_t snappedBefore = counts.coordinatesSnapped;
   snapCoordinates(repaired, counts.tolerance, counts);
-  repaired = detail::weldIdenticalVertices(repaired);
+  if (counts.coordinatesSnapped > snappedBefore) repaired = detail::weldIdenticalVertices(repaired);
   dropZeroAreaAndDuplicates(repaired, counts.tolerance, counts);
   snapJunctions(repaired, counts.tolerance, counts);
   dropZeroAreaAndDuplicates(repaired, counts.tolerance, counts);
