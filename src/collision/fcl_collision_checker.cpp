@@ -8,11 +8,11 @@ namespace {
 
 using Model = fcl::BVHModel<fcl::OBBRSSd>;
 
-std::shared_ptr<Model> buildModel(const Mesh& mesh) {
-  std::vector<fcl::Vector3d> points(mesh.vertices().begin(), mesh.vertices().end());
+std::shared_ptr<Model> buildModel(const std::vector<Point3>& vertices, const std::vector<TriangleIndices>& soup) {
+  std::vector<fcl::Vector3d> points(vertices.begin(), vertices.end());
   std::vector<fcl::Triangle> triangles;
-  triangles.reserve(mesh.triangles().size());
-  for (const TriangleIndices& t : mesh.triangles()) triangles.emplace_back(t[0], t[1], t[2]);
+  triangles.reserve(soup.size());
+  for (const TriangleIndices& t : soup) triangles.emplace_back(t[0], t[1], t[2]);
   auto model = std::make_shared<Model>();
   model->beginModel(static_cast<int>(triangles.size()), static_cast<int>(points.size()));
   model->addSubModel(points, triangles);
@@ -41,9 +41,14 @@ struct FclCollisionChecker::Impl {
   }
 };
 
-FclCollisionChecker::FclCollisionChecker(const Mesh& robot, const Mesh& world) : impl_(std::make_unique<Impl>()) {
-  impl_->robot = buildModel(robot);
-  impl_->world = std::make_shared<fcl::CollisionObjectd>(buildModel(world));
+FclCollisionChecker::FclCollisionChecker(const Mesh& robot, const Mesh& world)
+    : FclCollisionChecker(TriangleSoup{robot.vertices(), robot.triangles()},
+                          TriangleSoup{world.vertices(), world.triangles()}) {}
+
+FclCollisionChecker::FclCollisionChecker(const TriangleSoup& robot, const TriangleSoup& world)
+    : impl_(std::make_unique<Impl>()) {
+  impl_->robot = buildModel(robot.vertices, robot.triangles);
+  impl_->world = std::make_shared<fcl::CollisionObjectd>(buildModel(world.vertices, world.triangles));
 }
 
 FclCollisionChecker::~FclCollisionChecker() = default;

@@ -16,6 +16,9 @@ namespace freespace {
 class FclCollisionChecker {
  public:
   FclCollisionChecker(const Mesh& robot, const Mesh& world);
+  /// On triangles as read from files (OMPL.app's checker takes them as they are:
+  /// FCL needs no closed surface).
+  FclCollisionChecker(const TriangleSoup& robot, const TriangleSoup& world);
   ~FclCollisionChecker();
   FclCollisionChecker(const FclCollisionChecker&) = delete;
   FclCollisionChecker& operator=(const FclCollisionChecker&) = delete;
