@@ -68,7 +68,9 @@ TEST_P(SoupScene, ReadsAsTheSolidsTheGeneratorMeantAndAgreesWithFclOnTheFiles) {
     collisions += collides;
     EXPECT_EQ(loaded.inCollision(pose), collides) << GetParam() << " at " << pose.x << " " << pose.y << " " << pose.theta;
     // FCL sees surfaces only: it may call free a robot inside a wall, never the reverse.
-    if (fcl.inCollision(pose)) EXPECT_TRUE(collides) << GetParam() << " at " << pose.x << " " << pose.y;
+    if (fcl.inCollision(pose)) {
+      EXPECT_TRUE(collides) << GetParam() << " at " << pose.x << " " << pose.y;
+    }
   }
   EXPECT_GT(compared, kStates * 9 / 10);
   EXPECT_GT(collisions, kStates / 10) << "the states must test the walls";

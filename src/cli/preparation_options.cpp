@@ -50,6 +50,7 @@ nlohmann::json preparationJson(const PreparationReport& report) {
       {"solids", solid.solids},
       {"boundary_triangles", solid.boundaryTriangles},
       {"cap_triangles", solid.capTriangles},
+      {"edges_separated", solid.separatedEdges},
       {"internal_triangles_dropped", solid.internalTriangles},
       {"open_triangles_dropped", solid.openSourceTriangles},
   };

@@ -221,6 +221,10 @@ std::vector<std::string> SolidReport::describe() const {
     if (internalTriangles > 0) {
       lines.push_back(countOf(internalTriangles, "piece") + " of triangles inside the solid dropped (internal walls)");
     }
+    if (separatedEdges > 0) {
+      lines.push_back(countOf(separatedEdges, "edge") + " along which the solid touches itself: the pieces meeting "
+                      "there moved apart by the tolerance");
+    }
     if (openTriangles > 0) lines.push_back(countOf(openSourceTriangles, "triangle") + " that enclose nothing dropped");
     if (closedComponents > 0) lines.push_back(countOf(closedComponents, "closed component") + " kept as they are");
   }
@@ -256,6 +260,7 @@ TriangleSoup interpretSolid(const TriangleSoup& repaired, const std::string& sou
   if (!soup.empty()) {
     const detail::EnclosedSolid solid = detail::enclosedSolid(repaired.vertices, soup, settings.tolerance);
     counts.capTriangles = solid.capFaces;
+    counts.separatedEdges = solid.separatedEdges;
     counts.meetingPairs = solid.meetingPairs;
     counts.refinedTriangles = solid.refinedTriangles;
     counts.enclosedRegions = solid.boundedCells;

@@ -25,6 +25,7 @@
 #include <CGAL/Interval_nt.h>
 
 #include "disjoint_sets.h"
+#include "soup_boundary.h"
 #include "soup_complex.h"
 #include "surface_self_intersection.h"
 
@@ -51,6 +52,15 @@ struct EdgeFace {
 
 Index risingSide(const EdgeFace& entry) { return entry.forward ? frontSide(entry.face) : backSide(entry.face); }
 Index fallingSide(const EdgeFace& entry) { return entry.forward ? backSide(entry.face) : frontSide(entry.face); }
+
+// The edge two faces that meet around it share, as (lower, higher) vertex.
+std::pair<Index, Index> sharedEdge(const TriangleIndices& a, const TriangleIndices& b) {
+  std::vector<Index> shared;
+  for (Index corner : a) {
+    if (std::find(b.begin(), b.end(), corner) != b.end()) shared.push_back(corner);
+  }
+  return {std::min(shared[0], shared[1]), std::max(shared[0], shared[1])};
+}
 
 Index thirdVertex(const TriangleIndices& face, Index u, Index v) {
   return *std::find_if(face.begin(), face.end(), [&](Index corner) { return corner != u && corner != v; });
@@ -298,27 +308,6 @@ class Cells {
   std::vector<bool> bounded_;
 };
 
-double roundedCoordinate(const ExactKernel::FT& value) { return CGAL::to_double(CGAL::exact(value)); }
-
-// Adds a boundary face, turned so that its front faces the unbounded cell, with the
-// vertex copies of its component.
-void addBoundaryFace(const SoupComplex& complex, Index face, bool flip, Index component,
-                     std::map<std::pair<Index, Index>, Index>& copies, EnclosedSolid& solid) {
-  TriangleIndices corners = complex.faces[face];
-  if (flip) std::swap(corners[1], corners[2]);
-  for (Index& corner : corners) {
-    const auto [found, inserted] = copies.emplace(std::make_pair(component, corner), solid.boundary.vertices.size());
-    if (inserted) {
-      const ExactPoint& point = complex.points[corner];
-      solid.boundary.vertices.emplace_back(roundedCoordinate(point.x()), roundedCoordinate(point.y()),
-                                           roundedCoordinate(point.z()));
-    }
-    corner = found->second;
-  }
-  solid.boundary.triangles.push_back(corners);
-  solid.boundaryComponent.push_back(component);
-}
-
 void recordOpenFace(const SoupComplex& complex, Index face, EnclosedSolid& solid) {
   ++solid.openFaces;
   solid.openSourceTriangles.push_back(complex.sourceTriangle[face]);
@@ -391,39 +380,38 @@ bool isSliver(const SoupComplex& complex, Index face, double tolerance) {
 }
 
 // The faces of a complex whose cells are known, sorted into boundary, internal and
-// open ones; the boundary joined into components across the solid: around an edge,
-// each wedge of solid between two boundary faces (other faces left out) joins them.
+// open ones; boundary faces are paired across the solid: around an edge, each wedge
+// of solid between two boundary faces (other faces left out) pairs them.
 EnclosedSolid classifiedFaces(const SoupComplex& complex, const EdgeFans& fans, Cells& cells, Index firstCap,
                               double tolerance) {
   EnclosedSolid solid;
   solid.boundedCells = cells.boundedCount();
-  const Index faceCount = static_cast<Index>(complex.faces.size());
   const auto isBoundary = [&](Index face) { return cells.isOutside(frontSide(face)) != cells.isOutside(backSide(face)); };
-  DisjointSets pieces(faceCount);
+  std::vector<BoundaryPairing> pairings;
   for (const std::vector<EdgeFace>& fan : fans.fans()) {
     std::vector<EdgeFace> boundary;
     std::copy_if(fan.begin(), fan.end(), std::back_inserter(boundary), [&](const EdgeFace& entry) { return isBoundary(entry.face); });
     for (std::size_t i = 0; i < boundary.size(); ++i) {
-      if (!cells.isOutside(risingSide(boundary[i]))) pieces.unite(boundary[i].face, boundary[(i + 1) % boundary.size()].face);
+      if (cells.isOutside(risingSide(boundary[i]))) continue;
+      const TriangleIndices& corners = complex.faces[boundary[i].face];
+      const Index next = boundary[(i + 1) % boundary.size()].face;
+      pairings.push_back({boundary[i].face, next, sharedEdge(corners, complex.faces[next])});
     }
   }
-
-  std::map<Index, Index> componentOfPiece;
-  std::map<std::pair<Index, Index>, Index> copies;  // (component, complex point) -> boundary vertex
-  for (Index face = 0; face < faceCount; ++face) {
+  std::vector<BoundaryFace> boundaryFaces;
+  for (Index face = 0; face < complex.faces.size(); ++face) {
     const bool frontOutside = cells.isOutside(frontSide(face)), backOutside = cells.isOutside(backSide(face));
     const bool cap = complex.sourceTriangle[face] >= firstCap;
     if (frontOutside != backOutside) {
       if (cap) ++solid.capFaces;
-      const auto [found, inserted] = componentOfPiece.emplace(pieces.find(face), componentOfPiece.size());
-      addBoundaryFace(complex, face, backOutside, found->second, copies, solid);
+      boundaryFaces.push_back({face, backOutside});
     } else if (!cap && !frontOutside) {
       ++solid.internalFaces;
     } else if (!cap && !isSliver(complex, face, tolerance)) {
       recordOpenFace(complex, face, solid);
     }
   }
-  solid.components = componentOfPiece.size();
+  assembleBoundary(complex, boundaryFaces, pairings, tolerance, solid);
   std::sort(solid.openSourceTriangles.begin(), solid.openSourceTriangles.end());
   solid.openSourceTriangles.erase(std::unique(solid.openSourceTriangles.begin(), solid.openSourceTriangles.end()),
                                   solid.openSourceTriangles.end());

@@ -22,6 +22,7 @@ struct EnclosedSolid {
   TriangleSoup boundary;
   std::vector<std::uint32_t> boundaryComponent;  // of each boundary triangle
   std::size_t components = 0;
+  std::size_t separatedEdges = 0;     // edges where a component touched itself, its pieces moved apart
   std::size_t meetingPairs = 0;       // pairs of soup triangles meeting beyond shared vertices and edges
   std::size_t refinedTriangles = 0;   // soup triangles split along their intersections
   std::size_t boundedCells = 0;       // connected regions of space enclosed by the faces

@@ -29,6 +29,7 @@ struct SolidReport {
   std::size_t solids = 0;            // closed components that bound the soup's solid
   std::size_t boundaryTriangles = 0;
   std::size_t capTriangles = 0;       // triangles added to close planar openings (left-out faces)
+  std::size_t separatedEdges = 0;     // edges along which the solid touched itself, its pieces moved apart
   std::size_t internalTriangles = 0;  // pieces of triangles inside the solid, dropped
   std::size_t openTriangles = 0;      // pieces of triangles that enclose nothing
   std::size_t openSourceTriangles = 0;  // repaired soup triangles they come from
