@@ -1,4 +1,4 @@
-// The angle polynomials of DESIGN.md section 4 against their geometric definitions,
+// The angle polynomials of docs/design.md section 4 against their geometric definitions,
 // evaluated directly in exact rationals at rational angles: EF and SF equal w times
 // the trigonometric form, FFF equals w^2 times the 3x3 determinant of the lines.
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 #pragma once
 
 // Vectors of mesh coordinates in any number type, for the patch formulas of
-// DESIGN.md section 3.
+// docs/design.md section 3.
 
 #include <algorithm>
 #include <array>
@@ -70,7 +70,7 @@ TrigLinear<T> rotatedDot(const Vector3T<T>& a, const Vector3T<T>& b) {
   return {a.x * b.y - a.y * b.x, a.x * b.x + a.y * b.y, a.z * b.z};
 }
 
-/// The RootKey of an EF function (DESIGN.md section 4): (R (x - y)) . n for a robot
+/// The RootKey of an EF function (docs/design.md section 4): (R (x - y)) . n for a robot
 /// vertex pair (x, y) and the normal n of a plane through three environment
 /// vertices, or (R m) . (x - y) for an environment pair and a robot plane.
 /// Reversing the pair or reordering the plane only changes the function by a

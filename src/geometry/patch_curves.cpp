@@ -20,7 +20,7 @@ bool contains(std::initializer_list<std::uint32_t> set, std::uint32_t vertex) {
 
 /// The EF function an SF function equals up to a constant factor, when the
 /// spiral's vertex and edge lie in the contact's features so that the translation
-/// cancels (DESIGN.md section 5: identities from shared input vertices). With d
+/// cancels (docs/design.md section 5: identities from shared input vertices). With d
 /// placing vertex v on edge e (e(z) its point at v's height):
 ///   VF(p, f), robot v on e in f:               n . (R p + d - q0) = (R (p - v)) . n
 ///   VF(p, f), environment v in f on h from p:  n . (R (p - h(z))) = lambda (R h) . n

@@ -17,7 +17,7 @@ constexpr std::uint32_t kNoCurve = UINT32_MAX;
 constexpr std::uint32_t kNoFace = UINT32_MAX;
 
 /// The value of `other`'s line at end k of `patch`'s segment, at the angle with the
-/// given cosine and sine (an SF value, DESIGN.md section 4).
+/// given cosine and sine (an SF value, docs/design.md section 4).
 template <class T>
 T lineAtEnd(const PatchGeometry& patch, int k, const PatchGeometry& other, const T& cosine, const T& sine) {
   return valueAt(spiralFacetForm(lineOf<T>(other.line), spiralOf<T>(patch.ends[k])), cosine, sine);

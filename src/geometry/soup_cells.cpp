@@ -1,5 +1,5 @@
 // The cells of space a soup complex bounds, and the solid it encloses
-// (soup_complex.h; docs/design.md, "Real-world meshes").
+// (soup_complex.h; docs/design.md section 9).
 //
 // Sides. Face f = (a, b, c) has a front side, the one its normal (b - a) x (c - a)
 // points to, and a back side: side 2f and 2f + 1. Around an edge from its lower vertex

@@ -1,7 +1,7 @@
 #pragma once
 
-// The arrangement of a triangle soup's triangles (docs/design.md, "Real-world
-// meshes"), in CGAL's filtered exact kernel: the project's own predicates decide signs
+// The arrangement of a triangle soup's triangles (docs/design.md section 9),
+// in CGAL's filtered exact kernel: the project's own predicates decide signs
 // of determinants of input coordinates, but refining triangles along their
 // intersections needs new points (exact constructions), which CGAL provides.
 

@@ -1,6 +1,6 @@
 #pragma once
 
-// The solid a triangle soup encloses (docs/design.md, "Real-world meshes"); the
+// The solid a triangle soup encloses (docs/design.md section 9); the
 // exact arrangement behind it is in soup_complex.h.
 
 #include <cstdint>
@@ -12,7 +12,7 @@
 namespace freespace::detail {
 
 /// The solid a soup encloses: the complement of the unbounded region of space
-/// minus the faces (docs/design.md, "Real-world meshes").
+/// minus the faces (docs/design.md section 9).
 struct EnclosedSolid {
   /// The faces between the solid and the unbounded region, turned to face it, as
   /// closed edge-manifold components: around an edge where several pieces of the

@@ -62,7 +62,7 @@ auto refineBothUntil(AlgebraicAngle& a, AlgebraicAngle& b, Decide&& decide) -> d
   return std::nullopt;
 }
 
-/// Closed-form roots of a quadratic (DESIGN.md section 4: EF and SF are degree 2),
+/// Closed-form roots of a quadratic (docs/design.md section 4: EF and SF are degree 2),
 /// certified by interval arithmetic. Nothing when any step is uncertain: a leading
 /// coefficient or discriminant that may be zero, overlapping roots, or a root that
 /// may lie on the chart boundary t = +-1.
@@ -91,7 +91,7 @@ std::optional<std::vector<Interval>> quadraticRootsInDoubles(const Polynomial<In
 }
 
 /// The roots of a chart polynomial in [-1, 1] certified in double intervals: the
-/// closed form for quadratics (DESIGN.md section 4: EF and SF), Descartes bisection
+/// closed form for quadratics (docs/design.md section 4: EF and SF), Descartes bisection
 /// otherwise (FFF).
 std::optional<std::vector<Interval>> chartRootsInDoubles(const Polynomial<Interval>& p) {
   RoundingScope rounding;

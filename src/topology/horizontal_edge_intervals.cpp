@@ -61,7 +61,7 @@ std::optional<bool> certainlyBelow(const Interval& a, const Interval& b) {
 /// position m = d x N... precisely m = d_y N_x - d_x N_y, as in the exact reading,
 /// so that d(m) = q0 + m D / |N|^2 with q0 = -W N / |N|^2 and D = (-N_y, N_x).
 ///
-/// Slopes (DESIGN.md section 6, step 5; the cross-section of a horizontal edge): near
+/// Slopes (docs/design.md section 6, step 5; the cross-section of a horizontal edge): near
 /// the edge's angle, patch i's line meets the normal through d(m) at
 /// d(m) + sigma_i N with sigma_i = -(n_i . d(m) + w_i) / (n_i . N), and sigma_i
 /// vanishes at the edge's angle, so its derivative there is

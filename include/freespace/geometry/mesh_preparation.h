@@ -23,7 +23,7 @@ struct PreparationReport {
   std::vector<std::string> changes() const;
 };
 
-/// The mesh a soup shows (docs/design.md, "Real-world meshes"): repairSoup, then
+/// The mesh a soup shows (docs/design.md section 9): repairSoup, then
 /// interpretSolid, then Mesh::fromSoup (VertexWelding::asIndexed). Every change is
 /// appended to `warnings` as "sourceName: change"; errors are InputError naming
 /// `sourceName`.

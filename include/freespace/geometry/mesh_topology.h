@@ -20,7 +20,7 @@ struct MeshEdge {
   bool convex = false;
 };
 
-/// Adjacency of a checked mesh (DESIGN.md section 6, step 1): edges with their
+/// Adjacency of a checked mesh (docs/design.md section 6, step 1): edges with their
 /// triangles and convexity, the edges around each vertex, and which vertices are
 /// pointed (the solid's cone there lies in an open half space but for the vertex).
 /// Convexity and pointedness are decided by exact predicates on the mesh's

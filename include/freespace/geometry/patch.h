@@ -20,7 +20,7 @@ enum class ContactKind {
   EdgeEdge,     // a robot edge crossing an environment edge
 };
 
-/// The two features in contact (DESIGN.md section 3): indices of a vertex, a
+/// The two features in contact (docs/design.md section 3): indices of a vertex, a
 /// triangle or an edge (MeshTopology::edges()) of the robot and of the environment.
 struct Contact {
   ContactKind kind = ContactKind::VertexFacet;
@@ -33,7 +33,7 @@ struct Contact {
 
 /// Whether two contacts are of one facet with two vertices of the other body (VF
 /// with one environment triangle, or FV with one robot triangle): their lines have
-/// the same normal n = R a1 + a2 at every angle (DESIGN.md section 4), computed from
+/// the same normal n = R a1 + a2 at every angle (docs/design.md section 4), computed from
 /// the same coordinates, so they are parallel at every angle.
 inline bool shareFacet(const Contact& a, const Contact& b) {
   if (a.kind != b.kind) return false;
@@ -66,7 +66,7 @@ ContactPoints contactPoints(const Contact& contact, const Mesh& robot, const Mes
                             const Mesh& world, const MeshTopology& worldTopology);
 
 /// The patch line of a contact as the signed contact function: positive on the free
-/// side (DESIGN.md section 3), with coefficients computed from the input points in
+/// side (docs/design.md section 3), with coefficients computed from the input points in
 /// the number type T of the evaluation (instantiated for Interval, the
 /// MultiprecisionInterval ladder and Rational):
 ///   VF, robot vertex p, environment triangle (q0, q1, q2), n = (q1 - q0) x (q2 - q0):

@@ -10,7 +10,7 @@
 
 namespace freespace {
 
-/// Why an arc of a curve ends (DESIGN.md section 6: a curve's ends are SF points or
+/// Why an arc of a curve ends (docs/design.md section 6: a curve's ends are SF points or
 /// points on a patch's horizontal boundary); more than one cause only in structural
 /// degeneracy. Patch p is 0 for the curve's first patch, 1 for its second.
 struct CurveEnd {
@@ -28,7 +28,7 @@ struct CurveEnd {
   }
 };
 
-/// Where two patches meet (DESIGN.md section 4, FF): the angles at which their
+/// Where two patches meet (docs/design.md section 4, FF): the angles at which their
 /// segments cross. At each such angle the crossing is one point moving with theta,
 /// the intersection of the two lines (Cramer's rule).
 struct PatchCurve {
@@ -44,9 +44,9 @@ struct PatchCurve {
 };
 
 /// SF: the line of a patch at a segment end (a spiral) of another patch, as an angle
-/// function (DESIGN.md section 4). When the spiral's vertex and edge lie in the
+/// function (docs/design.md section 4). When the spiral's vertex and edge lie in the
 /// contact's features, so that the translation cancels, it is an EF function up to a
-/// constant factor and carries that EF function's key (DESIGN.md section 5:
+/// constant factor and carries that EF function's key (docs/design.md section 5:
 /// identities from shared input vertices). Otherwise it carries a key of the line's
 /// input vertices and the spiral's features, so that the same SF function built for
 /// two curves has its roots recognised as one.

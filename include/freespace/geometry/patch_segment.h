@@ -11,7 +11,7 @@
 namespace freespace {
 
 /// An end point of a patch's segment: a vertex of one body on an edge of the other,
-/// a spiral point (DESIGN.md section 3). Two patches share an end exactly when their
+/// a spiral point (docs/design.md section 3). Two patches share an end exactly when their
 /// ends are equal, which is how shared spirals are recognised combinatorially.
 struct SegmentEnd {
   /// True: a robot vertex on an environment edge; false: an environment vertex on a
@@ -70,7 +70,7 @@ std::array<T, 2> spiralPoint(const Spiral<T>& spiral, const T& cosine, const T& 
   return {spiral.ux + cosine * spiral.vx - sine * spiral.vy, spiral.uy + sine * spiral.vx + cosine * spiral.vy};
 }
 
-/// The segment of a patch (DESIGN.md section 3). At a fixed angle the contact points
+/// The segment of a patch (docs/design.md section 3). At a fixed angle the contact points
 /// of the two features lie at every height both features reach, so the segment
 /// runs between the two heights where one feature's range ends:
 ///   VF: the cross-section of the environment triangle at the robot vertex's height
@@ -87,7 +87,7 @@ PatchSegment patchSegment(const Contact& contact, const Mesh& robot, const MeshT
 
 /// Throws InputError naming `sceneName` unless every vertex height of the robot and
 /// the environment is distinct from every other (the general position that
-/// perturbation provides, DESIGN.md section 5; the construction needs it).
+/// perturbation provides, docs/design.md section 5; the construction needs it).
 void requireDistinctHeights(const Mesh& robot, const Mesh& world, const std::string& sceneName);
 
 }  // namespace freespace

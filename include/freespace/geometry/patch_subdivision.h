@@ -10,7 +10,7 @@
 
 namespace freespace {
 
-/// A slab of a patch's domain (DESIGN.md section 6, step 5): the open angles between
+/// A slab of a patch's domain (docs/design.md section 6, step 5): the open angles between
 /// two consecutive events of the patch, where the same curves cross the patch's
 /// segment in the same order. The domain of a patch is (theta, lambda), lambda in
 /// [0, 1] running along the segment from its end 0 to its end 1.

@@ -9,7 +9,7 @@
 
 namespace freespace {
 
-/// Where three patches meet (DESIGN.md section 4, FFF): an angle at which the three
+/// Where three patches meet (docs/design.md section 4, FFF): an angle at which the three
 /// patch lines are concurrent at a point inside the three segments. The point is
 /// where two curves of one patch cross in that patch's domain. Usually it lies on
 /// the third curve, of the other two patches. But two patches of an overlap

@@ -6,7 +6,7 @@
 namespace freespace {
 
 /// The robot and environment with every vertex coordinate perturbed once
-/// (DESIGN.md section 5, step 1), and the record that reproduces it.
+/// (docs/design.md section 5, step 1), and the record that reproduces it.
 struct PerturbedMeshes {
   Mesh robot;
   Mesh world;

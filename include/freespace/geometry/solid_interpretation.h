@@ -40,8 +40,8 @@ struct SolidReport {
   std::vector<std::string> describe() const;
 };
 
-/// The surface of the solid a repaired soup (repairSoup) shows (docs/design.md,
-/// "Real-world meshes"). A closed, edge-manifold connected component (through shared
+/// The surface of the solid a repaired soup (repairSoup) shows (docs/design.md
+/// section 9). A closed, edge-manifold connected component (through shared
 /// edges) whose surface does not meet itself means what it always means: the solid
 /// it bounds (its triangles are turned to face outward, all alike); voids it encloses
 /// with other components stay free. Every other triangle belongs to

@@ -9,8 +9,8 @@
 
 namespace freespace {
 
-/// How far apart two points may be and still be taken for one (docs/design.md,
-/// "Real-world meshes").
+/// How far apart two points may be and still be taken for one (docs/design.md
+/// section 9).
 struct RepairSettings {
   /// The tolerance as a fraction of the diagonal of the soup's bounding box, unless
   /// `absoluteTolerance` is set.
@@ -45,8 +45,8 @@ struct RepairReport {
   std::vector<std::string> describe() const;
 };
 
-/// Repairs a soup before it is interpreted as a solid (docs/design.md, "Real-world
-/// meshes"): welds points closer than the tolerance (each cluster of points chained
+/// Repairs a soup before it is interpreted as a solid (docs/design.md section 9):
+/// welds points closer than the tolerance (each cluster of points chained
 /// by distances within it goes to its point that comes first in the soup), moves
 /// each coordinate to the most frequent value among those within the tolerance of it
 /// (axis by axis, in groups from the smallest value up, so that float noise no

@@ -18,7 +18,7 @@ struct NumberType {
   using type = T;
 };
 
-/// Evaluates the sign of a predicate at rising precision (DESIGN.md section 5):
+/// Evaluates the sign of a predicate at rising precision (docs/design.md section 5):
 /// double intervals, double-double intervals, then MPFI intervals doubling the
 /// precision at each level, then exact rationals. The first level whose interval excludes zero, or is exactly
 /// zero, decides. An exact zero is a structural identity and is counted as one.

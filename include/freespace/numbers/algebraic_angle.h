@@ -56,7 +56,7 @@ class AngleFunction {
  public:
   /// Names a function up to a nonzero constant factor: two functions with the same
   /// key have the same roots, so their roots are told apart by their index alone
-  /// (a combinatorial identity rule, DESIGN.md section 5). Keys are chosen by the
+  /// (a combinatorial identity rule, docs/design.md section 5). Keys are chosen by the
   /// caller from input feature indices and are only compared within one AngleAlgebra.
   using RootKey = std::array<std::uint32_t, 9>;
 

@@ -53,7 +53,7 @@ Polynomial<T> operator+(const Polynomial<T>& a, const Polynomial<T>& b) {
   return Polynomial<T>(std::move(sum));
 }
 
-/// A patch's line at angle theta (DESIGN.md section 3):
+/// A patch's line at angle theta (docs/design.md section 3):
 ///   (R(theta) a1 + a2) . d + k1 sin + k2 cos + k3 = 0.
 /// The coefficients are polynomials in the input coordinates, computed in the number
 /// type T of the evaluation (see geometry/patch.h), never rounded in between.
@@ -70,7 +70,7 @@ PatchLine<T> convertLine(const PatchLine<S>& line) {
 }
 
 /// A point of the plane moving with theta as d(theta) = u + R(theta) v: the spiral
-/// end points of patches (DESIGN.md section 3), where u and v are given exactly by
+/// end points of patches (docs/design.md section 3), where u and v are given exactly by
 /// input points; see spiralOfRobotVertexOnEdge and spiralOfWorldVertexOnEdge.
 template <class T>
 struct Spiral {

@@ -12,7 +12,7 @@ namespace freespace {
 /// A real number known to about 106 bits: a double-double midpoint (high + low, the
 /// low part below half an ulp of the high one) and a double radius, the whole
 /// interval [mid - radius, mid + radius] holding the exact value. It is the step
-/// between double intervals and MPFI (DESIGN.md section 5, step 3): as precise as
+/// between double intervals and MPFI (docs/design.md section 5, step 3): as precise as
 /// 108-bit MPFI and, with no allocation, about fifty times faster.
 ///
 /// The midpoint is computed with the error-free transformations of double-word

@@ -8,7 +8,7 @@
 
 namespace freespace {
 
-/// Exact algebra on angle polynomials with rational coefficients (DESIGN.md section 5,
+/// Exact algebra on angle polynomials with rational coefficients (docs/design.md section 5,
 /// step 4): square-free parts, gcds, Sturm sequences, root isolation, and the signs
 /// and orders that the predicates ask for at real algebraic roots.
 ///

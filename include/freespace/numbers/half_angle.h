@@ -4,7 +4,7 @@
 
 namespace freespace {
 
-/// An angle in tangent half-angle form (DESIGN.md section 2). Two charts cover the
+/// An angle in tangent half-angle form (docs/design.md section 2). Two charts cover the
 /// circle without a singular point:
 ///   chart 0: theta in [-pi/2, pi/2],      t = tan(theta / 2)
 ///   chart 1: theta in (pi/2, pi] or (-pi, -pi/2), t = tan((theta - pi) / 2)

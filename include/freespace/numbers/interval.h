@@ -48,7 +48,7 @@ inline void setRoundingMode(int mode) { std::fesetround(mode); }
 }  // namespace detail
 
 /// A closed interval of doubles with outward rounding: the double-interval level of
-/// the robust predicates (DESIGN.md section 5, step 2).
+/// the robust predicates (docs/design.md section 5, step 2).
 ///
 /// It stores -lower and upper and does every operation with the FPU rounding upward,
 /// so both bounds round outward with no mode switch per operation: the lower bound

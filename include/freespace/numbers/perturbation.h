@@ -5,7 +5,7 @@
 
 namespace freespace {
 
-/// How the input coordinates are perturbed once before construction (DESIGN.md
+/// How the input coordinates are perturbed once before construction (docs/design.md
 /// section 5, step 1): every coordinate moves by a uniform random amount of at most
 /// relativeSize times the scene size, so that no coincidence of unrelated features
 /// remains. Switched off, coordinates are used as given.

@@ -9,7 +9,7 @@
 
 namespace freespace {
 
-/// The kinds of predicate the statistics are kept for (DESIGN.md section 4).
+/// The kinds of predicate the statistics are kept for (docs/design.md section 4).
 enum class PredicateKind : int {
   Orientation,   // orientation determinants on points
   EdgeFacet,     // EF: sign of a degree-2 angle polynomial

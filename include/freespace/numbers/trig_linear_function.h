@@ -8,7 +8,7 @@
 
 namespace freespace {
 
-/// The angle function of a trig-linear form (EF and SF functions, DESIGN.md section
+/// The angle function of a trig-linear form (EF and SF functions, docs/design.md section
 /// 4): its charts' polynomials are tangentPolynomial of the form. `form(NumberType<T>{})`
 /// returns the TrigLinear<T> computed from double inputs, written once for every
 /// number type; `approximateForm` is its value in double intervals, which callers

@@ -40,7 +40,7 @@ struct Location {
 double peakMemoryMegabytes();
 
 /// The exact free space of a robot translating and turning among a fixed
-/// environment (DESIGN.md sections 3 to 6), built once from the two meshes: the
+/// environment (docs/design.md sections 3 to 6), built once from the two meshes: the
 /// perturbed meshes, the patches and their arrangement, its shells classified by
 /// exact collision tests and nested into free cells.
 class FreeSpace {

@@ -14,7 +14,7 @@
 
 namespace freespace {
 
-/// The arrangement of the patches (DESIGN.md section 6, steps 3 to 5): their curves,
+/// The arrangement of the patches (docs/design.md section 6, steps 3 to 5): their curves,
 /// overlaps and vertices, each patch subdivided into sub-faces, the sub-faces glued
 /// across curves, spirals and horizontal edges, and the shells they form.
 struct Arrangement {

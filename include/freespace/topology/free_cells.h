@@ -8,7 +8,7 @@
 
 namespace freespace {
 
-/// The free cells (DESIGN.md section 6, step 5): the free closed shells nested into
+/// The free cells (docs/design.md section 6, step 5): the free closed shells nested into
 /// cells by rays at fixed angles. Cell 0 is the unbounded cell, where the robot is
 /// far from the environment; the others are numbered 1, 2, ...
 ///

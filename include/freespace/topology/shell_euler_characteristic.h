@@ -7,7 +7,7 @@
 namespace freespace {
 
 /// The Euler characteristic of every shell of the arrangement, as a point set (the
-/// union of its closed sub-faces), for the topology checks of DESIGN.md section 9: a
+/// union of its closed sub-faces), for the topology checks of docs/design.md section 10: a
 /// shell bounding a free cell is a closed orientable surface, so its characteristic
 /// is even and at most 2.
 ///

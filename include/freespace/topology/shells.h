@@ -7,7 +7,7 @@
 
 namespace freespace {
 
-/// The shells of the arrangement (DESIGN.md section 6, step 5): the positive sides
+/// The shells of the arrangement (docs/design.md section 6, step 5): the positive sides
 /// of the sub-faces, joined across every glue into connected surfaces. A shell is
 /// closed when none of its sub-faces has an unmatched side; only closed shells bound
 /// free cells.

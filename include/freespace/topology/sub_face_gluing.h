@@ -19,7 +19,7 @@ struct SubFaceId {
 enum class GluedEdge { Curve, Spiral, Horizontal };
 
 /// Two sub-faces whose positive sides face the same region of the arrangement,
-/// next to each other across an edge (DESIGN.md section 6, step 5: walking from a
+/// next to each other across an edge (docs/design.md section 6, step 5: walking from a
 /// sub-face side across an edge to the angularly next side), as seen in the slice at
 /// the angle `at`: a rational angle for curves and spirals, the edge's angle for a
 /// horizontal edge (the two sub-faces meet along the edge there).
@@ -33,7 +33,7 @@ struct SubFaceGlue {
 /// The glues found across one kind of edge, and the sub-faces with a side there
 /// that nothing continues: a positive side facing another patch's negative side, or
 /// no other patch at all. Such a sub-face does not bound a free cell (its positive
-/// side is blocked), and its shell is open (DESIGN.md section 6, step 5).
+/// side is blocked), and its shell is open (docs/design.md section 6, step 5).
 struct SubFaceGluing {
   std::vector<SubFaceGlue> glues;
   std::vector<SubFaceId> unmatched;
