@@ -9,7 +9,9 @@
 // enclosed region (FCL tests surfaces only): counted on their own. Every other
 // difference is a disagreement.
 //
-// Usage: bench_fcl_agreement [--samples N] PROBLEM.cfg ...   (default: 10000 samples)
+// Usage: bench_fcl_agreement [--samples N] [--ignore-open] PROBLEM.cfg ...
+// (default: 10000 samples; --ignore-open drops triangles that enclose nothing, as the
+// command line's option does)
 #include <filesystem>
 #include <iostream>
 #include <random>
@@ -59,8 +61,8 @@ bool nearContact(const FclCollisionChecker& fcl, const Pose2& pose, bool collide
   return false;
 }
 
-void measure(const std::string& cfg, int samples) {
-  const LoadedProblem loaded = loadProblem(cfg);
+void measure(const std::string& cfg, int samples, const PreparationSettings& settings) {
+  const LoadedProblem loaded = loadProblem(cfg, nullptr, settings);
   const FclCollisionChecker fcl(robotAsRead(loaded), worldAsRead(loaded));
   const ExactCollisionChecker exact(loaded.robot, loaded.world);
   const Eigen::AlignedBox2d bounds = stateBounds(loaded);
@@ -94,18 +96,23 @@ void measure(const std::string& cfg, int samples) {
 
 int run(int argc, char** argv) {
   int samples = 10000;
+  PreparationSettings settings;
   std::vector<std::string> problems;
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
     if (argument == "--samples" && i + 1 < argc) {
       samples = static_cast<int>(benchmarks::wholeNumber(argument, argv[++i]));
+    } else if (argument == "--ignore-open") {
+      settings.solid.ignoreOpen = true;
     } else {
-      benchmarks::rejectOption(argument, "bench_fcl_agreement [--samples N] PROBLEM.cfg ...");
+      benchmarks::rejectOption(argument, "bench_fcl_agreement [--samples N] [--ignore-open] PROBLEM.cfg ...");
       problems.push_back(argument);
     }
   }
-  if (problems.empty()) throw std::invalid_argument("usage: bench_fcl_agreement [--samples N] PROBLEM.cfg ...");
-  for (const std::string& cfg : problems) measure(cfg, samples);
+  if (problems.empty()) {
+    throw std::invalid_argument("usage: bench_fcl_agreement [--samples N] [--ignore-open] PROBLEM.cfg ...");
+  }
+  for (const std::string& cfg : problems) measure(cfg, samples, settings);
   return 0;
 }
 
