@@ -12,10 +12,11 @@ std::vector<std::string> PreparationReport::changes() const {
 Mesh prepareMesh(const TriangleSoup& soup, const std::string& sourceName, const PreparationSettings& settings,
                  PreparationReport* report, std::vector<std::string>* warnings) {
   PreparationReport counts;
-  const TriangleSoup repaired = repairSoup(soup, sourceName, settings.repair, &counts.repair);
+  std::vector<std::uint32_t> pieces;
+  const TriangleSoup repaired = repairSoup(soup, sourceName, settings.repair, &counts.repair, &pieces);
   SolidSettings solidSettings = settings.solid;
   solidSettings.tolerance = counts.repair.tolerance;
-  const TriangleSoup solid = interpretSolid(repaired, sourceName, solidSettings, &counts.solid, warnings);
+  const TriangleSoup solid = interpretSolid(repaired, pieces, sourceName, solidSettings, &counts.solid, warnings);
   if (warnings) {
     for (const std::string& change : counts.changes()) warnings->push_back(sourceName + ": " + change);
   }

@@ -16,60 +16,77 @@ namespace {
 
 using Index = std::uint32_t;
 
-// One side of an edge: the triangle and the direction it runs along the edge.
+// One side of an edge within a component: the triangle and the direction it runs
+// along the edge.
 struct EdgeUse {
+  Index component;
   Index low;
   Index high;
   Index triangle;
   bool lowToHigh;
 };
 
-// Calls visit(first, count) for the run of uses of each edge.
+// Calls visit(first, count) for the run of uses of each edge of each component.
 template <class Visitor>
 void forEachEdge(const std::vector<EdgeUse>& uses, Visitor visit) {
   std::size_t first = 0;
   while (first < uses.size()) {
     std::size_t end = first + 1;
-    while (end < uses.size() && uses[end].low == uses[first].low && uses[end].high == uses[first].high) ++end;
+    while (end < uses.size() && uses[end].component == uses[first].component && uses[end].low == uses[first].low &&
+           uses[end].high == uses[first].high) {
+      ++end;
+    }
     visit(first, end - first);
     first = end;
   }
 }
 
-std::vector<EdgeUse> sortedEdgeUses(const std::vector<TriangleIndices>& triangles) {
+// The edge uses sorted by component, edge and triangle (all in component 0 when
+// `componentOf` is empty).
+std::vector<EdgeUse> sortedEdgeUses(const std::vector<TriangleIndices>& triangles,
+                                    const std::vector<Index>& componentOf) {
   std::vector<EdgeUse> uses;
   uses.reserve(3 * triangles.size());
   for (Index t = 0; t < triangles.size(); ++t) {
+    const Index component = componentOf.empty() ? 0 : componentOf[t];
     for (int corner = 0; corner < 3; ++corner) {
       const Index from = triangles[t][corner], to = triangles[t][(corner + 1) % 3];
-      uses.push_back({std::min(from, to), std::max(from, to), t, from < to});
+      uses.push_back({component, std::min(from, to), std::max(from, to), t, from < to});
     }
   }
   std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) {
+    if (a.component != b.component) return a.component < b.component;
     return a.low != b.low ? a.low < b.low : (a.high != b.high ? a.high < b.high : a.triangle < b.triangle);
   });
   return uses;
 }
 
-// Components through shared edges, and which of them are closed and edge-manifold:
-// every edge used by two triangles.
+// The components: triangles of one piece of the input (all one piece when `pieces` is
+// empty) joined through shared edges; each numbered by its first triangle.
+std::vector<Index> componentsOf(const std::vector<TriangleIndices>& triangles, const std::vector<Index>& pieces) {
+  detail::DisjointSets components(triangles.size());
+  const std::vector<EdgeUse> uses = sortedEdgeUses(triangles, pieces);
+  forEachEdge(uses, [&](std::size_t first, std::size_t count) {
+    for (std::size_t i = first + 1; i < first + count; ++i) components.unite(uses[first].triangle, uses[i].triangle);
+  });
+  std::vector<Index> componentOf(triangles.size());
+  for (Index t = 0; t < triangles.size(); ++t) componentOf[t] = components.find(t);
+  return componentOf;
+}
+
+// The components, and which of them are closed and edge-manifold: every edge of a
+// component used by two of its triangles.
 struct ComponentKinds {
   std::vector<Index> componentOf;  // of each triangle: its component's first triangle
   std::vector<bool> closed;        // indexed by that first triangle
 };
 
-ComponentKinds classifyComponents(const std::vector<TriangleIndices>& triangles, const std::vector<EdgeUse>& uses) {
-  detail::DisjointSets components(triangles.size());
-  std::vector<Index> badTriangles;
+ComponentKinds classifyComponents(std::vector<Index> componentOf, const std::vector<EdgeUse>& uses) {
+  ComponentKinds kinds{std::move(componentOf), {}};
+  kinds.closed.assign(kinds.componentOf.size(), true);
   forEachEdge(uses, [&](std::size_t first, std::size_t count) {
-    for (std::size_t i = first + 1; i < first + count; ++i) components.unite(uses[first].triangle, uses[i].triangle);
-    if (count != 2) badTriangles.push_back(uses[first].triangle);
+    if (count != 2) kinds.closed[uses[first].component] = false;
   });
-  ComponentKinds kinds;
-  kinds.componentOf.resize(triangles.size());
-  for (Index t = 0; t < triangles.size(); ++t) kinds.componentOf[t] = components.find(t);
-  kinds.closed.assign(triangles.size(), true);
-  for (Index t : badTriangles) kinds.closed[kinds.componentOf[t]] = false;
   return kinds;
 }
 
@@ -235,28 +252,37 @@ std::vector<std::string> SolidReport::describe() const {
   return lines;
 }
 
-TriangleSoup interpretSolid(const TriangleSoup& repaired, const std::string& sourceName, const SolidSettings& settings,
-                            SolidReport* report, std::vector<std::string>* warnings) {
+TriangleSoup interpretSolid(const TriangleSoup& repaired, const std::vector<std::uint32_t>& pieces,
+                            const std::string& sourceName, const SolidSettings& settings, SolidReport* report,
+                            std::vector<std::string>* warnings) {
   std::vector<TriangleIndices> triangles = repaired.triangles;
-  const std::vector<EdgeUse> uses = sortedEdgeUses(triangles);
-  ComponentKinds kinds = classifyComponents(triangles, uses);
+  std::vector<Index> componentOf = componentsOf(triangles, pieces);
+  const std::vector<EdgeUse> uses = sortedEdgeUses(triangles, componentOf);
+  ComponentKinds kinds = classifyComponents(std::move(componentOf), uses);
   SolidReport counts;
   const std::size_t turnedAgainstNeighbours = orientConsistently(triangles, uses, kinds);
   counts.trianglesTurned = turnedAgainstNeighbours + orientOutward(repaired.vertices, triangles, kinds);
   markSelfIntersectingAsSoup(repaired.vertices, triangles, kinds);
-  std::vector<TriangleIndices> closed, soup;
-  std::vector<Index> closedComponents, soupPieces;
+  std::map<Index, std::vector<TriangleIndices>> closed;  // component -> its triangles
+  std::vector<TriangleIndices> soup;
+  std::vector<Index> soupPieces;
   for (Index t = 0; t < triangles.size(); ++t) {
     const Index component = kinds.componentOf[t];
-    (kinds.closed[component] ? closed : soup).push_back(triangles[t]);
-    (kinds.closed[component] ? closedComponents : soupPieces).push_back(component);
+    if (kinds.closed[component]) {
+      closed[component].push_back(triangles[t]);
+    } else {
+      soup.push_back(triangles[t]);
+      soupPieces.push_back(component);
+    }
   }
-  counts.closedComponents = countDistinct(closedComponents);
+  counts.closedComponents = closed.size();
   counts.soupTriangles = soup.size();
   counts.soupPieces = countDistinct(soupPieces);
 
+  // Each closed component with vertices of its own: components that touch along an
+  // edge would otherwise share it with four triangles.
   TriangleSoup result;
-  appendTriangles(repaired.vertices, closed, result);
+  for (const auto& [component, componentTriangles] : closed) appendTriangles(repaired.vertices, componentTriangles, result);
   if (!soup.empty()) {
     const detail::EnclosedSolid solid = detail::enclosedSolid(repaired.vertices, soup, settings.tolerance);
     counts.capTriangles = solid.capFaces;

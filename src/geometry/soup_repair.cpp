@@ -158,7 +158,8 @@ bool flatWithinTolerance(const std::vector<Point3>& vertices, const TriangleIndi
   return (b - a).cross(c - a).norm() <= tolerance * longest;
 }
 
-void dropZeroAreaAndDuplicates(TriangleSoup& soup, double tolerance, RepairReport& report) {
+void dropZeroAreaAndDuplicates(TriangleSoup& soup, std::vector<Index>& pieces, double tolerance,
+                               RepairReport& report) {
   std::vector<std::pair<TriangleIndices, Index>> byVertexSet;  // sorted corners, triangle
   byVertexSet.reserve(soup.triangles.size());
   for (Index t = 0; t < soup.triangles.size(); ++t) {
@@ -188,11 +189,15 @@ void dropZeroAreaAndDuplicates(TriangleSoup& soup, double tolerance, RepairRepor
     }
   }
   std::vector<TriangleIndices> remaining;
+  std::vector<Index> remainingPieces;
   remaining.reserve(byVertexSet.size());
   for (Index t = 0; t < soup.triangles.size(); ++t) {
-    if (kept[t]) remaining.push_back(soup.triangles[t]);
+    if (!kept[t]) continue;
+    remaining.push_back(soup.triangles[t]);
+    remainingPieces.push_back(pieces[t]);
   }
   soup.triangles = std::move(remaining);
+  pieces = std::move(remainingPieces);
 }
 
 // ---------------------------------------------------------------------------
@@ -369,23 +374,29 @@ class EarClipper {
 
 // Inserts every junction vertex into the edges it lies on: each triangle along such
 // an edge is replaced by a triangulation of its corners and the inserted vertices.
-void snapJunctions(TriangleSoup& soup, double tolerance, RepairReport& report) {
+void snapJunctions(TriangleSoup& soup, std::vector<Index>& pieces, double tolerance, RepairReport& report) {
   const std::map<EdgeKey, std::vector<Index>> junctions = junctionsOnEdges(soup, tolerance);
   if (junctions.empty()) return;
   for (const auto& [key, vertices] : junctions) report.verticesSnapped += vertices.size();
   PredicateStatistics statistics;
   EarClipper clipper(soup.vertices, statistics);
   std::vector<TriangleIndices> result;
-  for (const TriangleIndices& triangle : soup.triangles) {
-    std::vector<Index> boundary = boundaryWithJunctions(triangle, junctions);
+  std::vector<Index> resultPieces;
+  for (Index t = 0; t < soup.triangles.size(); ++t) {
+    std::vector<Index> boundary = boundaryWithJunctions(soup.triangles[t], junctions);
     if (boundary.size() == 3) {
-      result.push_back(triangle);
+      result.push_back(soup.triangles[t]);
+      resultPieces.push_back(pieces[t]);
       continue;
     }
     ++report.trianglesSplit;
-    for (const TriangleIndices& piece : clipper.triangulate(std::move(boundary), triangle)) result.push_back(piece);
+    for (const TriangleIndices& part : clipper.triangulate(std::move(boundary), soup.triangles[t])) {
+      result.push_back(part);
+      resultPieces.push_back(pieces[t]);
+    }
   }
   soup.triangles = std::move(result);
+  pieces = std::move(resultPieces);
 }
 
 double toleranceFor(const TriangleSoup& soup, const RepairSettings& settings, RepairReport& report) {
@@ -440,7 +451,7 @@ std::vector<std::string> RepairReport::describe() const {
 }
 
 TriangleSoup repairSoup(const TriangleSoup& soup, const std::string& sourceName, const RepairSettings& settings,
-                        RepairReport* report) {
+                        RepairReport* report, std::vector<std::uint32_t>* pieces) {
   detail::requireFiniteCoordinates(soup, sourceName);
   detail::requireTriangles(soup, sourceName);
   detail::requireIndicesInRange(soup, sourceName);
@@ -449,14 +460,17 @@ TriangleSoup repairSoup(const TriangleSoup& soup, const std::string& sourceName,
   counts.inputTriangles = soup.triangles.size();
   counts.tolerance = toleranceFor(soup, settings, counts);
 
+  std::vector<Index> piece = soup.pieces.size() == soup.triangles.size() ? soup.pieces
+                                                                         : std::vector<Index>(soup.triangles.size(), 0);
   TriangleSoup repaired = weldWithinTolerance(detail::weldIdenticalVertices(soup), counts.tolerance, counts);
   const std::size_t snappedBefore = counts.coordinatesSnapped;
   snapCoordinates(repaired, counts.tolerance, counts);
   if (counts.coordinatesSnapped > snappedBefore) repaired = detail::weldIdenticalVertices(repaired);
-  dropZeroAreaAndDuplicates(repaired, counts.tolerance, counts);
-  snapJunctions(repaired, counts.tolerance, counts);
-  dropZeroAreaAndDuplicates(repaired, counts.tolerance, counts);
+  dropZeroAreaAndDuplicates(repaired, piece, counts.tolerance, counts);
+  snapJunctions(repaired, piece, counts.tolerance, counts);
+  dropZeroAreaAndDuplicates(repaired, piece, counts.tolerance, counts);
   detail::dropUnusedVertices(repaired);
+  if (pieces) *pieces = std::move(piece);
   counts.outputVertices = repaired.vertices.size();
   counts.outputTriangles = repaired.triangles.size();
   if (report) *report = counts;

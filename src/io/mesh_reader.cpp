@@ -46,10 +46,10 @@ constexpr unsigned kOmplAppImportFlags = aiProcess_GenNormals | aiProcess_Triang
 // Appends the triangles of `node`'s meshes, and of its descendants', placed by the
 // transform accumulated from the root, and adds every vertex of those meshes to
 // `vertexSum`. Both are computed in single precision as OMPL.app computes them, so the
-// positions and the sum are OMPL.app's to the bit. Point and line primitives add no
-// triangles.
+// positions and the sum are OMPL.app's to the bit. Each mesh a node holds is a piece
+// of its own. Point and line primitives add no triangles.
 void collectTriangles(const aiScene& scene, const aiNode& node, aiMatrix4x4 transform, ImportedMesh& imported,
-                      aiVector3D& vertexSum, std::size_t& vertexCount) {
+                      aiVector3D& vertexSum, std::size_t& vertexCount, std::size_t& pieceCount) {
   transform *= node.mTransformation;
   for (unsigned m = 0; m < node.mNumMeshes; ++m) {
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
@@ -61,15 +61,17 @@ void collectTriangles(const aiScene& scene, const aiNode& node, aiMatrix4x4 tran
       vertexSum += placed;
     }
     vertexCount += mesh.mNumVertices;
+    const auto piece = static_cast<std::uint32_t>(pieceCount++);
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
       if (face.mNumIndices != 3) continue;
       soup.triangles.push_back({firstVertex + face.mIndices[0], firstVertex + face.mIndices[1],
                                 firstVertex + face.mIndices[2]});
+      soup.pieces.push_back(piece);
     }
   }
   for (unsigned c = 0; c < node.mNumChildren; ++c) {
-    collectTriangles(scene, *node.mChildren[c], transform, imported, vertexSum, vertexCount);
+    collectTriangles(scene, *node.mChildren[c], transform, imported, vertexSum, vertexCount, pieceCount);
   }
 }
 
@@ -82,8 +84,10 @@ ImportedMesh importWithAssimp(const std::string& path) {
   if (!scene) throw InputError(path, std::string("cannot read mesh: ") + importer.GetErrorString());
   ImportedMesh imported;
   aiVector3D vertexSum(0, 0, 0);
-  std::size_t vertexCount = 0;
-  if (scene->mRootNode) collectTriangles(*scene, *scene->mRootNode, aiMatrix4x4(), imported, vertexSum, vertexCount);
+  std::size_t vertexCount = 0, pieceCount = 0;
+  if (scene->mRootNode) {
+    collectTriangles(*scene, *scene->mRootNode, aiMatrix4x4(), imported, vertexSum, vertexCount, pieceCount);
+  }
   if (vertexCount > 0) vertexSum /= static_cast<float>(vertexCount);
   imported.vertexAverage = Point3(vertexSum.x, vertexSum.y, vertexSum.z);
   return imported;

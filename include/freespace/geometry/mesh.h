@@ -19,6 +19,9 @@ using Box3 = Eigen::AlignedBox3d;
 struct TriangleSoup {
   std::vector<Point3> vertices;
   std::vector<TriangleIndices> triangles;
+  /// Optional: the object of the file each triangle belongs to (a mesh of a COLLADA
+  /// node, a group of an OBJ file), numbered from 0; empty when not known.
+  std::vector<std::uint32_t> pieces = {};
 };
 
 /// How Mesh::fromSoup tells which triangles share a vertex.

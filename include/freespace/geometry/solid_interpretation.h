@@ -41,27 +41,29 @@ struct SolidReport {
 };
 
 /// The surface of the solid a repaired soup (repairSoup) shows (docs/design.md
-/// section 9). A closed, edge-manifold connected component (through shared
-/// edges) whose surface does not meet itself means what it always means: the solid
-/// it bounds (its triangles are turned to face outward, all alike); voids it encloses
-/// with other components stay free. Every other triangle belongs to
-/// the soup, whose solid is everything the soup's triangles enclose: the complement of
-/// the unbounded region of space minus those triangles, found exactly (the
-/// triangles are refined along their intersections, then the regions they bound are
-/// told apart by walking around edges and by rays). A planar opening, where a face
+/// section 9). Its components are its triangles joined through shared edges within
+/// one piece of the input (`pieces`, from repairSoup: a file's objects; empty when not
+/// known, then the whole soup is one piece). A component that is
+/// closed and edge-manifold and whose surface does not meet itself means what it always
+/// means: the solid it bounds (its triangles are turned to face outward, all alike);
+/// voids that such components enclose together stay free. Every other triangle
+/// belongs to the soup, whose solid is everything the soup's triangles enclose: the
+/// complement of the unbounded region of space minus those triangles, found exactly
+/// (the triangles are refined along their intersections, then the regions they bound
+/// are told apart by walking around edges and by rays). A planar opening, where a face
 /// was left out (the bottom of a wall, of a car), is closed by a cap of the plane's
 /// region the opening's edges bound, where the cap separates an enclosed region from
-/// the outside. The result holds the closed
-/// components with their vertices as given, then the boundary of the soup's solid,
-/// facing out, as closed edge-manifold components with vertices of their own
-/// (components touching along an edge or at a vertex stay apart). No component of the
-/// result meets itself (checked exactly): build a Mesh from it with
-/// VertexWelding::asIndexed and SelfIntersectionCheck::alreadyDone. New vertices (where triangles cross) are rounded to
-/// doubles. Triangles that enclose nothing (an open sheet, a zero-thickness wall, a
+/// the outside and makes less than half of its boundary. The result holds the closed
+/// components, then the boundary of the soup's solid, facing out, as closed
+/// edge-manifold components; every component has vertices of its own (components
+/// touching along an edge or at a vertex stay apart). No component of the result meets
+/// itself (checked exactly): build a Mesh from it with VertexWelding::asIndexed and
+/// SelfIntersectionCheck::alreadyDone. New vertices (where triangles cross) are rounded
+/// to doubles. Triangles that enclose nothing (an open sheet, a zero-thickness wall, a
 /// crack) are an InputError naming `sourceName`, how many and where, unless
 /// settings.ignoreOpen, which drops them and appends the same facts to `warnings`.
-TriangleSoup interpretSolid(const TriangleSoup& repaired, const std::string& sourceName,
-                            const SolidSettings& settings = {}, SolidReport* report = nullptr,
-                            std::vector<std::string>* warnings = nullptr);
+TriangleSoup interpretSolid(const TriangleSoup& repaired, const std::vector<std::uint32_t>& pieces,
+                            const std::string& sourceName, const SolidSettings& settings = {},
+                            SolidReport* report = nullptr, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace freespace

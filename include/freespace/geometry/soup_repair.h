@@ -57,10 +57,12 @@ struct RepairReport {
 /// sliver) and all but the first of triangles on the same three vertices, in either
 /// orientation. The result
 /// has distinct vertices, each used by a triangle, in the order of their first use;
-/// triangles keep their order. Throws InputError naming `sourceName` for a
-/// non-finite coordinate, an index out of range or no triangles, and
-/// std::invalid_argument for a negative or non-finite tolerance.
+/// triangles keep their order. `pieces`, when given, receives for each triangle of
+/// the result the piece of the input it comes from (soup.pieces; all 0 when the soup
+/// does not say). Throws InputError
+/// naming `sourceName` for a non-finite coordinate, an index out of range or no
+/// triangles, and std::invalid_argument for a negative or non-finite tolerance.
 TriangleSoup repairSoup(const TriangleSoup& soup, const std::string& sourceName, const RepairSettings& settings,
-                        RepairReport* report = nullptr);
+                        RepairReport* report = nullptr, std::vector<std::uint32_t>* pieces = nullptr);
 
 }  // namespace freespace
