@@ -8,12 +8,16 @@
 
 #include "freespace/input_error.h"
 #include "disjoint_sets.h"
+#include "edge_uses.h"
 #include "soup_checks.h"
 #include "surface_self_intersection.h"
 
 namespace freespace {
 namespace {
 
+using detail::EdgeUse;
+using detail::forEachEdge;
+using detail::sortedEdgeUses;
 using detail::vertexLocations;
 
 using Index = std::uint32_t;
@@ -79,48 +83,6 @@ void requireDistinctTriangles(const TriangleSoup& surface, const std::string& so
 
 // ---------------------------------------------------------------------------
 // Edges: manifold, closed, consistently oriented
-
-// One side of an undirected edge: the triangle and the direction it runs along it.
-struct EdgeUse {
-  Index low;   // the edge's vertices, low < high
-  Index high;
-  Index triangle;
-  bool lowToHigh;
-};
-
-// Edge uses sorted by edge, then by triangle.
-std::vector<EdgeUse> sortedEdgeUses(const std::vector<TriangleIndices>& triangles) {
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * triangles.size());
-  for (Index t = 0; t < triangles.size(); ++t) {
-    for (int corner = 0; corner < 3; ++corner) {
-      const Index from = triangles[t][corner];
-      const Index to = triangles[t][(corner + 1) % 3];
-      uses.push_back({std::min(from, to), std::max(from, to), t, from < to});
-    }
-  }
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) {
-    if (a.low != b.low) return a.low < b.low;
-    if (a.high != b.high) return a.high < b.high;
-    return a.triangle < b.triangle;
-  });
-  return uses;
-}
-
-// Calls visit(first, count) for the run of uses of each edge.
-template <typename Visitor>
-void forEachEdge(const std::vector<EdgeUse>& uses, Visitor visit) {
-  std::size_t first = 0;
-  while (first < uses.size()) {
-    std::size_t end = first + 1;
-    while (end < uses.size() && uses[end].low == uses[first].low &&
-           uses[end].high == uses[first].high) {
-      ++end;
-    }
-    visit(first, end - first);
-    first = end;
-  }
-}
 
 // Edges shared by more than two triangles are reported before open edges: they
 // are the cause, open edges often only a consequence.

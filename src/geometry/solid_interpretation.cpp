@@ -5,6 +5,7 @@
 #include <map>
 
 #include "disjoint_sets.h"
+#include "edge_uses.h"
 #include "freespace/input_error.h"
 #include "soup_checks.h"
 #include "soup_enclosure.h"
@@ -16,50 +17,9 @@ namespace {
 
 using Index = std::uint32_t;
 
-// One side of an edge within a component: the triangle and the direction it runs
-// along the edge.
-struct EdgeUse {
-  Index component;
-  Index low;
-  Index high;
-  Index triangle;
-  bool lowToHigh;
-};
-
-// Calls visit(first, count) for the run of uses of each edge of each component.
-template <class Visitor>
-void forEachEdge(const std::vector<EdgeUse>& uses, Visitor visit) {
-  std::size_t first = 0;
-  while (first < uses.size()) {
-    std::size_t end = first + 1;
-    while (end < uses.size() && uses[end].component == uses[first].component && uses[end].low == uses[first].low &&
-           uses[end].high == uses[first].high) {
-      ++end;
-    }
-    visit(first, end - first);
-    first = end;
-  }
-}
-
-// The edge uses sorted by component, edge and triangle (all in component 0 when
-// `componentOf` is empty).
-std::vector<EdgeUse> sortedEdgeUses(const std::vector<TriangleIndices>& triangles,
-                                    const std::vector<Index>& componentOf) {
-  std::vector<EdgeUse> uses;
-  uses.reserve(3 * triangles.size());
-  for (Index t = 0; t < triangles.size(); ++t) {
-    const Index component = componentOf.empty() ? 0 : componentOf[t];
-    for (int corner = 0; corner < 3; ++corner) {
-      const Index from = triangles[t][corner], to = triangles[t][(corner + 1) % 3];
-      uses.push_back({component, std::min(from, to), std::max(from, to), t, from < to});
-    }
-  }
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b) {
-    if (a.component != b.component) return a.component < b.component;
-    return a.low != b.low ? a.low < b.low : (a.high != b.high ? a.high < b.high : a.triangle < b.triangle);
-  });
-  return uses;
-}
+using detail::EdgeUse;
+using detail::forEachEdge;
+using detail::sortedEdgeUses;
 
 // The components: triangles of one piece of the input (all one piece when `pieces` is
 // empty) joined through shared edges; each numbered by its first triangle.
@@ -85,7 +45,7 @@ ComponentKinds classifyComponents(std::vector<Index> componentOf, const std::vec
   ComponentKinds kinds{std::move(componentOf), {}};
   kinds.closed.assign(kinds.componentOf.size(), true);
   forEachEdge(uses, [&](std::size_t first, std::size_t count) {
-    if (count != 2) kinds.closed[uses[first].component] = false;
+    if (count != 2) kinds.closed[uses[first].group] = false;
   });
   return kinds;
 }
