@@ -204,6 +204,31 @@ TEST(SolidInterpretation, AnOpenSheetIsAnErrorSayingWhereUnlessIgnored) {
   }));
 }
 
+TEST(SolidInterpretation, AnOpenSheetBeyondTheOtherBodysHeightsIsDroppedAndReported) {
+  // A stray sheet 0.5 under the floor of a unit box: a robot spanning heights [0, 2]
+  // can never touch it; one reaching down to -1 can.
+  TriangleSoup sheet;
+  sheet.vertices = {{0, 0, -0.5}, {1, 0, -0.5}, {1, 1, -0.5}, {0, 1, -0.5}};
+  sheet.triangles = {{0, 1, 2}, {0, 2, 3}};
+  const TriangleSoup soup = joinSoups({soupOf(box(0, 0, 0, 1, 1, 1)), doubleSided(sheet)});
+  PreparationSettings settings;
+  settings.solid.otherBodyHeights = {{0, 2}};
+  PreparationReport report;
+  std::vector<std::string> warnings;
+  const Mesh mesh = prepareMesh(soup, "soup", settings, &report, &warnings);
+  EXPECT_DOUBLE_EQ(mesh.volume(), 1);
+  EXPECT_EQ(report.solid.outOfReach.sourceTriangles, 2u);
+  EXPECT_EQ(report.solid.open.sourceTriangles, 0u);
+  EXPECT_EQ(report.solid.outOfReach.bounds.max().z(), -0.5);
+  EXPECT_TRUE(std::any_of(warnings.begin(), warnings.end(), [](const std::string& warning) {
+    return warning.find("soup: 2 triangles that enclose nothing dropped where the other body can never touch them") == 0;
+  }));
+  settings.solid.otherBodyHeights = {{-1, 2}};
+  EXPECT_THROW(prepareMesh(soup, "soup", settings), InputError);
+  settings.solid.otherBodyHeights = {{-0.5, 2}};
+  EXPECT_THROW(prepareMesh(soup, "soup", settings), InputError) << "a sheet at the other body's lowest height touches it";
+}
+
 TEST(SolidInterpretation, ACrackWiderThanTheToleranceIsAnError) {
   // A unit cube torn open along its edge x = 1, z = 1: the top stops at x = 0.999 and
   // the side x = 1 at z = 0.999, so the slot between them bends around the edge and

@@ -52,13 +52,15 @@ nlohmann::json preparationJson(const PreparationReport& report) {
       {"cap_triangles", solid.capTriangles},
       {"edges_separated", solid.separatedEdges},
       {"internal_triangles_dropped", solid.internalTriangles},
-      {"open_triangles_dropped", solid.openSourceTriangles},
+      {"open_triangles_dropped", solid.open.sourceTriangles},
+      {"out_of_reach_open_triangles_dropped", solid.outOfReach.sourceTriangles},
   };
-  if (solid.openSourceTriangles > 0) {
-    const Box3& box = solid.openBounds;
-    json["open_bounds"] = {{"min", {box.min().x(), box.min().y(), box.min().z()}},
-                           {"max", {box.max().x(), box.max().y(), box.max().z()}}};
-  }
+  const auto boxJson = [](const Box3& box) {
+    return nlohmann::json{{"min", {box.min().x(), box.min().y(), box.min().z()}},
+                          {"max", {box.max().x(), box.max().y(), box.max().z()}}};
+  };
+  if (solid.open.pieces > 0) json["open_bounds"] = boxJson(solid.open.bounds);
+  if (solid.outOfReach.pieces > 0) json["out_of_reach_open_bounds"] = boxJson(solid.outOfReach.bounds);
   return json;
 }
 

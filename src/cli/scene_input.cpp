@@ -29,10 +29,7 @@ LoadedProblem SceneInput::load() const {
   if (!cfg_.empty()) {
     loaded = loadProblem(cfg_, &warnings, preparation_.settings());
   } else if (meshes_.size() == 2) {
-    loaded.robot = loadMesh(meshes_[0], &warnings, preparation_.settings(), &loaded.robotPreparation);
-    loaded.world = loadMesh(meshes_[1], &warnings, preparation_.settings(), &loaded.worldPreparation);
-    loaded.problem.robot = meshes_[0];
-    loaded.problem.world = meshes_[1];
+    loaded = loadRobotAndWorld(meshes_[0], meshes_[1], &warnings, preparation_.settings());
   } else {
     throw CLI::ValidationError("input", "give either --cfg FILE or ROBOT WORLD");
   }

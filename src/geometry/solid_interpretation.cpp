@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <tuple>
 
 #include "disjoint_sets.h"
 #include "edge_uses.h"
@@ -145,12 +146,32 @@ std::size_t countDistinct(std::vector<Index> values) {
   return static_cast<std::size_t>(std::unique(values.begin(), values.end()) - values.begin());
 }
 
-std::string openTrianglesText(const detail::EnclosedSolid& solid) {
-  const std::size_t count = solid.openSourceTriangles.size();
+// Sorts the faces that enclose nothing into those the other body may touch and those
+// entirely below or above its heights by more than the tolerance.
+std::pair<OpenTriangles, OpenTriangles> openTriangles(const std::vector<detail::OpenFace>& faces,
+                                                      const SolidSettings& settings) {
+  std::vector<Index> inReachSources, outOfReachSources;
+  OpenTriangles inReach, outOfReach;
+  for (const detail::OpenFace& face : faces) {
+    const auto& heights = settings.otherBodyHeights;
+    const bool beyond = heights && (face.bounds.max().z() < (*heights)[0] - settings.tolerance ||
+                                    face.bounds.min().z() > (*heights)[1] + settings.tolerance);
+    OpenTriangles& kind = beyond ? outOfReach : inReach;
+    ++kind.pieces;
+    kind.bounds.extend(face.bounds);
+    (beyond ? outOfReachSources : inReachSources).push_back(face.sourceTriangle);
+  }
+  inReach.sourceTriangles = countDistinct(inReachSources);
+  outOfReach.sourceTriangles = countDistinct(outOfReachSources);
+  return {inReach, outOfReach};
+}
+
+std::string openTrianglesText(const OpenTriangles& open) {
+  const std::size_t count = open.sourceTriangles;
   return std::to_string(count) + (count == 1 ? " triangle encloses" : " triangles enclose") +
          " nothing (an open sheet, a zero-thickness wall or a crack wider than the tolerance): no volume lies "
-         "behind " + (count == 1 ? "it" : "them") + ", between " + detail::formatPoint(solid.openBounds.min()) +
-         " and " + detail::formatPoint(solid.openBounds.max());
+         "behind " + (count == 1 ? "it" : "them") + ", between " + detail::formatPoint(open.bounds.min()) +
+         " and " + detail::formatPoint(open.bounds.max());
 }
 
 // The boundary's components meet themselves nowhere in exact arithmetic; rounding the
@@ -202,7 +223,13 @@ std::vector<std::string> SolidReport::describe() const {
       lines.push_back(countOf(separatedEdges, "edge") + " along which the solid touches itself: the pieces meeting "
                       "there moved apart by the tolerance");
     }
-    if (openTriangles > 0) lines.push_back(countOf(openSourceTriangles, "triangle") + " that enclose nothing dropped");
+    if (open.pieces > 0) lines.push_back(countOf(open.sourceTriangles, "triangle") + " that enclose nothing dropped");
+    if (outOfReach.pieces > 0) {
+      lines.push_back(countOf(outOfReach.sourceTriangles, "triangle") + " that enclose nothing dropped where the other "
+                      "body can never touch them (beyond its heights), between " +
+                      detail::formatPoint(outOfReach.bounds.min()) + " and " +
+                      detail::formatPoint(outOfReach.bounds.max()));
+    }
     if (closedComponents > 0) lines.push_back(countOf(closedComponents, "closed component") + " kept as they are");
   }
   if (trianglesTurned > 0) {
@@ -253,14 +280,12 @@ TriangleSoup interpretSolid(const TriangleSoup& repaired, const std::vector<std:
     counts.solids = solid.components;
     counts.boundaryTriangles = solid.boundary.triangles.size();
     counts.internalTriangles = solid.internalFaces;
-    counts.openTriangles = solid.openFaces;
-    counts.openSourceTriangles = solid.openSourceTriangles.size();
-    counts.openBounds = solid.openBounds;
-    if (solid.openFaces > 0) {
+    std::tie(counts.open, counts.outOfReach) = openTriangles(solid.openFaces, settings);
+    if (counts.open.pieces > 0) {
       if (!settings.ignoreOpen) {
-        throw InputError(sourceName, openTrianglesText(solid) + "; --ignore-open drops them with a warning");
+        throw InputError(sourceName, openTrianglesText(counts.open) + "; --ignore-open drops them with a warning");
       }
-      if (warnings) warnings->push_back(sourceName + ": " + openTrianglesText(solid) + ": dropped (--ignore-open)");
+      if (warnings) warnings->push_back(sourceName + ": " + openTrianglesText(counts.open) + ": dropped (--ignore-open)");
     }
     requireSimpleBoundary(solid, sourceName);
     appendTriangles(solid.boundary.vertices, solid.boundary.triangles, result);

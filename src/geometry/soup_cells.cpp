@@ -308,13 +308,13 @@ class Cells {
   std::vector<bool> bounded_;
 };
 
-void recordOpenFace(const SoupComplex& complex, Index face, EnclosedSolid& solid) {
-  ++solid.openFaces;
-  solid.openSourceTriangles.push_back(complex.sourceTriangle[face]);
+OpenFace openFace(const SoupComplex& complex, Index face) {
+  OpenFace open{complex.sourceTriangle[face], {}};
   for (Index corner : complex.faces[face]) {
     const ExactPoint& point = complex.points[corner];
-    solid.openBounds.extend(Point3(CGAL::to_double(point.x()), CGAL::to_double(point.y()), CGAL::to_double(point.z())));
+    open.bounds.extend(Point3(CGAL::to_double(point.x()), CGAL::to_double(point.y()), CGAL::to_double(point.z())));
   }
+  return open;
 }
 
 // The complex without the faces of withdrawn caps (soup triangles from firstCap on).
@@ -408,13 +408,10 @@ EnclosedSolid classifiedFaces(const SoupComplex& complex, const EdgeFans& fans, 
     } else if (!cap && !frontOutside) {
       ++solid.internalFaces;
     } else if (!cap && !isSliver(complex, face, tolerance)) {
-      recordOpenFace(complex, face, solid);
+      solid.openFaces.push_back(openFace(complex, face));
     }
   }
   assembleBoundary(complex, boundaryFaces, pairings, tolerance, solid);
-  std::sort(solid.openSourceTriangles.begin(), solid.openSourceTriangles.end());
-  solid.openSourceTriangles.erase(std::unique(solid.openSourceTriangles.begin(), solid.openSourceTriangles.end()),
-                                  solid.openSourceTriangles.end());
   return solid;
 }
 

@@ -11,6 +11,12 @@
 
 namespace freespace::detail {
 
+/// A face that encloses nothing: the soup triangle it lies in and a box holding it.
+struct OpenFace {
+  std::uint32_t sourceTriangle = 0;
+  Box3 bounds;
+};
+
 /// The solid a soup encloses: the complement of the unbounded region of space
 /// minus the faces (docs/design.md section 9).
 struct EnclosedSolid {
@@ -27,10 +33,9 @@ struct EnclosedSolid {
   std::size_t refinedTriangles = 0;   // soup triangles split along their intersections
   std::size_t boundedCells = 0;       // connected regions of space enclosed by the faces
   std::size_t internalFaces = 0;      // faces with the solid on both sides (dropped)
-  std::size_t openFaces = 0;          // faces with the unbounded region on both sides (they enclose nothing)
   std::size_t capFaces = 0;           // boundary faces that lie in caps
-  std::vector<std::uint32_t> openSourceTriangles;  // the soup triangles they lie in, without repeats
-  Box3 openBounds;                                 // a box holding them
+  /// Faces with the unbounded region on both sides (they enclose nothing).
+  std::vector<OpenFace> openFaces;
 };
 
 /// The solid that a soup's triangles enclose, with caps for its planar openings

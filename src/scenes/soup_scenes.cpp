@@ -169,9 +169,12 @@ Scene soupPiecesScene() {
   for (const Box3& box : {west, east, crossX, crossY, overlapA, overlapB, beam}) closed.push_back(makeBox(box));
   closed.push_back(touchingBoxes(edgeBox, Contact::edge));
   closed.push_back(touchingBoxes(vertexBox, Contact::vertex));
+  // A stray triangle under the floor, as left where a modeller triangulated a
+  // bottom past its outline: it encloses nothing, but the robot never reaches it.
+  const TriangleSoup strayUnderFloor{{{-3, -3, -kSceneGrid}, {3, -3, -kSceneGrid}, {0, 3, -kSceneGrid}}, {{0, 1, 2}}};
   std::vector<TriangleSoup> written = closed;
-  for (const TriangleSoup& piece :
-       {wallWithBuriedEnds(south), wallWithBuriedEnds(north), touchingBoxes(faceBox, Contact::face)}) {
+  for (const TriangleSoup& piece : {wallWithBuriedEnds(south), wallWithBuriedEnds(north),
+                                    touchingBoxes(faceBox, Contact::face), strayUnderFloor}) {
     written.push_back(piece);
   }
   // The boxes that share a face are one box in the solid.
@@ -186,8 +189,9 @@ Scene soupPiecesScene() {
       "and north walls 0.75 high reaching to the middle of them with their end caps missing (buried: each piece "
       "open, the union closed). In the middle walls 0.5 and 0.75 high cross, and in the quarters they leave two "
       "boxes share a face, two touch along part of an edge, two at a corner and two interpenetrate; a beam from "
-      "the west wall at z 0.625 to 0.875 spans the free ring around them above the robot. Every triangle is "
-      "written twice, once in each orientation, without noise; the solid is the union of the boxes. From the "
+      "the west wall at z 0.625 to 0.875 spans the free ring around them above the robot, and a stray "
+      "triangle lies 1/64 under the floor, where the robot never reaches (it encloses nothing and is not part of "
+      "the solid). Every triangle is written twice, once in each orientation, without noise; the solid is the union of the boxes. From the "
       "south-west of the ring to the north-east. Solvable.");
 }
 

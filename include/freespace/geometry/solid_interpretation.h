@@ -1,6 +1,8 @@
 #pragma once
 
+#include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,6 +17,18 @@ struct SolidSettings {
   /// plane of an opening count as lying in it, and faces enclosing nothing that are
   /// no thicker than this are slivers, dropped without a word.
   double tolerance = 0;
+  /// The heights the other body spans (the world's for a robot, the robot's for a
+  /// world), when known: triangles that enclose nothing and lie entirely below or above
+  /// them, by more than the tolerance, can never touch it, so they are dropped with a
+  /// report instead of refused (a stray sheet under the floor of a plan).
+  std::optional<std::array<double, 2>> otherBodyHeights;
+};
+
+/// Triangles that enclose nothing: how many pieces, from how many repaired triangles, where.
+struct OpenTriangles {
+  std::size_t pieces = 0;
+  std::size_t sourceTriangles = 0;
+  Box3 bounds;
 };
 
 /// What the interpretation found and changed.
@@ -31,9 +45,8 @@ struct SolidReport {
   std::size_t capTriangles = 0;       // triangles added to close planar openings (left-out faces)
   std::size_t separatedEdges = 0;     // edges along which the solid touched itself, its pieces moved apart
   std::size_t internalTriangles = 0;  // pieces of triangles inside the solid, dropped
-  std::size_t openTriangles = 0;      // pieces of triangles that enclose nothing
-  std::size_t openSourceTriangles = 0;  // repaired soup triangles they come from
-  Box3 openBounds;                      // where they are
+  OpenTriangles open;                 // triangles that enclose nothing (refused unless ignoreOpen)
+  OpenTriangles outOfReach;           // those of them the other body can never touch (dropped)
 
   /// Lines for a user: what was kept, merged and dropped; empty when the mesh was
   /// made of closed components only.
@@ -61,7 +74,8 @@ struct SolidReport {
 /// SelfIntersectionCheck::alreadyDone. New vertices (where triangles cross) are rounded
 /// to doubles. Triangles that enclose nothing (an open sheet, a zero-thickness wall, a
 /// crack) are an InputError naming `sourceName`, how many and where, unless
-/// settings.ignoreOpen, which drops them and appends the same facts to `warnings`.
+/// settings.ignoreOpen, which drops them and appends the same facts to `warnings`, or
+/// they lie beyond settings.otherBodyHeights (then they are dropped and reported).
 TriangleSoup interpretSolid(const TriangleSoup& repaired, const std::vector<std::uint32_t>& pieces,
                             const std::string& sourceName, const SolidSettings& settings = {},
                             SolidReport* report = nullptr, std::vector<std::string>* warnings = nullptr);

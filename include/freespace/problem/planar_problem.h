@@ -82,8 +82,15 @@ struct LoadedProblem {
   PreparationReport worldPreparation;
 };
 
-/// Reads the .cfg and loads its meshes (loadMesh, with `settings`); warnings and
-/// every change made to the meshes are appended to `warnings`.
+/// Loads a robot and a world from mesh files (loadMesh, with `settings`), each
+/// prepared knowing the heights the other's triangles span
+/// (SolidSettings::otherBodyHeights); warnings and every change made to the meshes
+/// are appended to `warnings`. The problem holds the two paths only.
+LoadedProblem loadRobotAndWorld(const std::string& robotPath, const std::string& worldPath,
+                                std::vector<std::string>* warnings = nullptr, const PreparationSettings& settings = {});
+
+/// Reads the .cfg and loads its meshes as loadRobotAndWorld does, the robot placed
+/// as OMPL.app places it (see LoadedProblem).
 LoadedProblem loadProblem(const std::string& cfgPath, std::vector<std::string>* warnings = nullptr,
                           const PreparationSettings& settings = {});
 
