@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "freespace/geometry/perturbed_meshes.h"
+#include "freespace/input_error.h"
+#include "freespace/scenes/scene_generator.h"
 #include "test_meshes.h"
 
 using namespace freespace;
@@ -34,4 +38,31 @@ TEST(PerturbedMeshes, SwitchedOffLeavesTheMeshesAlone) {
   EXPECT_EQ(same.world.vertices(), world.vertices());
   EXPECT_FALSE(same.record.enabled);
   EXPECT_EQ(same.record.absoluteSize, 0.0);
+}
+
+// A square ring 4 wide cut through by a slit `gap` wide: its two sides face each other
+// across the slit, so a perturbation much larger than the gap makes them cross.
+Mesh slitRing(double gap) {
+  const Polygon2 outline{{0, 0}, {4, 0}, {4, 4}, {0, 4}, {0, 2 + gap}, {1, 2 + gap},
+                         {1, 3}, {3, 3}, {3, 1}, {1, 1},  {1, 2},       {0, 2}};
+  return makeCheckedMesh(extrudePolygon(outline, 0, 1), "slit ring");
+}
+
+TEST(PerturbedMeshes, ShrinksWhereFeaturesCloserThanItWouldCross) {
+  const Mesh robot = boxMesh({-0.25, -0.25, 0}, {0.25, 0.25, 0.5});
+  const Mesh world = slitRing(1e-10);  // 2e-11 of the scene size
+  const PerturbedMeshes moved = perturbMeshes(robot, world, {true, 1, 1e-8});
+  EXPECT_LT(moved.record.relativeSize, 1e-8 / 8) << "the default size crosses the slit";
+  EXPECT_GT(moved.record.relativeSize, 0.0);
+  EXPECT_EQ(moved.world.componentCount(), 1u);
+  // The record reproduces the run.
+  const PerturbedMeshes again = perturbMeshes(robot, world, {true, 1, moved.record.relativeSize});
+  EXPECT_EQ(again.world.vertices(), moved.world.vertices());
+  EXPECT_EQ(again.record.relativeSize, moved.record.relativeSize);
+}
+
+TEST(PerturbedMeshes, FeaturesCloserThanTheSmallestPerturbationAreRefused) {
+  const Mesh robot = boxMesh({-0.25, -0.25, 0}, {0.25, 0.25, 0.5});
+  const Mesh world = slitRing(std::ldexp(1.0, -50));  // 1.5e-16 of the scene size
+  EXPECT_THROW(perturbMeshes(robot, world, {true, 1, 1e-8}), InputError);
 }

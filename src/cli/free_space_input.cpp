@@ -2,9 +2,12 @@
 
 #include <unistd.h>
 
+#include <array>
 #include <atomic>
+#include <charconv>
 #include <csignal>
 #include <iostream>
+#include <string>
 
 namespace freespace::cli {
 
@@ -13,6 +16,13 @@ namespace {
 std::atomic<bool> interrupted{false};
 
 void requestStop(int) { interrupted = true; }
+
+// The shortest text that reads back as the same double.
+std::string shortest(double value) {
+  std::array<char, 32> text{};
+  const auto end = std::to_chars(text.data(), text.data() + text.size(), value).ptr;
+  return std::string(text.data(), end);
+}
 
 }  // namespace
 
@@ -40,6 +50,13 @@ std::unique_ptr<FreeSpace> FreeSpaceInput::build(LoadedProblem& loaded) const {
     options.progress = [](const std::string& stage) { std::cerr << "building: " << stage << "...\n"; };
   }
   auto space = std::make_unique<FreeSpace>(loaded.robot, loaded.world, options);
+  const PerturbationRecord& used = space->meshes().record;
+  if (used.enabled && used.relativeSize < options.perturbation.relativeSize) {
+    std::cerr << "warning: " << options.sourceName << ": perturbation reduced to " << shortest(used.relativeSize)
+              << " of the scene size: with " << shortest(options.perturbation.relativeSize)
+              << " features of the meshes closer than it crossed (--perturbation " << shortest(used.relativeSize)
+              << " reproduces the run)\n";
+  }
   // Past the construction nothing polls the request: Ctrl-C stops the tool again.
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
