@@ -6,6 +6,7 @@
 # problems for the FCL table (such as OMPL.app's, which the project does not ship).
 #
 # Usage: benchmarks/mesh_results.sh BUILD_DIR [PROBLEM.cfg ...]
+# (the problems also get a status table: loading, start and goal, build, .path file)
 set -euo pipefail
 build=${1:?usage: benchmarks/mesh_results.sh BUILD_DIR [PROBLEM.cfg ...]}
 shift
@@ -34,5 +35,45 @@ echo "| --- | --- | --- |"
 echo
 echo "| problem | states | near contact | agree | robot inside an enclosed region | changed by the repair | disagreements |"
 echo "| --- | --- | --- | --- | --- | --- | --- |"
-"$build/bin/bench_fcl_agreement" "$scenes/soup_maze.cfg" "$scenes/soup_pieces.cfg" "$@" 2> /dev/null |
-  sed -n 's/^\([A-Za-z_]*\): \([0-9]*\) states, \([0-9]*\) near contact skipped, \([0-9]*\) agree, \([0-9]*\) with[^,]*, \([0-9]*\) where.*, \([0-9]*\) disagreements$/| \1 | \2 | \3 | \4 | \5 | \6 | \7 |/p'
+for cfg in "$scenes/soup_maze.cfg" "$scenes/soup_pieces.cfg" "$@"; do
+  "$build/bin/bench_fcl_agreement" "$cfg" 2> /dev/null || true  # problems that do not load are in the status table
+done |
+  sed -n 's/^\([A-Za-z_]*\): \([0-9]*\) states, \([0-9]*\) near contact skipped, \([0-9]*\) agree, \([0-9]*\) with the robot inside[^)]*), \([0-9]*\) where the repair[^)]*), \([0-9]*\) disagreements$/| \1 | \2 | \3 | \4 | \5 | \6 | \7 |/p'
+
+# The status of each given problem, as a new user meets it: loading with default
+# settings, start and goal by the exact test, the construction, and every waypoint of
+# the problem's .path file (NAME.path, or PREFIX_planar.path for NAME = PREFIX_variant).
+[ $# -gt 0 ] || exit 0
+echo
+echo "| problem | loads (\`info --cfg\`) | start, goal (exact) | build (\`build --cfg\`) | \`.path\` waypoints in the start's cell |"
+echo "| --- | --- | --- | --- | --- |"
+for cfg in "$@"; do
+  name=$(basename "$cfg" .cfg)
+  folder=$(dirname "$cfg")
+  state() { sed -n "s/^$1\.$2 *= *//p" "$cfg" | tr -d '\r'; }
+  if ! loaded=$("$build/bin/freespace" info --cfg "$cfg" 2>&1 > /dev/null); then
+    echo "| $name | no: $(echo "$loaded" | sed -n 's/^error: [^:]*: //p' | cut -d';' -f1) | - | - | - |"
+    continue
+  fi
+  ends=""
+  for end in start goal; do
+    answer=$("$build/bin/freespace" check --cfg "$cfg" --at "$(state $end x)" "$(state $end y)" "$(state $end theta)" 2> /dev/null)
+    ends="$ends${ends:+, }$(echo "$answer" | sed -n 's/.*: exact \([a-z]*\),.*/\1/p')"
+  done
+  space="$scenes/$name.space"
+  built=$("$build/bin/freespace" build --cfg "$cfg" --json --save "$space" 2> /dev/null) || {
+    echo "| $name | yes | $ends | refused | - |"
+    continue
+  }
+  seconds=$(echo "$built" | sed -n 's/^  "seconds": \([0-9.]*\),/\1/p')
+  cells=$(echo "$built" | sed -n 's/^  "free_cells": \([0-9]*\),/\1/p')
+  path="$folder/$name.path"
+  [ -f "$path" ] || path="$folder/${name%_*}_planar.path"
+  waypoints="-"
+  if [ -f "$path" ]; then
+    start=$("$build/bin/freespace" locate "$space" --at "$(state start x)" "$(state start y)" "$(state start theta)" 2> /dev/null | sed -n 's/.*free, cell \([0-9]*\)$/\1/p')
+    answers=$("$build/bin/freespace" locate "$space" --batch "$path" 2> /dev/null)
+    waypoints="$(echo "$answers" | grep -c "free, cell $start\$") of $(echo "$answers" | grep -c .) ($(basename "$path"))"
+  fi
+  printf '| %s | yes | %s | %.2f s, %s free cells | %s |\n' "$name" "$ends" "$seconds" "$cells" "$waypoints"
+done

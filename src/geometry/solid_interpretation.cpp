@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <map>
 #include <tuple>
 
@@ -22,19 +23,6 @@ using detail::EdgeUse;
 using detail::forEachEdge;
 using detail::sortedEdgeUses;
 
-// The components: triangles of one piece of the input (all one piece when `pieces` is
-// empty) joined through shared edges; each numbered by its first triangle.
-std::vector<Index> componentsOf(const std::vector<TriangleIndices>& triangles, const std::vector<Index>& pieces) {
-  detail::DisjointSets components(triangles.size());
-  const std::vector<EdgeUse> uses = sortedEdgeUses(triangles, pieces);
-  forEachEdge(uses, [&](std::size_t first, std::size_t count) {
-    for (std::size_t i = first + 1; i < first + count; ++i) components.unite(uses[first].triangle, uses[i].triangle);
-  });
-  std::vector<Index> componentOf(triangles.size());
-  for (Index t = 0; t < triangles.size(); ++t) componentOf[t] = components.find(t);
-  return componentOf;
-}
-
 // The components, and which of them are closed and edge-manifold: every edge of a
 // component used by two of its triangles.
 struct ComponentKinds {
@@ -42,11 +30,18 @@ struct ComponentKinds {
   std::vector<bool> closed;        // indexed by that first triangle
 };
 
-ComponentKinds classifyComponents(std::vector<Index> componentOf, const std::vector<EdgeUse>& uses) {
-  ComponentKinds kinds{std::move(componentOf), {}};
-  kinds.closed.assign(kinds.componentOf.size(), true);
+// The components: triangles of one piece of the input (`uses` grouped by piece) joined
+// through shared edges; each numbered by its first triangle. An edge's uses within a
+// piece all lie in one component, so `uses` serve for the components too.
+ComponentKinds classifyComponents(std::size_t triangleCount, const std::vector<EdgeUse>& uses) {
+  detail::DisjointSets components(triangleCount);
   forEachEdge(uses, [&](std::size_t first, std::size_t count) {
-    if (count != 2) kinds.closed[uses[first].group] = false;
+    for (std::size_t i = first + 1; i < first + count; ++i) components.unite(uses[first].triangle, uses[i].triangle);
+  });
+  ComponentKinds kinds{std::vector<Index>(triangleCount), std::vector<bool>(triangleCount, true)};
+  for (Index t = 0; t < triangleCount; ++t) kinds.componentOf[t] = components.find(t);
+  forEachEdge(uses, [&](std::size_t first, std::size_t count) {
+    if (count != 2) kinds.closed[kinds.componentOf[uses[first].triangle]] = false;
   });
   return kinds;
 }
@@ -186,7 +181,7 @@ void requireSimpleBoundary(const detail::EnclosedSolid& solid, const std::string
 }
 
 // Appends triangles with the vertices they use, renumbered from `soup`'s end in the
-// order of their indices (a mesh whose vertices are all used keeps its numbering).
+// order of their indices.
 void appendTriangles(const std::vector<Point3>& vertices, const std::vector<TriangleIndices>& triangles,
                      TriangleSoup& soup) {
   TriangleSoup part{vertices, triangles};
@@ -196,6 +191,35 @@ void appendTriangles(const std::vector<Point3>& vertices, const std::vector<Tria
   for (TriangleIndices triangle : part.triangles) {
     for (Index& corner : triangle) corner += offset;
     soup.triangles.push_back(triangle);
+  }
+}
+
+// Appends the closed components (component -> its triangles), each with vertices of
+// its own, numbered in the order of their indices within the component (a mesh whose
+// vertices are all used and that is one component keeps its numbering).
+void appendClosedComponents(const std::vector<Point3>& vertices,
+                            const std::map<Index, std::vector<TriangleIndices>>& closed, TriangleSoup& result) {
+  constexpr Index kNone = std::numeric_limits<Index>::max();
+  std::vector<Index> owner(vertices.size(), kNone), copy(vertices.size());
+  std::vector<Index> used;
+  for (const auto& [component, componentTriangles] : closed) {
+    used.clear();
+    for (const TriangleIndices& triangle : componentTriangles) {
+      for (Index corner : triangle) {
+        if (owner[corner] == component) continue;
+        owner[corner] = component;
+        used.push_back(corner);
+      }
+    }
+    std::sort(used.begin(), used.end());
+    for (Index v : used) {
+      copy[v] = static_cast<Index>(result.vertices.size());
+      result.vertices.push_back(vertices[v]);
+    }
+    for (TriangleIndices triangle : componentTriangles) {
+      for (Index& corner : triangle) corner = copy[corner];
+      result.triangles.push_back(triangle);
+    }
   }
 }
 
@@ -243,9 +267,8 @@ TriangleSoup interpretSolid(const TriangleSoup& repaired, const std::vector<std:
                             const std::string& sourceName, const SolidSettings& settings, SolidReport* report,
                             std::vector<std::string>* warnings) {
   std::vector<TriangleIndices> triangles = repaired.triangles;
-  std::vector<Index> componentOf = componentsOf(triangles, pieces);
-  const std::vector<EdgeUse> uses = sortedEdgeUses(triangles, componentOf);
-  ComponentKinds kinds = classifyComponents(std::move(componentOf), uses);
+  const std::vector<EdgeUse> uses = sortedEdgeUses(triangles, pieces);
+  ComponentKinds kinds = classifyComponents(triangles.size(), uses);
   SolidReport counts;
   const std::size_t turnedAgainstNeighbours = orientConsistently(triangles, uses, kinds);
   counts.trianglesTurned = turnedAgainstNeighbours + orientOutward(repaired.vertices, triangles, kinds);
@@ -269,7 +292,7 @@ TriangleSoup interpretSolid(const TriangleSoup& repaired, const std::vector<std:
   // Each closed component with vertices of its own: components that touch along an
   // edge would otherwise share it with four triangles.
   TriangleSoup result;
-  for (const auto& [component, componentTriangles] : closed) appendTriangles(repaired.vertices, componentTriangles, result);
+  appendClosedComponents(repaired.vertices, closed, result);
   if (!soup.empty()) {
     const detail::EnclosedSolid solid = detail::enclosedSolid(repaired.vertices, soup, settings.tolerance);
     counts.capTriangles = solid.capFaces;

@@ -374,9 +374,10 @@ class EarClipper {
 
 // Inserts every junction vertex into the edges it lies on: each triangle along such
 // an edge is replaced by a triangulation of its corners and the inserted vertices.
-void snapJunctions(TriangleSoup& soup, std::vector<Index>& pieces, double tolerance, RepairReport& report) {
+// Returns whether there were any.
+bool snapJunctions(TriangleSoup& soup, std::vector<Index>& pieces, double tolerance, RepairReport& report) {
   const std::map<EdgeKey, std::vector<Index>> junctions = junctionsOnEdges(soup, tolerance);
-  if (junctions.empty()) return;
+  if (junctions.empty()) return false;
   for (const auto& [key, vertices] : junctions) report.verticesSnapped += vertices.size();
   PredicateStatistics statistics;
   EarClipper clipper(soup.vertices, statistics);
@@ -397,6 +398,7 @@ void snapJunctions(TriangleSoup& soup, std::vector<Index>& pieces, double tolera
   }
   soup.triangles = std::move(result);
   pieces = std::move(resultPieces);
+  return true;
 }
 
 double toleranceFor(const TriangleSoup& soup, const RepairSettings& settings, RepairReport& report) {
@@ -467,8 +469,9 @@ TriangleSoup repairSoup(const TriangleSoup& soup, const std::string& sourceName,
   snapCoordinates(repaired, counts.tolerance, counts);
   if (counts.coordinatesSnapped > snappedBefore) repaired = detail::weldIdenticalVertices(repaired);
   dropZeroAreaAndDuplicates(repaired, piece, counts.tolerance, counts);
-  snapJunctions(repaired, piece, counts.tolerance, counts);
-  dropZeroAreaAndDuplicates(repaired, piece, counts.tolerance, counts);
+  if (snapJunctions(repaired, piece, counts.tolerance, counts)) {
+    dropZeroAreaAndDuplicates(repaired, piece, counts.tolerance, counts);
+  }
   detail::dropUnusedVertices(repaired);
   if (pieces) *pieces = std::move(piece);
   counts.outputVertices = repaired.vertices.size();
