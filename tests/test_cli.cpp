@@ -81,6 +81,31 @@ TEST(Cli, BadBatchLineIsAnError) {
   EXPECT_EQ(result.err, "error: " + dir.file("batch.txt") + ": line 2: expected three finite numbers X Y THETA\n");
 }
 
+TEST(Cli, BadOptionValuesExitWithStatusTwoNamingTheOption) {
+  const std::string meshes = quoted(kMeshes + "cube.obj") + " " + quoted(kMeshes + "cube.obj");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"check " + meshes + " --at 0 0 nan", "--at"},
+      {"check " + meshes + " --at 0 0 inf", "--at"},
+      {"check " + meshes + " --at 0 zero 0", "--at"},
+      {"build " + meshes + " --perturbation -1", "--perturbation"},
+      {"build " + meshes + " --seed -1", "--seed: must be a whole number"},
+      {"build " + meshes + " --save ''", "--save: must not be empty"},
+      {"generate --out x --seed -3", "--seed: must be a whole number"},
+      {"slice " + meshes + " --theta nan --svg x.svg", "--theta: must be a finite number"},
+      {"build " + meshes + " --perturbation nan", "--perturbation: must be a finite number, at least 0"},
+      {"export " + meshes + " --ply out.ply --tolerance nan", "--tolerance: must be a finite number, at least 0"},
+      {"info " + meshes + " --repair-tolerance inf", "--repair-tolerance: must be a finite number, at least 0"},
+      {"build " + meshes + " --no-such-option", "--no-such-option"},
+      {"no-such-command", "no-such-command"},
+  };
+  for (const auto& [arguments, option] : cases) {
+    const CommandResult result = runFreespace(arguments);
+    EXPECT_EQ(result.status, 2) << arguments << "\n" << result.err;
+    EXPECT_NE(result.err.find(option), std::string::npos) << arguments << "\n" << result.err;
+  }
+  EXPECT_EQ(runFreespace("check --help").status, 0);
+}
+
 TEST(Cli, EveryCommandHasHelp) {
   for (const char* command : {"", "check", "info", "generate"}) {
     const CommandResult result = runFreespace(std::string(command) + " --help");

@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "free_space_input.h"
 #include "freespace/input_error.h"
+#include "number_checks.h"
 
 namespace freespace::cli {
 
@@ -89,7 +90,8 @@ void addBuildCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand("build", "Build the exact free space and print its statistics");
   options->input.addOptions(*command);
   command->add_flag("--json", options->json, "print JSON");
-  command->add_option("--save", options->save, "save the built free space to this file (for locate, slice, export)");
+  command->add_option("--save", options->save, "save the built free space to this file (for locate, slice, export)")
+      ->check(nonEmpty());
   command->add_flag("--force", options->force, "overwrite an existing --save file");
   command->callback([options]() {
     // Refuse before a long construction, not after it.

@@ -5,6 +5,7 @@
 #include "free_space_input.h"
 #include "freespace/exports/boundary_ply.h"
 #include "freespace/io/output_file.h"
+#include "number_checks.h"
 
 namespace freespace::cli {
 
@@ -19,10 +20,10 @@ void addExportCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "export", "Export the free cells' boundaries as a PLY mesh in (x, y, reach * theta), coloured by cell");
   options->input.addOptions(*command);
-  command->add_option("--ply", options->ply, "output PLY file")->required();
+  command->add_option("--ply", options->ply, "output PLY file")->required()->check(nonEmpty());
   command->add_option("--tolerance", options->tolerance,
                       "sampling tolerance in x, y units (default 1% of the environment's size)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finiteNonNegative());
   command->add_flag("--force", options->force, "overwrite an existing output file");
   command->callback([options]() {
     LoadedProblem loaded;

@@ -9,13 +9,19 @@
 #include <iostream>
 #include <string>
 
+#include "number_checks.h"
+
 namespace freespace::cli {
 
 namespace {
 
 std::atomic<bool> interrupted{false};
+std::atomic<int> stopRequestedBy{0};
 
-void requestStop(int) { interrupted = true; }
+void requestStop(int signal) {
+  stopRequestedBy = signal;
+  interrupted = true;
+}
 
 // The shortest text that reads back as the same double.
 std::string shortest(double value) {
@@ -26,12 +32,14 @@ std::string shortest(double value) {
 
 }  // namespace
 
+int stopSignal() { return stopRequestedBy; }
+
 void FreeSpaceInput::addOptions(CLI::App& command) {
   scene_.addOptions(command, true);
-  command.add_option("--seed", seed_, "seed of the input perturbation (default 1)");
+  command.add_option("--seed", seed_, "seed of the input perturbation (default 1)")->check(wholeNumber());
   command.add_option("--perturbation", perturbation_,
                      "size of the input perturbation relative to the scene (default 1e-8; 0 switches it off)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(finiteNonNegative());
 }
 
 std::unique_ptr<FreeSpace> FreeSpaceInput::build(LoadedProblem& loaded) const {

@@ -7,6 +7,7 @@
 #include "commands.h"
 #include "freespace/input_error.h"
 #include "freespace/scenes/scene_generator.h"
+#include "number_checks.h"
 
 namespace freespace::cli {
 
@@ -53,13 +54,15 @@ void addGenerateCommand(CLI::App& app) {
   auto options = std::make_shared<GenerateOptions>();
   CLI::App* command = app.add_subcommand(
       "generate", "Write test scenes: robot and world meshes and an OMPL.app problem (.cfg) for each");
-  command->add_option("--out", options->out, "Folder to write into (created if needed)")->required();
+  command->add_option("--out", options->out, "Folder to write into (created if needed)")->required()->check(nonEmpty());
   command->add_option("--scene", options->scenes,
                       "Scenes to write (default: all): " + joined(sceneNames()) + ", " + kSceneFamilies);
   command->add_option("--format", options->format, "Mesh format")
       ->capture_default_str()
       ->check(CLI::IsMember({"obj", "dae", "stl", "ply", "off", "vtk"}));
-  command->add_option("--seed", options->seed, "Seed of the scenes with random parts")->capture_default_str();
+  command->add_option("--seed", options->seed, "Seed of the scenes with random parts")
+      ->capture_default_str()
+      ->check(wholeNumber());
   command->add_option("--name-suffix", options->nameSuffix,
                       "Appended to each scene's name and file names (e.g. _dae for a COLLADA copy)");
   command->add_flag("--force", options->force, "Overwrite existing files");

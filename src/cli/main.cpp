@@ -1,6 +1,8 @@
+#include <csignal>
 #include <iostream>
 
 #include "commands.h"
+#include "free_space_input.h"
 #include "freespace/geometry/cancellation.h"
 #include "freespace/input_error.h"
 
@@ -15,13 +17,24 @@ int main(int argc, char** argv) {
   freespace::cli::addSliceCommand(app);
   freespace::cli::addExportCommand(app);
   freespace::cli::addRepairCommand(app);
+  if (argc > 1 && argv[1][0] != '-') {
+    try {
+      app.get_subcommand(argv[1]);
+    } catch (const CLI::OptionNotFound&) {
+      std::cerr << "error: unknown command '" << argv[1] << "'; run with --help for the commands\n";
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {
-    return app.exit(error);
+    // Help and version succeed; any bad option or value is bad input (the parser's
+    // own codes would say which kind).
+    return app.exit(error) == 0 ? 0 : 2;
   } catch (const freespace::Cancelled&) {
     std::cerr << "cancelled\n";
-    return 130;
+    const int signal = freespace::cli::stopSignal();
+    return 128 + (signal != 0 ? signal : SIGINT);
   } catch (const freespace::InputError& error) {
     std::cerr << "error: " << error.what() << "\n";
     return 2;

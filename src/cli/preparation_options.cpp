@@ -1,25 +1,21 @@
 #include "preparation_options.h"
 
-#include <cmath>
-
-#include "freespace/input_error.h"
+#include "number_checks.h"
 
 namespace freespace::cli {
 
 void PreparationOptions::addOptions(CLI::App& command, const std::string& toleranceNames) {
-  toleranceName_ = toleranceNames.substr(0, toleranceNames.find(','));
-  command.add_option(toleranceNames, tolerance_,
-                     "Weld points closer than this and insert vertices into edges they lie on within it (model "
-                     "units; 0: only identical points; default: 1e-6 of each mesh's bounding box diagonal)");
+  command
+      .add_option(toleranceNames, tolerance_,
+                  "Weld points closer than this and insert vertices into edges they lie on within it (model "
+                  "units; 0: only identical points; default: 1e-6 of each mesh's bounding box diagonal)")
+      ->check(finiteNonNegative());
   command.add_flag("--ignore-open", ignoreOpen_,
                    "Drop triangles that enclose nothing (open sheets, zero-thickness walls, cracks) with a warning "
                    "instead of refusing the mesh");
 }
 
 PreparationSettings PreparationOptions::settings() const {
-  if (tolerance_ && !(std::isfinite(*tolerance_) && *tolerance_ >= 0)) {
-    throw InputError(toleranceName_, "must be a finite number, at least 0");
-  }
   PreparationSettings settings;
   settings.repair.absoluteTolerance = tolerance_;
   settings.solid.ignoreOpen = ignoreOpen_;

@@ -14,13 +14,12 @@ namespace freespace::cli {
 /// --ignore-open.
 class PreparationOptions {
  public:
-  /// `toleranceNames`: CLI11's comma-separated names of the tolerance option.
+  /// `toleranceNames`: CLI11's comma-separated names of the tolerance option (a
+  /// finite number, at least 0).
   void addOptions(CLI::App& command, const std::string& toleranceNames);
-  /// Throws InputError naming the option for a tolerance that is not a finite number.
   PreparationSettings settings() const;
 
  private:
-  std::string toleranceName_;
   std::optional<double> tolerance_;
   bool ignoreOpen_ = false;
 };

@@ -4,6 +4,7 @@
 #include "commands.h"
 #include "freespace/io/mesh_reader.h"
 #include "freespace/io/mesh_writer.h"
+#include "number_checks.h"
 #include "preparation_options.h"
 
 namespace freespace::cli {
@@ -46,7 +47,9 @@ void addRepairCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "repair", "Repair a mesh and write the solid it shows (closed components; the changes are reported)");
   command->add_option("input", options->input, "mesh file to repair")->required();
-  command->add_option("output", options->output, "mesh file to write (the format follows the extension)")->required();
+  command->add_option("output", options->output, "mesh file to write (the format follows the extension)")
+      ->required()
+      ->check(nonEmpty());
   options->preparation.addOptions(*command, "--tolerance");
   command->add_flag("--json", options->json, "print what was changed as JSON");
   command->add_flag("--force", options->force, "overwrite an existing output file");

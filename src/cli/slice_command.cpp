@@ -7,6 +7,7 @@
 #include "free_space_input.h"
 #include "freespace/exports/slice_svg.h"
 #include "freespace/io/output_file.h"
+#include "number_checks.h"
 
 namespace freespace::cli {
 
@@ -23,9 +24,11 @@ void addSliceCommand(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "slice", "Draw the free space's slice at one angle as SVG: blocked, free cells, boundaries, the robot");
   options->input.addOptions(*command);
-  command->add_option("--theta", options->theta, "the slice's angle (radians)")->required();
-  command->add_option("--svg", options->svg, "output SVG file")->required();
-  command->add_option("--robot-at", options->robotAt, "draw the robot's outline at X Y")->expected(2);
+  command->add_option("--theta", options->theta, "the slice's angle (radians)")->required()->check(finiteNumber());
+  command->add_option("--svg", options->svg, "output SVG file")->required()->check(nonEmpty());
+  command->add_option("--robot-at", options->robotAt, "draw the robot's outline at X Y")
+      ->expected(2)
+      ->check(finiteNumber());
   command->add_option("--resolution", options->resolution, "pixels across the wider side (default 240)")
       ->check(CLI::Range(8, 4000));
   command->add_flag("--force", options->force, "overwrite an existing output file");

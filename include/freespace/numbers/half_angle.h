@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "freespace/numbers/angle_reduction.h"
+
 namespace freespace {
 
 /// An angle in tangent half-angle form (docs/design.md section 2). Two charts cover the
@@ -17,9 +19,10 @@ struct HalfAngle {
 
   /// A double angle becomes the rational angle with t = the double tan(.) above.
   /// Every exact computation then uses exactly this t: the rotation is rational and
-  /// differs from the true theta by about 1e-16 rad.
+  /// differs from the true theta by about 1e-16 rad. Any finite theta is reduced
+  /// exactly (reducedAngle).
   static HalfAngle fromRadians(double theta) {
-    const double wrapped = std::remainder(theta, 2 * M_PI);  // in [-pi, pi]
+    const double wrapped = reducedAngle(theta);  // in [-pi, pi]
     if (std::fabs(wrapped) <= M_PI / 2) return {0, std::tan(wrapped / 2)};
     const double shifted = wrapped > 0 ? wrapped - M_PI : wrapped + M_PI;
     return {1, std::tan(shifted / 2)};
