@@ -1,4 +1,3 @@
-#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -7,6 +6,7 @@
 #include "commands.h"
 #include "free_space_input.h"
 #include "freespace/input_error.h"
+#include "freespace/io/output_file.h"
 #include "number_checks.h"
 
 namespace freespace::cli {
@@ -95,10 +95,7 @@ void addBuildCommand(CLI::App& app) {
   command->add_flag("--force", options->force, "overwrite an existing --save file");
   command->callback([options]() {
     // Refuse before a long construction, not after it.
-    std::error_code error;
-    if (!options->save.empty() && !options->force && std::filesystem::exists(options->save, error)) {
-      throw InputError(options->save, "already exists (not overwritten)");
-    }
+    if (!options->save.empty()) checkOutputPath(options->save, options->force);
     if (const std::optional<std::string> saved = options->input.savedSpaceFile()) {
       throw InputError(*saved, "build needs --cfg FILE or ROBOT WORLD, not a saved free space");
     }

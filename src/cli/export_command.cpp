@@ -26,6 +26,7 @@ void addExportCommand(CLI::App& app) {
       ->check(finiteNonNegative());
   command->add_flag("--force", options->force, "overwrite an existing output file");
   command->callback([options]() {
+    checkOutputPath(options->ply, options->force);  // before the construction, not after it
     LoadedProblem loaded;
     const std::unique_ptr<FreeSpace> space = options->input.build(loaded);
     BoundaryPlyOptions ply;

@@ -3,25 +3,16 @@
 #include <unistd.h>
 
 #include <array>
-#include <atomic>
 #include <charconv>
-#include <csignal>
 #include <iostream>
 #include <string>
 
 #include "number_checks.h"
+#include "stop_signals.h"
 
 namespace freespace::cli {
 
 namespace {
-
-std::atomic<bool> interrupted{false};
-std::atomic<int> stopRequestedBy{0};
-
-void requestStop(int signal) {
-  stopRequestedBy = signal;
-  interrupted = true;
-}
 
 // The shortest text that reads back as the same double.
 std::string shortest(double value) {
@@ -31,8 +22,6 @@ std::string shortest(double value) {
 }
 
 }  // namespace
-
-int stopSignal() { return stopRequestedBy; }
 
 void FreeSpaceInput::addOptions(CLI::App& command) {
   scene_.addOptions(command, true);
@@ -50,14 +39,16 @@ std::unique_ptr<FreeSpace> FreeSpaceInput::build(LoadedProblem& loaded) const {
   options.perturbation.relativeSize = perturbation_;
   options.perturbation.enabled = perturbation_ > 0;
   options.sourceName = loaded.cfgPath.empty() ? loaded.problem.robot + " and " + loaded.problem.world : loaded.cfgPath;
-  // Ctrl-C (or SIGTERM) stops the construction; main() reports it.
-  std::signal(SIGINT, requestStop);
-  std::signal(SIGTERM, requestStop);
-  options.cancellation = Cancellation(interrupted);
   if (isatty(STDERR_FILENO)) {
     options.progress = [](const std::string& stage) { std::cerr << "building: " << stage << "...\n"; };
   }
-  auto space = std::make_unique<FreeSpace>(loaded.robot, loaded.world, options);
+  std::unique_ptr<FreeSpace> space;
+  {
+    // Ctrl-C (or SIGTERM) stops the construction; main() reports it.
+    const StoppableSection section;
+    options.cancellation = section.cancellation();
+    space = std::make_unique<FreeSpace>(loaded.robot, loaded.world, options);
+  }
   const PerturbationRecord& used = space->meshes().record;
   if (used.enabled && used.relativeSize < options.perturbation.relativeSize) {
     std::cerr << "warning: " << options.sourceName << ": perturbation reduced to " << shortest(used.relativeSize)
@@ -65,9 +56,6 @@ std::unique_ptr<FreeSpace> FreeSpaceInput::build(LoadedProblem& loaded) const {
               << " features of the meshes closer than it crossed (--perturbation " << shortest(used.relativeSize)
               << " reproduces the run)\n";
   }
-  // Past the construction nothing polls the request: Ctrl-C stops the tool again.
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
   return space;
 }
 

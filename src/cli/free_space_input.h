@@ -9,12 +9,10 @@
 
 namespace freespace::cli {
 
-/// The signal (SIGINT or SIGTERM) that stopped a construction, 0 if none did.
-int stopSignal();
-
 /// The scene input (or a free space saved by build --save) plus the construction's
-/// options (--seed, --perturbation), shared by the commands that need a free space. Stages are announced on stderr when it
-/// is a terminal; SIGINT and SIGTERM stop the construction (Cancelled).
+/// options (--seed, --perturbation), shared by the commands that need a free space.
+/// Stages are announced on stderr when it is a terminal; a stop signal ends the
+/// construction (Cancelled, see stop_signals.h).
 class FreeSpaceInput {
  public:
   void addOptions(CLI::App& command);

@@ -1,12 +1,26 @@
+#include <cerrno>
 #include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 
 #include "commands.h"
-#include "free_space_input.h"
 #include "freespace/geometry/cancellation.h"
 #include "freespace/input_error.h"
+#include "stop_signals.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+// Output on stdout that could not be written (a full disk, a closed pipe) is an error,
+// not a success.
+int checkedStandardOutput(int status) {
+  std::cout.flush();
+  if (std::fflush(stdout) == 0 && std::cout.good()) return status;
+  std::cerr << "error: standard output: cannot write: " << std::strerror(errno) << "\n";
+  return status == 0 ? 2 : status;
+}
+
+int run(int argc, char** argv) {
   CLI::App app{"freespace: exact free space of a polyhedron moving on a floor"};
   app.require_subcommand(1);
   freespace::cli::addCheckCommand(app);
@@ -43,4 +57,11 @@ int main(int argc, char** argv) {
     return 1;
   }
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  freespace::cli::installStopHandlers();
+  return checkedStandardOutput(run(argc, argv));
 }

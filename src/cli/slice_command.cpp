@@ -1,5 +1,4 @@
-#include <algorithm>
-#include <cmath>
+#include <array>
 #include <iostream>
 #include <memory>
 
@@ -33,9 +32,7 @@ void addSliceCommand(CLI::App& app) {
       ->check(CLI::Range(8, 4000));
   command->add_flag("--force", options->force, "overwrite an existing output file");
   command->callback([options]() {
-    const bool finite = std::isfinite(options->theta) &&
-                        std::all_of(options->robotAt.begin(), options->robotAt.end(), [](double v) { return std::isfinite(v); });
-    if (!finite) throw CLI::ValidationError("slice", "--theta and --robot-at need finite numbers");
+    checkOutputPath(options->svg, options->force);  // before the construction, not after it
     LoadedProblem loaded;
     const std::unique_ptr<FreeSpace> space = options->input.build(loaded);
     SliceSvgOptions slice;
