@@ -23,11 +23,13 @@ inline std::string readWholeFile(const std::string& path) {
   return text.str();
 }
 
-/// Runs the freespace command line tool with `arguments` (already shell quoted).
-inline CommandResult runFreespace(const std::string& arguments) {
+/// Runs the freespace command line tool with `arguments` (already shell quoted);
+/// with `timeLimit` seconds, a run that takes longer is killed (status 124).
+inline CommandResult runFreespace(const std::string& arguments, int timeLimit = 0) {
   TempDir dir;
-  const std::string command = std::string("'") + FREESPACE_CLI + "' " + arguments + " >'" + dir.file("out") +
-                              "' 2>'" + dir.file("err") + "' </dev/null";
+  const std::string limit = timeLimit > 0 ? "timeout " + std::to_string(timeLimit) + " " : "";
+  const std::string command = limit + "'" + FREESPACE_CLI + "' " + arguments + " >'" + dir.file("out") + "' 2>'" +
+                              dir.file("err") + "' </dev/null";
   const int raw = std::system(command.c_str());
   CommandResult result;
   result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

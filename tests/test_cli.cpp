@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -104,6 +106,20 @@ TEST(Cli, BadOptionValuesExitWithStatusTwoNamingTheOption) {
     EXPECT_NE(result.err.find(option), std::string::npos) << arguments << "\n" << result.err;
   }
   EXPECT_EQ(runFreespace("check --help").status, 0);
+}
+
+TEST(Cli, PipesAndDevicesAsInputAreRefusedNotWaitedOn) {
+  TempDir dir;
+  const std::string fifo = dir.file("pipe.obj");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string cube = quoted(kMeshes + "cube.obj");
+  for (const std::string& arguments : {"info " + quoted(fifo) + " " + cube, "info --cfg " + quoted(fifo),
+                                       "locate " + quoted(fifo) + " --at 0 0 0", "info /dev/zero " + cube}) {
+    // Under a time limit: reading a FIFO nobody writes to would wait for ever.
+    const CommandResult result = runFreespace(arguments, 20);
+    EXPECT_EQ(result.status, 2) << arguments << "\n" << result.err;
+    EXPECT_NE(result.err.find("not a regular file"), std::string::npos) << arguments << "\n" << result.err;
+  }
 }
 
 TEST(Cli, EveryCommandHasHelp) {

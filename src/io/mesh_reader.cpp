@@ -14,6 +14,7 @@
 
 #include "file_extension.h"
 #include "freespace/input_error.h"
+#include "freespace/io/input_file.h"
 #include "vtk_reader.h"
 
 namespace freespace {
@@ -26,12 +27,7 @@ bool isAssimpFormat(const std::string& extension) {
 
 // Opens the file for reading; throws unless it is a readable, non-empty file.
 std::ifstream openNonEmptyFile(const std::string& path) {
-  std::error_code error;
-  if (std::filesystem::is_directory(path, error)) {
-    throw InputError(path, "cannot open file: it is a directory");
-  }
-  std::ifstream file(path, std::ios::binary);
-  if (!file) throw InputError(path, "cannot open file: " + std::generic_category().message(errno));
+  std::ifstream file = openInputFile(path, std::ios::binary);
   if (file.peek() == std::ifstream::traits_type::eof()) throw InputError(path, "file is empty");
   return file;
 }

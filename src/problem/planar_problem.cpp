@@ -13,6 +13,7 @@
 #include <boost/program_options/parsers.hpp>
 
 #include "freespace/input_error.h"
+#include "freespace/io/input_file.h"
 #include "freespace/io/mesh_reader.h"
 #include "freespace/io/output_file.h"
 
@@ -220,10 +221,7 @@ void writeBenchmarkAndPlanners(std::ostream& out, const PlanarProblem& problem) 
 }  // namespace
 
 PlanarProblem readProblem(const std::string& cfgPath, std::vector<std::string>* warnings) {
-  std::error_code error;
-  if (fs::is_directory(cfgPath, error)) throw InputError(cfgPath, "cannot open file: it is a directory");
-  std::ifstream input(cfgPath);
-  if (!input) throw InputError(cfgPath, "cannot open file");
+  std::ifstream input = openInputFile(cfgPath);
   Sections sections = parseSections(input, cfgPath);
   if (!sections.count("problem")) throw InputError(cfgPath, "missing section [problem]");
 

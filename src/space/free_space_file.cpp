@@ -19,6 +19,7 @@
 
 #include "free_space_impl.h"
 #include "freespace/input_error.h"
+#include "freespace/io/input_file.h"
 #include "freespace/io/output_file.h"
 #include "saved_space.h"
 
@@ -379,8 +380,7 @@ std::uint32_t checksum(const std::string& payload) {
 
 /// The payload of a saved free space file, checked against its header.
 std::string readPayload(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open file");
+  std::ifstream in = openInputFile(path, std::ios::binary);
   std::string header;
   std::getline(in, header);
   if (header.rfind(kHeader, 0) != 0) throw InputError(path, "not a saved free space (no '" + kHeader + "' header)");
