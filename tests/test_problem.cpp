@@ -72,7 +72,7 @@ TEST(Problem, BadValuesAndSyntaxAreErrors) {
                      "goal.x = 1\ngoal.y = 1\ngoal.theta = 0\n[benchmark]\nrun_count = -3\n");
   EXPECT_EQ(errorOf(dir.file("r.cfg")),
             dir.file("r.cfg") + ": [benchmark] run_count = '-3' is not a whole number from 0 to 4294967295");
-  EXPECT_EQ(errorOf(dir.file("none.cfg")), dir.file("none.cfg") + ": cannot open file");
+  EXPECT_EQ(errorOf(dir.file("none.cfg")), dir.file("none.cfg") + ": cannot open file: No such file or directory");
 }
 
 TEST(Problem, UnknownKeysAreWarnings) {

@@ -130,7 +130,7 @@ TEST(SavedSpace, BadFilesAreClearErrors) {
   altered[altered.size() / 2] = static_cast<char>(altered[altered.size() / 2] ^ 0x5a);
   write(other, altered);
   EXPECT_NE(loadError(other).find("checksum"), std::string::npos);
-  EXPECT_EQ(loadError(dir.file("missing.fspace")), "cannot open file");
+  EXPECT_EQ(loadError(dir.file("missing.fspace")), "cannot open file: No such file or directory");
 }
 
 TEST(SavedSpace, AlteredPayloadsWithAValidChecksumLoadOrFailCleanly) {
