@@ -264,7 +264,7 @@ struct MalformedFile {
 
 // The table at the top of this file.
 const MalformedFile kMalformedFiles[] = {
-    {"bad_truncated.obj", "6 triangles enclose nothing (an open sheet, a zero-thickness wall or a crack"},
+    {"bad_truncated.obj", "OBJ line 13: a face with 2 vertices (at least 3 needed)"},
     {"bad_nonmanifold.obj", "1 triangle encloses nothing"},
     {"bad_zero_area.obj", "2 triangles enclose nothing"},
     {"bad_flat.obj", "3 triangles enclose nothing"},
@@ -273,7 +273,7 @@ const MalformedFile kMalformedFiles[] = {
     {"bad_index.obj", "cannot read mesh: OBJ: vertex index out of range"},
     {"bad_empty.obj", "file is empty"},
     {"bad_garbage.stl", "cannot read mesh:"},
-    {"bad_garbage.ply", "cannot read mesh:"},
+    {"bad_garbage.ply", "PLY header has no end_header line"},
     {"bad_format.xyz", "unsupported mesh format '.xyz' (expected obj, stl, ply, off, dae or vtk)"},
     {"bad_truncated.vtk", "line 5: expected 24 point coordinates, file ended after 13"},
     {"bad_nan.vtk", "vertex 3 has a non-finite coordinate (nan)"},
@@ -282,9 +282,9 @@ const MalformedFile kMalformedFiles[] = {
     {"bad_binary.vtk", "binary VTK is not supported"},
     {"bad_dataset.vtk", "line 4: not a POLYDATA dataset (found UNSTRUCTURED_GRID)"},
     {"bad_header.vtk", "not a legacy VTK file"},
-    {"bad_truncated.off", "4 triangles enclose nothing"},
+    {"bad_truncated.off", "OFF file is truncated: it promises 8 vertices and 6 faces in 86 bytes"},
     {"bad_nan.off", "vertex 2 has a non-finite coordinate (nan)"},
-    {"bad_truncated.ply", "contains no triangles"},
+    {"bad_truncated.ply", "PLY file is truncated"},
     {"bad_truncated.dae", "cannot read mesh: Unable to read file, malformed XML"},
 };
 

@@ -15,6 +15,7 @@
 #include "file_extension.h"
 #include "freespace/input_error.h"
 #include "freespace/io/input_file.h"
+#include "mesh_file_checks.h"
 #include "vtk_reader.h"
 
 namespace freespace {
@@ -89,6 +90,16 @@ ImportedMesh importWithAssimp(const std::string& path) {
   return imported;
 }
 
+// The import library trusts counts and indices: PLY, OFF and OBJ files are checked
+// against their own headers first (mesh_file_checks.h).
+void checkBeforeImport(const std::string& path, const std::string& format, std::ifstream& file) {
+  if (format != ".ply" && format != ".off" && format != ".obj") return;
+  const std::string content{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+  if (format == ".ply") detail::checkPlyFile(path, content);
+  if (format == ".off") detail::checkOffFile(path, content);
+  if (format == ".obj") detail::checkObjFaces(path, content);
+}
+
 // Formats OMPL.app cannot read have no convention of their own: the plain average of
 // the vertices as read.
 Point3 averageOf(const std::vector<Point3>& vertices) {
@@ -109,7 +120,10 @@ ImportedMesh importMesh(const std::string& path) {
     imported.vertexAverage = averageOf(imported.soup.vertices);
     return imported;
   }
-  if (isAssimpFormat(format)) return importWithAssimp(path);
+  if (isAssimpFormat(format)) {
+    checkBeforeImport(path, format, file);
+    return importWithAssimp(path);
+  }
   const std::string found = extension.empty() ? ": the file name has no extension"
                                               : " '" + extension + "'";
   throw InputError(path, "unsupported mesh format" + found +

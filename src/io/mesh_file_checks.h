@@ -1,0 +1,28 @@
+#pragma once
+
+// Checks of mesh files before the import library reads them (docs/design.md section
+// 9): the import library trusts counts and indices, so a truncated or edited PLY or
+// OFF file can make it loop for ever, exhaust memory or crash. These read the whole
+// file against its own header, bounds checked, and throw InputError naming the file
+// and the defect; they build nothing.
+
+#include <string>
+
+namespace freespace::detail {
+
+/// A PLY file (ASCII or binary, either byte order): a complete header; a vertex
+/// element with x, y and z and a face element with a vertex index list; every
+/// element's records present in full (counts weighed against the file's size first);
+/// every face with at least 3 vertices, each an index of a vertex.
+void checkPlyFile(const std::string& path, const std::string& content);
+
+/// An OFF file (3D; OFF, COFF, NOFF, CNOFF, STOFF ... headers): its counts, weighed
+/// against the file's size; every vertex line with 3 numbers; every face with at
+/// least 3 vertices, each an index of a vertex.
+void checkOffFile(const std::string& path, const std::string& content);
+
+/// An OBJ file: every face ('f') with at least 3 vertices (the import library takes a
+/// shorter one for a point or a line without a word).
+void checkObjFaces(const std::string& path, const std::string& content);
+
+}  // namespace freespace::detail
