@@ -75,7 +75,7 @@ std::string problemOf(const TempDir& dir, const std::string& name, const std::st
 TEST(MeshFileChecks, EveryPrefixOfAValidFileLoadsOrIsRefused) {
   const TempDir dir;
   const Mesh world = makeScene("keyhole").world;
-  for (const char* extension : {"ply", "off", "obj"}) {
+  for (const char* extension : {"ply", "off", "obj", "dae"}) {
     const std::string whole = dir.file(std::string("world.") + extension);
     writeMesh(world, whole);
     const std::string content = fileContent(whole);
@@ -133,4 +133,33 @@ TEST(MeshFileChecks, FacesWithFewerThanThreeVerticesAreRefused) {
             "face 0 has 2 vertices (at least 3 needed)");
   EXPECT_EQ(problemOf(dir, "index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"),
             "face 0 uses vertex 7 of 3 (out of range)");
+}
+
+TEST(MeshFileChecks, HostileColladaIsRefusedNamingTheDefect) {
+  const TempDir dir;
+  const std::string whole = dir.file("world.dae");
+  writeMesh(makeScene("keyhole").world, whole);
+  const std::string content = fileContent(whole);
+  ASSERT_EQ(problemOf(dir, "valid.dae", content), "");
+  const auto edited = [&](const std::string& find, const std::string& replacement) {
+    const std::size_t at = content.find(find);
+    EXPECT_NE(at, std::string::npos) << find;
+    return content.substr(0, at) + replacement + content.substr(at + find.size());
+  };
+  std::string deep;
+  for (int i = 0; i < 10000; ++i) deep += "<node>";
+  for (int i = 0; i < 10000; ++i) deep += "</node>";
+  EXPECT_EQ(problemOf(dir, "deep.dae", edited("</visual_scene>", deep + "</visual_scene>")),
+            "COLLADA elements nested deeper than 256 (<node>)");
+  EXPECT_EQ(problemOf(dir, "loop.dae", edited("</visual_scene>", "<node id=\"a\"><node id=\"b\"><instance_node url=\"#a\"/>"
+                                                                  "</node></node></visual_scene>")),
+            "COLLADA <node id=\"a\">: instances itself (through <instance_node>)");
+  const std::size_t count = content.find("count=\"", content.find("<float_array"));
+  ASSERT_NE(count, std::string::npos);
+  const std::string huge = content.substr(0, count) + "count=\"1000000000" + content.substr(content.find('"', count + 7));
+  EXPECT_NE(problemOf(dir, "count.dae", huge).find("count=\"1000000000\" but"), std::string::npos);
+  EXPECT_NE(problemOf(dir, "junk.dae", edited("<p>", "<p>99999999999999 ")).find("holds something other than indices"),
+            std::string::npos);
+  EXPECT_NE(problemOf(dir, "words.dae", edited("<p>", "<p>x ")).find("holds something other than indices"),
+            std::string::npos);
 }

@@ -285,7 +285,7 @@ const MalformedFile kMalformedFiles[] = {
     {"bad_truncated.off", "OFF file is truncated: it promises 8 vertices and 6 faces in 86 bytes"},
     {"bad_nan.off", "vertex 2 has a non-finite coordinate (nan)"},
     {"bad_truncated.ply", "PLY file is truncated"},
-    {"bad_truncated.dae", "cannot read mesh: Unable to read file, malformed XML"},
+    {"bad_truncated.dae", "COLLADA file is not well-formed XML at byte 842: Start-end tags mismatch"},
 };
 
 class MalformedMeshFile : public ::testing::TestWithParam<MalformedFile> {};

@@ -2,7 +2,8 @@
 
 // Checks of mesh files before the import library reads them (docs/design.md section
 // 9): the import library trusts counts and indices, so a truncated or edited PLY or
-// OFF file can make it loop for ever, exhaust memory or crash. These read the whole
+// OFF file, or a COLLADA file nested deep or instancing itself, can make it loop for
+// ever, exhaust memory or crash. These read the whole
 // file against its own header, bounds checked, and throw InputError naming the file
 // and the defect; they build nothing.
 
@@ -24,5 +25,12 @@ void checkOffFile(const std::string& path, const std::string& content);
 /// An OBJ file: every face ('f') with at least 3 vertices (the import library takes a
 /// shorter one for a point or a line without a word).
 void checkObjFaces(const std::string& path, const std::string& content);
+
+/// A COLLADA file: well-formed XML, elements nested at most 256 deep, no node that
+/// instances itself through <instance_node> (directly or by a chain), every
+/// <float_array> holding as many numbers as its count says and every <accessor>
+/// reading within its array, every index list (<p>, <v>, <vcount>, <h>) of whole
+/// numbers below the number of values the file holds.
+void checkColladaFile(const std::string& path, const std::string& content);
 
 }  // namespace freespace::detail

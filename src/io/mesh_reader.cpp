@@ -90,14 +90,15 @@ ImportedMesh importWithAssimp(const std::string& path) {
   return imported;
 }
 
-// The import library trusts counts and indices: PLY, OFF and OBJ files are checked
-// against their own headers first (mesh_file_checks.h).
+// The import library trusts counts and indices: PLY, OFF, OBJ and COLLADA files are
+// checked against their own headers and structure first (mesh_file_checks.h).
 void checkBeforeImport(const std::string& path, const std::string& format, std::ifstream& file) {
-  if (format != ".ply" && format != ".off" && format != ".obj") return;
+  if (format == ".stl") return;
   const std::string content{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
   if (format == ".ply") detail::checkPlyFile(path, content);
   if (format == ".off") detail::checkOffFile(path, content);
   if (format == ".obj") detail::checkObjFaces(path, content);
+  if (format == ".dae") detail::checkColladaFile(path, content);
 }
 
 // Formats OMPL.app cannot read have no convention of their own: the plain average of
