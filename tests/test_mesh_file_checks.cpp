@@ -163,3 +163,13 @@ TEST(MeshFileChecks, HostileColladaIsRefusedNamingTheDefect) {
   EXPECT_NE(problemOf(dir, "words.dae", edited("<p>", "<p>x ")).find("holds something other than indices"),
             std::string::npos);
 }
+
+TEST(MeshFileChecks, CoordinatesBeyondSinglePrecisionAreReportedAsRead) {
+  const TempDir dir;
+  const std::string faces = "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  EXPECT_EQ(problemOf(dir, "big.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1e39\n" + faces),
+            "a vertex at (0, 0, inf) as read: coordinates must be finite and within single precision's range (about "
+            "3.4e38), in which the file is read");
+  EXPECT_NE(problemOf(dir, "inf.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 -inf\n" + faces).find("(0, 0, -inf) as read"),
+            std::string::npos);
+}

@@ -268,7 +268,7 @@ const MalformedFile kMalformedFiles[] = {
     {"bad_nonmanifold.obj", "1 triangle encloses nothing"},
     {"bad_zero_area.obj", "2 triangles enclose nothing"},
     {"bad_flat.obj", "3 triangles enclose nothing"},
-    {"bad_nan.obj", "has a non-finite coordinate (nan)"},
+    {"bad_nan.obj", "a vertex at (0, 0, nan) as read: coordinates must be finite"},
     {"bad_no_triangles.obj", "contains no triangles"},
     {"bad_index.obj", "cannot read mesh: OBJ: vertex index out of range"},
     {"bad_empty.obj", "file is empty"},
@@ -283,7 +283,7 @@ const MalformedFile kMalformedFiles[] = {
     {"bad_dataset.vtk", "line 4: not a POLYDATA dataset (found UNSTRUCTURED_GRID)"},
     {"bad_header.vtk", "not a legacy VTK file"},
     {"bad_truncated.off", "OFF file is truncated: it promises 8 vertices and 6 faces in 86 bytes"},
-    {"bad_nan.off", "vertex 2 has a non-finite coordinate (nan)"},
+    {"bad_nan.off", "a vertex at (4, nan, 0) as read: coordinates must be finite"},
     {"bad_truncated.ply", "PLY file is truncated"},
     {"bad_truncated.dae", "COLLADA file is not well-formed XML at byte 842: Start-end tags mismatch"},
 };

@@ -73,6 +73,9 @@ TEST(Problem, BadValuesAndSyntaxAreErrors) {
   EXPECT_EQ(errorOf(dir.file("r.cfg")),
             dir.file("r.cfg") + ": [benchmark] run_count = '-3' is not a whole number from 0 to 4294967295");
   EXPECT_EQ(errorOf(dir.file("none.cfg")), dir.file("none.cfg") + ": cannot open file: No such file or directory");
+  dir.write("nul.cfg", std::string("[problem]\nrobot = r.obj\0junk\nworld = w.obj\n", 43));
+  EXPECT_EQ(errorOf(dir.file("nul.cfg")),
+            dir.file("nul.cfg") + ": key 'problem.robot': a control character (such as a NUL byte) in the line");
 }
 
 TEST(Problem, UnknownKeysAreWarnings) {

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <system_error>
 
 #include <assimp/Importer.hpp>
@@ -72,6 +74,22 @@ void collectTriangles(const aiScene& scene, const aiNode& node, aiMatrix4x4 tran
   }
 }
 
+// Coordinates are read as floats: one beyond their range (about 3.4e38) is infinite,
+// and a transform would turn it into NaN; said here, as read.
+void requireFiniteAsRead(const std::string& path, const aiScene& scene) {
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    for (unsigned v = 0; v < scene.mMeshes[m]->mNumVertices; ++v) {
+      const aiVector3D& p = scene.mMeshes[m]->mVertices[v];
+      if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z)) continue;
+      std::ostringstream text;
+      text << "a vertex at (" << p.x << ", " << p.y << ", " << p.z
+           << ") as read: coordinates must be finite and within single precision's range (about 3.4e38), "
+              "in which the file is read";
+      throw InputError(path, text.str());
+    }
+  }
+}
+
 // Assimp applies its importers' conventions as OMPL.app sees them: a COLLADA
 // file's <unit> scale and its up axis (Z_UP is turned to Y_UP) are in the root
 // node's transform.
@@ -79,6 +97,7 @@ ImportedMesh importWithAssimp(const std::string& path) {
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path, kOmplAppImportFlags);
   if (!scene) throw InputError(path, std::string("cannot read mesh: ") + importer.GetErrorString());
+  requireFiniteAsRead(path, *scene);
   ImportedMesh imported;
   aiVector3D vertexSum(0, 0, 0);
   std::size_t vertexCount = 0, pieceCount = 0;

@@ -39,10 +39,20 @@ Sections parseSections(std::istream& input, const std::string& cfgPath) {
   }
   Sections sections;
   for (const po::option& option : parsed.options) {
+    // A control character (a NUL byte above all) would cut a file name and every
+    // message that quotes it.
+    const std::string value = option.value.empty() ? "" : option.value.front();
+    const auto control = [](unsigned char c) { return c < 0x20 && c != '\t'; };
+    if (std::any_of(option.string_key.begin(), option.string_key.end(), control) ||
+        std::any_of(value.begin(), value.end(), control)) {
+      std::string key = option.string_key;
+      std::replace_if(key.begin(), key.end(), control, '?');
+      throw InputError(cfgPath, "key '" + key + "': a control character (such as a NUL byte) in the line");
+    }
     const std::size_t dot = option.string_key.find('.');
     const std::string section = dot == std::string::npos ? "" : option.string_key.substr(0, dot);
     const std::string key = dot == std::string::npos ? option.string_key : option.string_key.substr(dot + 1);
-    sections[section].push_back({key, option.value.empty() ? "" : option.value.front()});
+    sections[section].push_back({key, value});
   }
   return sections;
 }
