@@ -553,15 +553,74 @@ void requireConsistentArrays(const std::string& path, const pugi::xml_document& 
       const bool numbers = parseWhole(element.attribute("count").value(), count) &&
                            (!element.attribute("stride") || parseWhole(element.attribute("stride").value(), stride)) &&
                            (!element.attribute("offset") || parseWhole(element.attribute("offset").value(), offset));
+      if (array == arraySizes.end()) {
+        throw InputError(path, elementDefect(element, "source=\"" + source + "\" names no array of the file"));
+      }
       if (!numbers || count < 0 || stride < 1 || offset < 0 ||
-          (array != arraySizes.end() && static_cast<long double>(count) * stride + offset >
-                                            static_cast<long double>(array->second))) {
+          static_cast<long double>(count) * stride + offset > static_cast<long double>(array->second)) {
         throw InputError(path, elementDefect(element, "reads beyond its array"));
       }
     } else if ((name == "p" || name == "v" || name == "vcount" || name == "h") &&
                !indicesBelow(element.child_value(), std::max<long double>(values, countWords(element.child_value())))) {
       throw InputError(path, elementDefect(element.parent(), "<" + name + "> holds something other than indices of "
                                                              "the file's values"));
+    }
+  });
+}
+
+// The values a primitive element's index lists must hold: the count of its
+// primitives times the corners each takes, times the inputs' stride (the largest
+// input offset plus one); <polylist> takes its corners from <vcount>, the
+// one-list-per-primitive kinds count their lists.
+void requireCompletePrimitives(const std::string& path, const pugi::xml_document& document) {
+  forEachElement(document, [&](const pugi::xml_node& element, int) {
+    const std::string name = element.name();
+    const bool oneList = name == "triangles" || name == "lines" || name == "polylist";
+    const bool listEach = name == "polygons" || name == "trifans" || name == "tristrips" || name == "linestrips";
+    if (!oneList && !listEach) return;
+    std::int64_t count = 0;
+    if (!parseWhole(element.attribute("count").value(), count) || count < 0) {
+      throw InputError(path, elementDefect(element, "count is not a whole number"));
+    }
+    if (listEach) {
+      std::int64_t lists = 0;
+      for (const pugi::xml_node& child : element.children()) lists += std::strcmp(child.name(), "p") == 0 || std::strcmp(child.name(), "ph") == 0;
+      if (lists != count) {
+        throw InputError(path, elementDefect(element, "count=\"" + std::to_string(count) + "\" but " +
+                                                          std::to_string(lists) + " <p> lists"));
+      }
+      return;
+    }
+    std::int64_t stride = 1;
+    for (const pugi::xml_node& input : element.children("input")) {
+      std::int64_t offset = 0;
+      if (input.attribute("offset") && (!parseWhole(input.attribute("offset").value(), offset) || offset < 0 || offset > 64)) {
+        throw InputError(path, elementDefect(element, "an <input> offset is not a small whole number"));
+      }
+      stride = std::max(stride, offset + 1);
+    }
+    long double corners = static_cast<long double>(count) * (name == "triangles" ? 3 : 2);
+    if (name == "polylist") {
+      const pugi::xml_node vcount = element.child("vcount");
+      std::istringstream words(vcount.child_value());
+      corners = 0;
+      std::int64_t polygons = 0;
+      for (std::string word; words >> word; ++polygons) {
+        std::int64_t size = 0;
+        if (!parseWhole(word, size) || size < 1) throw InputError(path, elementDefect(element, "<vcount> holds '" + word + "'"));
+        corners += static_cast<long double>(size);
+      }
+      if (!vcount || polygons != count) {
+        throw InputError(path, elementDefect(element, "count=\"" + std::to_string(count) + "\" but " +
+                                                          std::to_string(polygons) + " sizes in <vcount>"));
+      }
+    }
+    const long double values = static_cast<long double>(countWords(element.child("p").child_value()));
+    if (count > 0 && values != corners * static_cast<long double>(stride)) {
+      std::ostringstream text;
+      text << static_cast<double>(corners) << " corners of " << stride << " indices each need "
+           << static_cast<double>(corners * stride) << " values in <p>, it has " << static_cast<double>(values);
+      throw InputError(path, elementDefect(element, text.str()));
     }
   });
 }
@@ -583,6 +642,7 @@ void checkColladaFile(const std::string& path, const std::string& content) {
   });
   requireNoInstanceCycle(path, document);
   requireConsistentArrays(path, document);
+  requireCompletePrimitives(path, document);
 }
 
 }  // namespace freespace::detail

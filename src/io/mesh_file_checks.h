@@ -29,8 +29,9 @@ void checkObjFaces(const std::string& path, const std::string& content);
 /// A COLLADA file: well-formed XML, elements nested at most 256 deep, no node that
 /// instances itself through <instance_node> (directly or by a chain), every
 /// <float_array> holding as many numbers as its count says and every <accessor>
-/// reading within its array, every index list (<p>, <v>, <vcount>, <h>) of whole
-/// numbers below the number of values the file holds.
+/// reading within an array of the file, every index list (<p>, <v>, <vcount>, <h>) of whole
+/// numbers below the number of values the file holds, and every primitive element
+/// (<triangles>, <polylist>, ...) with as many indices as its count and inputs need.
 void checkColladaFile(const std::string& path, const std::string& content);
 
 }  // namespace freespace::detail

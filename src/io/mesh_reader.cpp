@@ -152,9 +152,4 @@ ImportedMesh importMesh(const std::string& path) {
 
 TriangleSoup readTriangleSoup(const std::string& path) { return importMesh(path).soup; }
 
-Mesh loadMesh(const std::string& path, std::vector<std::string>* warnings, const PreparationSettings& settings,
-              PreparationReport* report) {
-  return prepareMesh(readTriangleSoup(path), path, settings, report, warnings);
-}
-
 }  // namespace freespace

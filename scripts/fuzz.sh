@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Builds the readers' libFuzzer targets (tests/fuzz) with clang and runs each for a
+# bounded time, seeded from the project's own files (tests/data, benchmarks/problems,
+# meshes the generator writes) and the inputs earlier runs found
+# (tests/fuzz/regressions/TARGET). Exits non-zero at the first crash, sanitizer error,
+# hang (10 s per input) or runaway memory (2 GB), keeping the input in the work
+# folder. Leaks are not counted: assimp 5.2 leaks a few kB on some malformed COLLADA
+# files, which the project cannot mend.
+#
+# Usage: scripts/fuzz.sh [SECONDS_PER_TARGET] [WORK_FOLDER]   (default 30, a temporary folder)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-30}
+work=$(realpath -m "${2:-$(mktemp -d)}")
+mkdir -p "$work"
+cmake -S tests/fuzz -B "$work/build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo > "$work/configure.log"
+cmake --build "$work/build" -j"$(nproc)" > "$work/build.log"
+
+# Seeds: the project's own files of each kind, and meshes of every format from the generator.
+generated="$work/generated"
+if [ ! -d "$generated" ]; then
+  for format in obj stl ply off dae vtk; do
+    build/bin/freespace generate --out "$generated/$format" --scene keyhole --scene soup_pieces --format "$format" > /dev/null
+  done
+fi
+seeds() {  # TARGET -> folder of seed files (paths from the project's root)
+  local target=$1 folder="$work/seeds/$1" extension=${1#fuzz_mesh_} i=0
+  mkdir -p "$folder"
+  case $target in
+    fuzz_cfg) files=$(find benchmarks/problems "$generated/obj" -name "*.cfg") ;;
+    fuzz_path) files=$(find benchmarks -name "*.path") ;;
+    *) files=$(find tests/data benchmarks/problems "$generated/$extension" -name "*.$extension") ;;
+  esac
+  [ -d "tests/fuzz/regressions/$target" ] && files="$files $(find "tests/fuzz/regressions/$target" -type f)"
+  for file in $files; do cp "$file" "$folder/$((i++))_$(basename "$file")"; done
+  printf '0 0 0\n1.5 -2 3.1 # a comment\n\n# only a comment\n' > "$folder/batch.path"
+  echo "$folder"
+}
+
+for binary in "$work"/build/fuzz_*; do
+  target=$(basename "$binary")
+  corpus="$work/corpus/$target"
+  mkdir -p "$corpus" "$work/findings/$target"
+  echo "fuzz: $target for $seconds s"
+  seedFolder=$(seeds "$target")
+  (cd "$work/findings/$target" && ASAN_OPTIONS=detect_leaks=0 "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+    -detect_leaks=0 -print_final_stats=1 "$corpus" "$seedFolder" > "$work/$target.log" 2>&1) || {
+    echo "fuzz: $target found a failure; its input is in $work/findings/$target:"
+    grep -E "ERROR|SUMMARY|Test unit written" "$work/$target.log" | head -5
+    exit 1
+  }
+  grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$work/$target.log" | tr '\n' ' '
+  echo
+done
+echo "fuzz: no failure in $(ls "$work"/build/fuzz_* | wc -l) targets"

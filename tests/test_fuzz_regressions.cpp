@@ -1,0 +1,33 @@
+// Inputs the fuzz targets (tests/fuzz, scripts/fuzz.sh) once failed on, kept in
+// tests/fuzz/regressions/TARGET: each must now be read or refused with exit status 2
+// within a time limit, by the command line tool as a user would meet it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "command_runner.h"
+
+using freespace::testing::CommandResult;
+using freespace::testing::runFreespace;
+
+namespace fs = std::filesystem;
+
+TEST(FuzzRegressions, EveryFoundInputIsReadOrRefusedInTime) {
+  const fs::path root = fs::path(FREESPACE_SOURCE_DIR) / "tests/fuzz/regressions";
+  const std::string cube = "'" + std::string(FREESPACE_TEST_DATA) + "/meshes/cube.obj'";
+  int inputs = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    if (!entry.is_regular_file()) continue;
+    const std::string target = entry.path().parent_path().filename().string();
+    const std::string file = "'" + entry.path().string() + "'";
+    std::string arguments;
+    if (target == "fuzz_cfg") arguments = "info --cfg " + file;
+    else if (target == "fuzz_path") arguments = "check " + cube + " " + cube + " --batch " + file;
+    else arguments = "info " + file + " " + cube;
+    const CommandResult result = runFreespace(arguments, 30);
+    EXPECT_TRUE(result.status == 0 || result.status == 2) << arguments << ": status " << result.status << "\n"
+                                                          << result.err;
+    ++inputs;
+  }
+  EXPECT_GT(inputs, 0);
+}
