@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the readers' libFuzzer targets (tests/fuzz) with clang and runs each for a
 # bounded time, seeded from the project's own files (tests/data, benchmarks/problems,
-# meshes the generator writes) and the inputs earlier runs found
+# meshes the generator writes; those under 64 kB, so that runs stay quick) and the
+# inputs earlier runs found
 # (tests/fuzz/regressions/TARGET). Exits non-zero at the first crash, sanitizer error,
 # hang (10 s per input) or runaway memory (2 GB), keeping the input in the work
 # folder. Leaks are not counted: assimp 5.2 leaks a few kB on some malformed COLLADA
@@ -29,7 +30,7 @@ seeds() {  # TARGET -> folder of seed files (paths from the project's root)
   case $target in
     fuzz_cfg) files=$(find benchmarks/problems "$generated/obj" -name "*.cfg") ;;
     fuzz_path) files=$(find benchmarks -name "*.path") ;;
-    *) files=$(find tests/data benchmarks/problems "$generated/$extension" -name "*.$extension") ;;
+    *) files=$(find tests/data benchmarks/problems "$generated/$extension" -name "*.$extension" -size -64k) ;;
   esac
   [ -d "tests/fuzz/regressions/$target" ] && files="$files $(find "tests/fuzz/regressions/$target" -type f)"
   for file in $files; do cp "$file" "$folder/$((i++))_$(basename "$file")"; done

@@ -71,6 +71,18 @@ class Lines {
   std::size_t number_ = 0;
 };
 
+// Text formats hold no control characters but tabs and line ends: the import library
+// reads a NUL byte as the end of a line, and its counts then disagree with ours.
+void requirePlainText(const std::string& path, std::string_view text, const std::string& format) {
+  for (std::size_t at = 0; at < text.size(); ++at) {
+    const auto c = static_cast<unsigned char>(text[at]);
+    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+      throw InputError(path, format + " file holds a control character (byte " + std::to_string(c) + " at offset " +
+                                 std::to_string(at) + ")");
+    }
+  }
+}
+
 std::string faceDefect(std::size_t face, std::int64_t corners) {
   return "face " + std::to_string(face) + " has " + std::to_string(corners) + " vertices (at least 3 needed)";
 }
@@ -352,6 +364,8 @@ void checkPlyAsciiBody(const std::string& path, const std::string& content, cons
 
 void checkPlyFile(const std::string& path, const std::string& content) {
   const PlyHeader header = readPlyHeader(path, content);
+  requirePlainText(path, std::string_view(content).substr(0, header.bodyStart), "PLY header of the");
+  if (header.format == PlyFormat::ascii) requirePlainText(path, content, "PLY");
   const PlyMeshLayout layout = plyMeshLayout(path, header);
   requirePlyBodySize(path, header, content.size() - header.bodyStart);
   if (header.format == PlyFormat::ascii) {
@@ -362,6 +376,7 @@ void checkPlyFile(const std::string& path, const std::string& content) {
 }
 
 void checkOffFile(const std::string& path, const std::string& content) {
+  requirePlainText(path, content, "OFF");
   Lines lines(content);
   std::string_view line;
   std::vector<std::string_view> words;
@@ -427,6 +442,7 @@ void checkOffFile(const std::string& path, const std::string& content) {
 }
 
 void checkObjFaces(const std::string& path, const std::string& content) {
+  requirePlainText(path, content, "OBJ");
   Lines lines(content);
   std::string_view line;
   while (lines.next(line)) {

@@ -17,12 +17,13 @@ namespace freespace::detail {
 /// every face with at least 3 vertices, each an index of a vertex.
 void checkPlyFile(const std::string& path, const std::string& content);
 
-/// An OFF file (3D; OFF, COFF, NOFF, CNOFF, STOFF ... headers): its counts, weighed
+/// An OFF file (3D; OFF, COFF, NOFF, CNOFF, STOFF ... headers), plain text: its counts, weighed
 /// against the file's size; every vertex line with 3 numbers; every face with at
 /// least 3 vertices, each an index of a vertex.
 void checkOffFile(const std::string& path, const std::string& content);
 
-/// An OBJ file: every face ('f') with at least 3 vertices (the import library takes a
+/// An OBJ file: plain text (no control characters but tabs and line ends), every
+/// face ('f') with at least 3 vertices (the import library takes a
 /// shorter one for a point or a line without a word).
 void checkObjFaces(const std::string& path, const std::string& content);
 
