@@ -87,9 +87,9 @@ std::string faceDefect(std::size_t face, std::int64_t corners) {
   return "face " + std::to_string(face) + " has " + std::to_string(corners) + " vertices (at least 3 needed)";
 }
 
-std::string indexDefect(std::size_t face, std::int64_t index, std::uint64_t vertices) {
-  return "face " + std::to_string(face) + " uses vertex " + std::to_string(index) + " of " +
-         std::to_string(vertices) + " (out of range)";
+std::string indexDefect(std::size_t face, const std::string& index, std::uint64_t vertices) {
+  return "face " + std::to_string(face) + " uses vertex " + index + " of " + std::to_string(vertices) +
+         " (out of range)";
 }
 
 // ---------------------------------------------------------------------------------
@@ -299,6 +299,10 @@ void checkPlyBinaryBody(const std::string& path, const std::string& content, con
         PlyProperty countType;
         countType.isSigned = false;
         const std::int64_t count = reader.integer(countType, property.countSize);
+        if (count < 0 || count > static_cast<std::int64_t>(content.size())) {
+          throw InputError(path, "PLY " + element.name + " " + std::to_string(record) + ": list length " +
+                                     std::to_string(count) + " does not fit the file");
+        }
         const bool indices = e == layout.faceElement && p == layout.indexProperty;
         if (indices && count < 3) throw InputError(path, faceDefect(record, count));
         if (!indices) {
@@ -308,7 +312,7 @@ void checkPlyBinaryBody(const std::string& path, const std::string& content, con
         for (std::int64_t i = 0; i < count; ++i) {
           const std::int64_t index = reader.integer(property, property.size);
           if (index < 0 || static_cast<std::uint64_t>(index) >= layout.vertices) {
-            throw InputError(path, indexDefect(record, index, layout.vertices));
+            throw InputError(path, indexDefect(record, std::to_string(index), layout.vertices));
           }
         }
       }
@@ -326,8 +330,8 @@ void checkPlyAsciiBody(const std::string& path, const std::string& content, cons
     if (at == start) throw InputError(path, "PLY file is truncated: it ends before the records its header promises");
     word = std::string_view(content).substr(start, at - start);
   };
+  std::string_view word;
   const auto number = [&](const std::string& what) {
-    std::string_view word;
     nextWord(word);
     double value = 0;
     if (!parseNumber(word, value)) throw InputError(path, "PLY " + what + ": '" + std::string(word) + "' is not a number");
@@ -352,7 +356,7 @@ void checkPlyAsciiBody(const std::string& path, const std::string& content, cons
         for (double i = 0; i < count; ++i) {
           const double index = number(what);
           if (indices && (index != std::floor(index) || index < 0 || index >= static_cast<double>(layout.vertices))) {
-            throw InputError(path, indexDefect(record, static_cast<std::int64_t>(index), layout.vertices));
+            throw InputError(path, indexDefect(record, std::string(word), layout.vertices));
           }
         }
       }
@@ -435,7 +439,7 @@ void checkOffFile(const std::string& path, const std::string& content) {
     for (std::int64_t i = 1; i <= corners; ++i) {
       std::int64_t index = 0;
       if (!parseWhole(words[i], index) || index < 0 || index >= vertices) {
-        throw InputError(path, indexDefect(f, index, static_cast<std::uint64_t>(vertices)));
+        throw InputError(path, indexDefect(f, std::string(words[i]), static_cast<std::uint64_t>(vertices)));
       }
     }
   }
