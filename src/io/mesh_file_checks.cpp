@@ -648,6 +648,9 @@ void requireCompletePrimitives(const std::string& path, const pugi::xml_document
 }  // namespace
 
 void checkColladaFile(const std::string& path, const std::string& content) {
+  // XML allows no other control characters; the import library looped for ever on a
+  // vertical tab between indices.
+  requirePlainText(path, content, "COLLADA");
   pugi::xml_document document;
   const pugi::xml_parse_result parsed = document.load_buffer(content.data(), content.size());
   if (!parsed) {

@@ -27,7 +27,8 @@ void checkOffFile(const std::string& path, const std::string& content);
 /// shorter one for a point or a line without a word).
 void checkObjFaces(const std::string& path, const std::string& content);
 
-/// A COLLADA file: well-formed XML, elements nested at most 256 deep, no node that
+/// A COLLADA file: well-formed XML without control characters but tabs and line
+/// ends, elements nested at most 256 deep, no node that
 /// instances itself through <instance_node> (directly or by a chain), every
 /// <float_array> holding as many numbers as its count says and every <accessor>
 /// reading within an array of the file, every index list (<p>, <v>, <vcount>, <h>) of whole
