@@ -8,11 +8,20 @@
 # folder. Leaks are not counted: assimp 5.2 leaks a few kB on some malformed COLLADA
 # files, which the project cannot mend.
 #
-# Usage: scripts/fuzz.sh [SECONDS_PER_TARGET] [WORK_FOLDER]   (default 30, a temporary folder)
+# Usage: scripts/fuzz.sh [SECONDS_PER_TARGET] [WORK_FOLDER]   (default 30, a temporary
+# folder removed after a run without failure); needs the project built (scripts/build.sh).
+# FUZZ_SEED (default 1) seeds libFuzzer's choices: with the same seed, corpus and
+# machine a shorter run repeats the start of a longer one, so the test suite's short
+# run is known to pass; another seed explores further.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-30}
-work=$(realpath -m "${2:-$(mktemp -d)}")
+if [ -n "${2:-}" ]; then
+  work=$(realpath -m "$2")
+else
+  work=$(mktemp -d)
+  keepWork=no
+fi
 mkdir -p "$work"
 cmake -S tests/fuzz -B "$work/build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo > "$work/configure.log"
 cmake --build "$work/build" -j"$(nproc)" > "$work/build.log"
@@ -45,7 +54,7 @@ for binary in "$work"/build/fuzz_*; do
   echo "fuzz: $target for $seconds s"
   seedFolder=$(seeds "$target")
   (cd "$work/findings/$target" && ASAN_OPTIONS=detect_leaks=0 "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
-    -detect_leaks=0 -print_final_stats=1 "$corpus" "$seedFolder" > "$work/$target.log" 2>&1) || {
+    -detect_leaks=0 -seed="${FUZZ_SEED:-1}" -print_final_stats=1 "$corpus" "$seedFolder" > "$work/$target.log" 2>&1) || {
     echo "fuzz: $target found a failure; its input is in $work/findings/$target:"
     grep -E "ERROR|SUMMARY|Test unit written" "$work/$target.log" | head -5
     exit 1
@@ -54,3 +63,4 @@ for binary in "$work"/build/fuzz_*; do
   echo
 done
 echo "fuzz: no failure in $(ls "$work"/build/fuzz_* | wc -l) targets"
+if [ "${keepWork:-yes}" = no ]; then rm -rf "$work"; fi

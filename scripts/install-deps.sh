@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config clang libclang-rt-14-dev
   libompl-dev ompl-demos
   libfcl-dev libccd-dev
   libeigen3-dev

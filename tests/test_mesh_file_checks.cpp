@@ -116,7 +116,8 @@ TEST(MeshFileChecks, CountsBeyondTheFileAreRefusedAtOnce) {
   const std::string header = "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\n"
                              "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
   EXPECT_NE(problemOf(dir, "huge.ply", header + "0 0 0\n").find("PLY file is truncated"), std::string::npos);
-  EXPECT_EQ(problemOf(dir, "cut.ply", header.substr(0, 60)), "PLY header has no end_header line");
+  EXPECT_EQ(problemOf(dir, "cut.ply", header.substr(0, 60)), "PLY header line 4: unexpected 'property floa'");
+  EXPECT_EQ(problemOf(dir, "unended.ply", header.substr(0, header.size() - 11)), "PLY header has no end_header line");
 }
 
 TEST(MeshFileChecks, FacesWithFewerThanThreeVerticesAreRefused) {

@@ -273,7 +273,7 @@ const MalformedFile kMalformedFiles[] = {
     {"bad_index.obj", "cannot read mesh: OBJ: vertex index out of range"},
     {"bad_empty.obj", "file is empty"},
     {"bad_garbage.stl", "cannot read mesh:"},
-    {"bad_garbage.ply", "PLY header has no end_header line"},
+    {"bad_garbage.ply", "PLY header line 1: expected 'ply'"},
     {"bad_format.xyz", "unsupported mesh format '.xyz' (expected obj, stl, ply, off, dae or vtk)"},
     {"bad_truncated.vtk", "line 5: expected 24 point coordinates, file ended after 13"},
     {"bad_nan.vtk", "vertex 3 has a non-finite coordinate (nan)"},

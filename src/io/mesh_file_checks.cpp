@@ -83,6 +83,16 @@ void requirePlainText(const std::string& path, std::string_view text, const std:
   }
 }
 
+// Text from a file as a message may quote it: bytes that are not printable ASCII
+// become '?'.
+std::string printable(std::string_view text) {
+  std::string result(text.substr(0, 80));
+  for (char& c : result) {
+    if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7e) c = '?';
+  }
+  return result;
+}
+
 std::string faceDefect(std::size_t face, std::int64_t corners) {
   return "face " + std::to_string(face) + " has " + std::to_string(corners) + " vertices (at least 3 needed)";
 }
@@ -141,13 +151,14 @@ bool plyType(std::string_view name, PlyProperty& type) {
 constexpr std::size_t kLongestPlyHeader = 1 << 20;
 
 PlyHeader readPlyHeader(const std::string& path, const std::string& content) {
-  const std::size_t end = content.find("end_header", 0);
-  if (end == std::string::npos || end > kLongestPlyHeader) throw InputError(path, "PLY header has no end_header line");
-  Lines lines(std::string_view(content).substr(0, end + 10));
+  // The header's lines, up to a line that is "end_header" and nothing else.
+  Lines lines(std::string_view(content).substr(0, std::min(content.size(), kLongestPlyHeader)));
   PlyHeader header;
-  bool formatSeen = false;
+  bool formatSeen = false, ended = false;
+  std::size_t bodyStart = 0;
   std::string_view line;
-  while (lines.next(line)) {
+  while (!ended && lines.next(line)) {
+    bodyStart = static_cast<std::size_t>(line.data() - content.data()) + line.size() + 1;
     const std::vector<std::string_view> words = wordsOf(line);
     const std::string where = "PLY header line " + std::to_string(lines.number()) + ": ";
     if (lines.number() == 1) {
@@ -155,12 +166,15 @@ PlyHeader readPlyHeader(const std::string& path, const std::string& content) {
       continue;
     }
     if (words.empty() || words[0] == "comment" || words[0] == "obj_info") continue;
-    if (words[0] == "end_header") break;
+    if (words[0] == "end_header" && words.size() == 1) {
+      ended = true;
+      continue;
+    }
     if (words[0] == "format" && words.size() == 3) {
       if (words[1] == "ascii") header.format = PlyFormat::ascii;
       else if (words[1] == "binary_little_endian") header.format = PlyFormat::littleEndian;
       else if (words[1] == "binary_big_endian") header.format = PlyFormat::bigEndian;
-      else throw InputError(path, where + "unknown format '" + std::string(words[1]) + "'");
+      else throw InputError(path, where + "unknown format '" + printable(words[1]) + "'");
       formatSeen = true;
     } else if (words[0] == "element" && words.size() == 3) {
       std::int64_t count = 0;
@@ -181,12 +195,12 @@ PlyHeader readPlyHeader(const std::string& path, const std::string& content) {
       property.countSize = list ? countType.size : 0;
       header.elements.back().properties.push_back(property);
     } else {
-      throw InputError(path, where + "unexpected '" + std::string(line) + "'");
+      throw InputError(path, where + "unexpected '" + printable(line) + "'");
     }
   }
+  if (!ended) throw InputError(path, "PLY header has no end_header line");
   if (!formatSeen) throw InputError(path, "PLY header has no format line");
-  const std::size_t newline = content.find('\n', end);
-  header.bodyStart = newline == std::string::npos ? content.size() : newline + 1;
+  header.bodyStart = std::min(bodyStart, content.size());
   return header;
 }
 
@@ -300,7 +314,7 @@ void checkPlyBinaryBody(const std::string& path, const std::string& content, con
         countType.isSigned = false;
         const std::int64_t count = reader.integer(countType, property.countSize);
         if (count < 0 || count > static_cast<std::int64_t>(content.size())) {
-          throw InputError(path, "PLY " + element.name + " " + std::to_string(record) + ": list length " +
+          throw InputError(path, "PLY " + printable(element.name) + " " + std::to_string(record) + ": list length " +
                                      std::to_string(count) + " does not fit the file");
         }
         const bool indices = e == layout.faceElement && p == layout.indexProperty;
@@ -334,13 +348,13 @@ void checkPlyAsciiBody(const std::string& path, const std::string& content, cons
   const auto number = [&](const std::string& what) {
     nextWord(word);
     double value = 0;
-    if (!parseNumber(word, value)) throw InputError(path, "PLY " + what + ": '" + std::string(word) + "' is not a number");
+    if (!parseNumber(word, value)) throw InputError(path, "PLY " + what + ": '" + printable(word) + "' is not a number");
     return value;
   };
   for (std::size_t e = 0; e < header.elements.size(); ++e) {
     const PlyElement& element = header.elements[e];
     for (std::uint64_t record = 0; record < element.count; ++record) {
-      const std::string what = element.name + " " + std::to_string(record);
+      const std::string what = printable(element.name) + " " + std::to_string(record);
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
         const PlyProperty& property = element.properties[p];
         if (property.countSize == 0) {
@@ -356,7 +370,7 @@ void checkPlyAsciiBody(const std::string& path, const std::string& content, cons
         for (double i = 0; i < count; ++i) {
           const double index = number(what);
           if (indices && (index != std::floor(index) || index < 0 || index >= static_cast<double>(layout.vertices))) {
-            throw InputError(path, indexDefect(record, std::string(word), layout.vertices));
+            throw InputError(path, indexDefect(record, printable(word), layout.vertices));
           }
         }
       }
@@ -398,7 +412,7 @@ void checkOffFile(const std::string& path, const std::string& content) {
     throw InputError(path, "OFF file does not start with OFF");
   }
   if (keyword.find('4') != std::string_view::npos || keyword.find('n') != std::string_view::npos) {
-    throw InputError(path, "only three-dimensional OFF files are read ('" + std::string(keyword) + "')");
+    throw InputError(path, "only three-dimensional OFF files are read ('" + printable(keyword) + "')");
   }
   std::vector<std::string_view> counts(words.begin() + 1, words.end());
   if (counts.empty()) {
@@ -439,7 +453,7 @@ void checkOffFile(const std::string& path, const std::string& content) {
     for (std::int64_t i = 1; i <= corners; ++i) {
       std::int64_t index = 0;
       if (!parseWhole(words[i], index) || index < 0 || index >= vertices) {
-        throw InputError(path, indexDefect(f, std::string(words[i]), static_cast<std::uint64_t>(vertices)));
+        throw InputError(path, indexDefect(f, printable(words[i]), static_cast<std::uint64_t>(vertices)));
       }
     }
   }
@@ -492,7 +506,7 @@ std::size_t countWords(const char* text) {
 
 std::string elementDefect(const pugi::xml_node& element, const std::string& defect) {
   const std::string id = element.attribute("id").value();
-  return "COLLADA <" + std::string(element.name()) + (id.empty() ? "" : " id=\"" + id + "\"") + ">: " + defect;
+  return "COLLADA <" + printable(element.name()) + (id.empty() ? "" : " id=\"" + printable(id) + "\"") + ">: " + defect;
 }
 
 // Nodes reachable from each node through nested nodes and <instance_node>: a cycle
@@ -558,7 +572,7 @@ void requireConsistentArrays(const std::string& path, const pugi::xml_document& 
     const std::size_t words = countWords(element.child_value());
     std::int64_t count = -1;
     if (!parseWhole(element.attribute("count").value(), count) || count != static_cast<std::int64_t>(words)) {
-      throw InputError(path, elementDefect(element, "count=\"" + std::string(element.attribute("count").value()) +
+      throw InputError(path, elementDefect(element, "count=\"" + printable(element.attribute("count").value()) +
                                                         "\" but " + std::to_string(words) + " values"));
     }
     if (element.attribute("id")) arraySizes[element.attribute("id").value()] = words;
@@ -574,7 +588,7 @@ void requireConsistentArrays(const std::string& path, const pugi::xml_document& 
                            (!element.attribute("stride") || parseWhole(element.attribute("stride").value(), stride)) &&
                            (!element.attribute("offset") || parseWhole(element.attribute("offset").value(), offset));
       if (array == arraySizes.end()) {
-        throw InputError(path, elementDefect(element, "source=\"" + source + "\" names no array of the file"));
+        throw InputError(path, elementDefect(element, "source=\"" + printable(source) + "\" names no array of the file"));
       }
       if (!numbers || count < 0 || stride < 1 || offset < 0 ||
           static_cast<long double>(count) * stride + offset > static_cast<long double>(array->second)) {
@@ -627,7 +641,9 @@ void requireCompletePrimitives(const std::string& path, const pugi::xml_document
       std::int64_t polygons = 0;
       for (std::string word; words >> word; ++polygons) {
         std::int64_t size = 0;
-        if (!parseWhole(word, size) || size < 1) throw InputError(path, elementDefect(element, "<vcount> holds '" + word + "'"));
+        if (!parseWhole(word, size) || size < 1) {
+          throw InputError(path, elementDefect(element, "<vcount> holds '" + printable(word) + "'"));
+        }
         corners += static_cast<long double>(size);
       }
       if (!vcount || polygons != count) {
@@ -660,7 +676,7 @@ void checkColladaFile(const std::string& path, const std::string& content) {
   forEachElement(document, [&](const pugi::xml_node& element, int depth) {
     if (depth > kDeepestCollada) {
       throw InputError(path, "COLLADA elements nested deeper than " + std::to_string(kDeepestCollada) + " (<" +
-                                 std::string(element.name()) + ">)");
+                                 printable(element.name()) + ">)");
     }
   });
   requireNoInstanceCycle(path, document);
