@@ -72,11 +72,14 @@ class Lines {
 };
 
 // Text formats hold no control characters but tabs and line ends: the import library
-// reads a NUL byte as the end of a line, and its counts then disagree with ours.
-void requirePlainText(const std::string& path, std::string_view text, const std::string& format) {
+// reads a NUL byte as the end of a line, and its counts then disagree with ours. In
+// formats of lines, a carriage return ends a line only before a line feed (the import
+// library ends a line at any, we would not: a record would be split in two).
+void requirePlainText(const std::string& path, std::string_view text, const std::string& format, bool ofLines) {
   for (std::size_t at = 0; at < text.size(); ++at) {
     const auto c = static_cast<unsigned char>(text[at]);
-    if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+    const bool lineEnd = c == '\n' || (c == '\r' && (!ofLines || (at + 1 < text.size() && text[at + 1] == '\n')));
+    if (c < 0x20 && c != '\t' && !lineEnd) {
       throw InputError(path, format + " file holds a control character (byte " + std::to_string(c) + " at offset " +
                                  std::to_string(at) + ")");
     }
@@ -382,8 +385,8 @@ void checkPlyAsciiBody(const std::string& path, const std::string& content, cons
 
 void checkPlyFile(const std::string& path, const std::string& content) {
   const PlyHeader header = readPlyHeader(path, content);
-  requirePlainText(path, std::string_view(content).substr(0, header.bodyStart), "PLY header of the");
-  if (header.format == PlyFormat::ascii) requirePlainText(path, content, "PLY");
+  requirePlainText(path, std::string_view(content).substr(0, header.bodyStart), "PLY header of the", true);
+  if (header.format == PlyFormat::ascii) requirePlainText(path, content, "PLY", true);
   const PlyMeshLayout layout = plyMeshLayout(path, header);
   requirePlyBodySize(path, header, content.size() - header.bodyStart);
   if (header.format == PlyFormat::ascii) {
@@ -394,7 +397,7 @@ void checkPlyFile(const std::string& path, const std::string& content) {
 }
 
 void checkOffFile(const std::string& path, const std::string& content) {
-  requirePlainText(path, content, "OFF");
+  requirePlainText(path, content, "OFF", true);
   Lines lines(content);
   std::string_view line;
   std::vector<std::string_view> words;
@@ -460,7 +463,7 @@ void checkOffFile(const std::string& path, const std::string& content) {
 }
 
 void checkObjFaces(const std::string& path, const std::string& content) {
-  requirePlainText(path, content, "OBJ");
+  requirePlainText(path, content, "OBJ", true);
   Lines lines(content);
   std::string_view line;
   while (lines.next(line)) {
@@ -666,7 +669,7 @@ void requireCompletePrimitives(const std::string& path, const pugi::xml_document
 void checkColladaFile(const std::string& path, const std::string& content) {
   // XML allows no other control characters; the import library looped for ever on a
   // vertical tab between indices.
-  requirePlainText(path, content, "COLLADA");
+  requirePlainText(path, content, "COLLADA", false);
   pugi::xml_document document;
   const pugi::xml_parse_result parsed = document.load_buffer(content.data(), content.size());
   if (!parsed) {
