@@ -19,8 +19,12 @@ void checkPlyFile(const std::string& path, const std::string& content);
 
 /// An OFF file (3D; OFF, COFF, NOFF, CNOFF, STOFF ... headers), plain text: its counts, weighed
 /// against the file's size; every vertex line with 3 numbers; every face with at
-/// least 3 vertices, each an index of a vertex.
-void checkOffFile(const std::string& path, const std::string& content);
+/// least 3 vertices, each an index of a vertex. The import library's OFF reader drops
+/// faces of more than kLargestOffFaceImported vertices (its OBJ reader takes any): for
+/// a file with such faces this returns the same vertices and polygons as OBJ text,
+/// else an empty string.
+std::string checkOffFile(const std::string& path, const std::string& content);
+constexpr int kLargestOffFaceImported = 9;
 
 /// An OBJ file: plain text (no control characters but tabs and line ends), every
 /// face ('f') with at least 3 vertices (the import library takes a

@@ -92,10 +92,13 @@ void requireFiniteAsRead(const std::string& path, const aiScene& scene) {
 
 // Assimp applies its importers' conventions as OMPL.app sees them: a COLLADA
 // file's <unit> scale and its up axis (Z_UP is turned to Y_UP) are in the root
-// node's transform.
-ImportedMesh importWithAssimp(const std::string& path) {
+// node's transform. `objText`, when not empty, is read in place of the file (an OFF
+// file's polygons as OBJ: checkOffFile).
+ImportedMesh importWithAssimp(const std::string& path, const std::string& objText) {
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(path, kOmplAppImportFlags);
+  const aiScene* scene = objText.empty()
+                             ? importer.ReadFile(path, kOmplAppImportFlags)
+                             : importer.ReadFileFromMemory(objText.data(), objText.size(), kOmplAppImportFlags, "obj");
   if (!scene) throw InputError(path, std::string("cannot read mesh: ") + importer.GetErrorString());
   requireFiniteAsRead(path, *scene);
   ImportedMesh imported;
@@ -111,13 +114,16 @@ ImportedMesh importWithAssimp(const std::string& path) {
 
 // The import library trusts counts and indices: PLY, OFF, OBJ and COLLADA files are
 // checked against their own headers and structure first (mesh_file_checks.h).
-void checkBeforeImport(const std::string& path, const std::string& format, std::ifstream& file) {
-  if (format == ".stl") return;
+// Returns the text to import in place of the file: empty but for an OFF file with
+// faces the import library's OFF reader would drop.
+std::string checkBeforeImport(const std::string& path, const std::string& format, std::ifstream& file) {
+  if (format == ".stl") return {};
   const std::string content{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
   if (format == ".ply") detail::checkPlyFile(path, content);
-  if (format == ".off") detail::checkOffFile(path, content);
+  if (format == ".off") return detail::checkOffFile(path, content);
   if (format == ".obj") detail::checkObjFaces(path, content);
   if (format == ".dae") detail::checkColladaFile(path, content);
+  return {};
 }
 
 // Formats OMPL.app cannot read have no convention of their own: the plain average of
@@ -141,8 +147,7 @@ ImportedMesh importMesh(const std::string& path) {
     return imported;
   }
   if (isAssimpFormat(format)) {
-    checkBeforeImport(path, format, file);
-    return importWithAssimp(path);
+    return importWithAssimp(path, checkBeforeImport(path, format, file));
   }
   const std::string found = extension.empty() ? ": the file name has no extension"
                                               : " '" + extension + "'";

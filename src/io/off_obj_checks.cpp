@@ -12,7 +12,7 @@
 
 namespace freespace::detail {
 
-void checkOffFile(const std::string& path, const std::string& content) {
+std::string checkOffFile(const std::string& path, const std::string& content) {
   requirePlainText(path, content, "OFF", true);
   Lines lines(content);
   std::string_view line;
@@ -48,6 +48,10 @@ void checkOffFile(const std::string& path, const std::string& content) {
     throw InputError(path, "OFF file is truncated: it promises " + std::to_string(vertices) + " vertices and " +
                                std::to_string(faces) + " faces in " + std::to_string(content.size()) + " bytes");
   }
+  // The same polygons as OBJ text, for files with faces the import library's OFF
+  // reader would drop.
+  std::string objText;
+  std::int64_t largestFace = 0;
   for (std::int64_t v = 0; v < vertices; ++v) {
     double coordinate = 0;
     if (!nextWords()) throw InputError(path, "OFF file is truncated: vertex " + std::to_string(v) + " is missing");
@@ -56,6 +60,7 @@ void checkOffFile(const std::string& path, const std::string& content) {
       throw InputError(path, "OFF line " + std::to_string(lines.number()) + ": vertex " + std::to_string(v) +
                                  " is not three numbers");
     }
+    objText.append("v ").append(words[0]).append(" ").append(words[1]).append(" ").append(words[2]).append("\n");
   }
   for (std::int64_t f = 0; f < faces; ++f) {
     if (!nextWords()) throw InputError(path, "OFF file is truncated: face " + std::to_string(f) + " is missing");
@@ -69,13 +74,18 @@ void checkOffFile(const std::string& path, const std::string& content) {
       throw InputError(path, "OFF line " + std::to_string(lines.number()) + ": face " + std::to_string(f) + " lists " +
                                  std::to_string(words.size() - 1) + " of its " + std::to_string(corners) + " vertices");
     }
+    largestFace = std::max(largestFace, corners);
+    objText.append("f");
     for (std::int64_t i = 1; i <= corners; ++i) {
       std::int64_t index = 0;
       if (!parseWhole(words[i], index) || index < 0 || index >= vertices) {
         throw InputError(path, indexDefect(f, printable(words[i]), static_cast<std::uint64_t>(vertices)));
       }
+      objText.append(" ").append(std::to_string(index + 1));
     }
+    objText.append("\n");
   }
+  return largestFace > kLargestOffFaceImported ? objText : std::string();
 }
 
 void checkObjFaces(const std::string& path, const std::string& content) {
