@@ -13,6 +13,7 @@
 #include "freespace/input_error.h"
 #include "freespace/io/input_file.h"
 #include "freespace/io/output_file.h"
+#include "../io/mesh_text.h"
 
 namespace freespace {
 
@@ -31,8 +32,16 @@ Sections parseSections(std::istream& input, const std::string& cfgPath) {
   po::parsed_options parsed(nullptr);
   try {
     parsed = po::parse_config_file(input, po::options_description(), true);
+  } catch (const po::invalid_config_file_syntax& error) {
+    // Not error.what(): Boost 1.74 substitutes the line into its message template
+    // until no placeholder is left, for ever when the line holds one.
+    throw InputError(cfgPath, "a line is neither '[section]' nor 'key = value': '" +
+                                  detail::printable(error.tokens()) + "'");
+  } catch (const po::error_with_option_name& error) {
+    throw InputError(cfgPath, "cannot be read as a configuration file at key '" +
+                                  detail::printable(error.get_option_name()) + "'");
   } catch (const po::error& error) {
-    throw InputError(cfgPath, error.what());
+    throw InputError(cfgPath, std::string("cannot be read as a configuration file: ") + error.what());
   }
   Sections sections;
   for (const po::option& option : parsed.options) {
