@@ -181,3 +181,38 @@ TEST(SavedSpace, AHugeTextLengthIsAClearErrorWithoutAllocating) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "rejected in " << seconds << " s\n";
 }
+
+// Every 8-byte value in the payload that could be a length (1 to 100,000) raised by
+// 2^26, the checksum made valid again: each file loads or is refused at once with one
+// of the loader's own plain messages, never the archive's or the standard library's
+// texts, and without setting aside memory for the claimed length.
+TEST(SavedSpace, AlteredLengthsAreRefusedWithPlainMessages) {
+  TempDir dir;
+  const std::string file = dir.file("space.fspace");
+  builtSpace().save(file);
+  const std::string bytes = contents(file);
+  const std::size_t payloadStart = payloadStartOf(bytes);
+  const std::string other = dir.file("altered.fspace");
+  int altered = 0;
+  for (std::size_t at = payloadStart; at + 8 <= bytes.size() && altered < 300; ++at) {
+    std::uint64_t value = 0;
+    for (int i = 0; i < 8; ++i) value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+    if (value == 0 || value > 100000) continue;
+    std::string changed = bytes;
+    const std::uint64_t raised = value + (std::uint64_t(1) << 26);
+    for (int i = 0; i < 8; ++i) changed[at + i] = static_cast<char>((raised >> (8 * i)) & 0xff);
+    write(other, withValidChecksum(changed, payloadStart));
+    ++altered;
+    try {
+      FreeSpace::load(other);
+    } catch (const InputError& error) {
+      const std::string problem = error.problem();
+      const bool plain = problem.rfind("damaged: ", 0) == 0 || problem.rfind("inconsistent saved free space at ", 0) == 0;
+      EXPECT_TRUE(plain) << "at byte " << at << ": " << problem;
+      for (const char* libraryText : {"std::", "::_M_", "stream error", "bad_alloc", "basic_string"}) {
+        EXPECT_EQ(problem.find(libraryText), std::string::npos) << "at byte " << at << ": " << problem;
+      }
+    }
+  }
+  EXPECT_GE(altered, 100);
+}

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstring>
 #include <iostream>
+#include <new>
 
 #include "commands.h"
 #include "freespace/geometry/cancellation.h"
@@ -52,8 +53,12 @@ int run(int argc, char** argv) {
   } catch (const freespace::InputError& error) {
     std::cerr << "error: " << error.what() << "\n";
     return 2;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "error: out of memory: this input needs more memory than the machine gives the program\n";
+    return 1;
   } catch (const std::exception& error) {
-    std::cerr << "error: " << error.what() << "\n";
+    // Not the user's doing: a defect of the program, said as one.
+    std::cerr << "error: internal error (please report it with the input): " << error.what() << "\n";
     return 1;
   }
   return 0;

@@ -27,10 +27,17 @@ namespace freespace {
 
 namespace {
 
-/// Boost's binary input archive (same format), except that a string's length is
-/// checked against the bytes left in the payload before any memory is set aside for
-/// it: a checksum can be valid for altered data, and a damaged length would have the
-/// loader allocate and fill up to the whole memory of the machine.
+/// A part of a saved payload that cannot be what it claims to be; the text names it.
+class DamagedPart : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Boost's binary input archive (same format), except that the length of a text or
+/// a list is checked against the bytes left in the payload before any memory is set
+/// aside for it (every item takes at least a byte): a checksum can be valid for
+/// altered data, and a damaged length would have the loader allocate and fill up to
+/// the whole memory of the machine.
 class CheckedBinaryIArchive
     : public boost::archive::binary_iarchive_impl<CheckedBinaryIArchive, char, std::char_traits<char>> {
   using Base = boost::archive::binary_iarchive_impl<CheckedBinaryIArchive, char, std::char_traits<char>>;
@@ -46,14 +53,25 @@ class CheckedBinaryIArchive
   void load(std::string& text) {
     std::size_t length = 0;
     load(length);
-    if (length > static_cast<std::size_t>(std::max<std::streamsize>(payload_.rdbuf()->in_avail(), 0))) {
-      throw std::out_of_range("a text longer than the rest of the file");
-    }
+    if (length > bytesLeft()) throw DamagedPart("a text longer than the rest of the file");
     text.resize(length);
     if (length > 0) load_binary(text.data(), length);
   }
 
+  template <class T>
+  void load_override(T& value) {
+    Base::load_override(value);
+  }
+  void load_override(boost::serialization::collection_size_type& count) {
+    Base::load_override(count);
+    if (count > bytesLeft()) throw DamagedPart("a list longer than the rest of the file");
+  }
+
  private:
+  std::size_t bytesLeft() const {
+    return static_cast<std::size_t>(std::max<std::streamsize>(payload_.rdbuf()->in_avail(), 0));
+  }
+
   std::istringstream& payload_;
 };
 
@@ -97,17 +115,17 @@ Rational rationalOf(const std::string& value) {
   const std::string numeratorDigits = magnitude.substr(0, slash);
   const std::string denominatorDigits = slash == std::string::npos ? "1" : magnitude.substr(slash + 1);
   if (!plainDigits(numeratorDigits, !negative) || !plainDigits(denominatorDigits, false)) {
-    throw std::out_of_range("a number");
+    throw DamagedPart("a number");
   }
   const mpz_int numerator(numeratorDigits), denominator(denominatorDigits);
   if ((slash != std::string::npos && denominator == 1) || gcd(numerator, denominator) != 1) {
-    throw std::out_of_range("a number");
+    throw DamagedPart("a number");
   }
   return Rational(negative ? mpz_int(-numerator) : numerator, denominator);
 }
 
 double finite(double value) {
-  if (!std::isfinite(value)) throw std::out_of_range("a coordinate");
+  if (!std::isfinite(value)) throw DamagedPart("a coordinate");
   return value;
 }
 
@@ -142,10 +160,10 @@ class AngleTable {
     const saved::Angle& stored = space_.angles.at(index);
     const IsolatingInterval root{rationalOf(stored.lo), rationalOf(stored.hi)};
     if ((stored.chart != 0 && stored.chart != 1) || root.hi < root.lo || stored.index < -1) {
-      throw std::out_of_range("an angle");
+      throw DamagedPart("an angle");
     }
     if (stored.function < 0) {
-      if (root.lo != root.hi) throw std::out_of_range("a rational angle with an interval");
+      if (root.lo != root.hi) throw DamagedPart("a rational angle with an interval");
       return AlgebraicAngle::rational(stored.chart, root.lo);
     }
     return AlgebraicAngle(function(static_cast<std::size_t>(stored.function)), stored.chart, root, stored.index);
@@ -154,7 +172,7 @@ class AngleTable {
   AngleSet set(const saved::AngleSet& stored) {
     AngleSet set;
     set.fullCircle = stored.fullCircle;
-    if (stored.arcs.size() % 3 != 0) throw std::out_of_range("an angle set's arcs");
+    if (stored.arcs.size() % 3 != 0) throw DamagedPart("an angle set's arcs");
     for (std::size_t i = 0; i < stored.arcs.size(); i += 3) {
       set.arcs.push_back({angle(stored.arcs[i]), angle(stored.arcs[i + 1]), stored.arcs[i + 2] != 0});
     }
@@ -186,7 +204,7 @@ class AngleTable {
       };
       std::optional<AngleFunction::RootKey> key;
       if (!stored.key.empty()) {
-        if (stored.key.size() != 9) throw std::out_of_range("a function's key");
+        if (stored.key.size() != 9) throw DamagedPart("a function's key");
         key.emplace();
         std::copy(stored.key.begin(), stored.key.end(), key->begin());
       }
@@ -210,16 +228,20 @@ saved::Mesh savedMesh(const Mesh& mesh) {
 
 Mesh meshOf(const saved::Mesh& stored, const std::string& path) {
   TriangleSoup soup;
-  if (stored.vertices.size() % 3 != 0 || stored.triangles.size() % 3 != 0) throw std::out_of_range("a mesh");
+  if (stored.vertices.size() % 3 != 0 || stored.triangles.size() % 3 != 0) throw DamagedPart("a mesh");
   for (std::size_t i = 0; i < stored.vertices.size(); i += 3) {
     soup.vertices.emplace_back(stored.vertices[i], stored.vertices[i + 1], stored.vertices[i + 2]);
   }
   for (std::size_t i = 0; i < stored.triangles.size(); i += 3) {
     soup.triangles.push_back({stored.triangles[i], stored.triangles[i + 1], stored.triangles[i + 2]});
   }
-  Mesh mesh = Mesh::fromSoup(soup, path, nullptr, VertexWelding::asIndexed);
-  if (mesh.vertices().size() * 3 != stored.vertices.size()) throw std::out_of_range("a mesh's vertices");
-  return mesh;
+  try {
+    Mesh mesh = Mesh::fromSoup(soup, path, nullptr, VertexWelding::asIndexed);
+    if (mesh.vertices().size() * 3 != stored.vertices.size()) throw DamagedPart("a mesh's vertices");
+    return mesh;
+  } catch (const InputError& error) {
+    throw DamagedPart("a mesh (" + error.problem() + ")");
+  }
 }
 
 void pushPoint(std::vector<double>& out, const Point3& p) { out.insert(out.end(), {p.x(), p.y(), p.z()}); }
@@ -249,7 +271,7 @@ saved::Patch savedPatch(const PatchGeometry& patch, AngleTable& angles) {
 PatchGeometry patchOf(const saved::Patch& stored, AngleTable& angles) {
   if (stored.contact.size() != 4 || stored.segment.size() != 8 || stored.lineTags.size() != 6 ||
       stored.linePoints.size() != 12 || stored.spiralRobotVertex.size() != 2 || stored.spiralPoints.size() != 18) {
-    throw std::out_of_range("a patch");
+    throw DamagedPart("a patch");
   }
   PatchGeometry patch;
   patch.patch.contact = {static_cast<ContactKind>(stored.contact[0]), static_cast<std::uint32_t>(stored.contact[1]),
@@ -284,10 +306,10 @@ saved::Gluing savedGluing(const SubFaceGluing& gluing, AngleTable& angles) {
 }
 
 SubFaceGluing gluingOf(const saved::Gluing& stored, AngleTable& angles) {
-  if (stored.glues.size() % 6 != 0 || stored.unmatched.size() % 2 != 0) throw std::out_of_range("a gluing");
+  if (stored.glues.size() % 6 != 0 || stored.unmatched.size() % 2 != 0) throw DamagedPart("a gluing");
   SubFaceGluing gluing;
   for (std::size_t i = 0; i < stored.glues.size(); i += 6) {
-    if (stored.glues[i + 4] > static_cast<std::uint32_t>(GluedEdge::Horizontal)) throw std::out_of_range("a glue");
+    if (stored.glues[i + 4] > static_cast<std::uint32_t>(GluedEdge::Horizontal)) throw DamagedPart("a glue");
     gluing.glues.push_back({{stored.glues[i], stored.glues[i + 1]},
                             {stored.glues[i + 2], stored.glues[i + 3]},
                             static_cast<GluedEdge>(stored.glues[i + 4]),
@@ -410,37 +432,37 @@ std::string readPayload(const std::string& path) {
 void checkConsistency(const Arrangement& arrangement, const std::vector<ShellSide>& sides,
                       const std::vector<std::optional<std::uint32_t>>& cellOfShell, std::size_t cellCount) {
   const std::size_t patches = arrangement.patches.size();
-  if (arrangement.subdivisions.size() != patches) throw std::out_of_range("subdivisions");
+  if (arrangement.subdivisions.size() != patches) throw DamagedPart("subdivisions");
   for (const PatchCurve& curve : arrangement.curves) {
-    if (curve.first >= patches || curve.second >= patches) throw std::out_of_range("a curve's patches");
+    if (curve.first >= patches || curve.second >= patches) throw DamagedPart("a curve's patches");
   }
   for (const PatchOverlap& overlap : arrangement.overlaps) {
     for (std::uint32_t patch : overlap.patches) {
-      if (patch >= patches) throw std::out_of_range("an overlap's patches");
+      if (patch >= patches) throw DamagedPart("an overlap's patches");
     }
   }
   for (const PatchVertex& vertex : arrangement.vertices) {
     for (std::uint32_t patch : vertex.patches) {
-      if (patch >= patches) throw std::out_of_range("a vertex's patches");
+      if (patch >= patches) throw DamagedPart("a vertex's patches");
     }
   }
   for (std::uint32_t patch = 0; patch < patches; ++patch) {
     const PatchSubdivision& subdivision = arrangement.subdivisions[patch];
     for (const PatchSlab& slab : subdivision.slabs) {
-      if (slab.faces.size() != slab.curves.size() + 1) throw std::out_of_range("a slab's faces");
+      if (slab.faces.size() != slab.curves.size() + 1) throw DamagedPart("a slab's faces");
       for (std::uint32_t curve : slab.curves) {
-        if (curve >= arrangement.curves.size()) throw std::out_of_range("a slab's curves");
+        if (curve >= arrangement.curves.size()) throw DamagedPart("a slab's curves");
         const PatchCurve& c = arrangement.curves[curve];
-        if (c.first != patch && c.second != patch) throw std::out_of_range("a slab's curve of other patches");
+        if (c.first != patch && c.second != patch) throw DamagedPart("a slab's curve of other patches");
       }
       for (std::uint32_t face : slab.faces) {
-        if (face >= subdivision.faceCount) throw std::out_of_range("a slab's faces");
+        if (face >= subdivision.faceCount) throw DamagedPart("a slab's faces");
       }
     }
   }
   const auto checkFace = [&](SubFaceId face) {
     if (face.patch >= patches || face.face >= arrangement.subdivisions[face.patch].faceCount) {
-      throw std::out_of_range("a glued sub-face");
+      throw DamagedPart("a glued sub-face");
     }
   };
   for (const SubFaceGluing* gluing :
@@ -448,11 +470,11 @@ void checkConsistency(const Arrangement& arrangement, const std::vector<ShellSid
     for (const SubFaceGlue& glue : gluing->glues) checkFace(glue.first), checkFace(glue.second);
     for (const SubFaceId& face : gluing->unmatched) checkFace(face);
   }
-  if (sides.size() != cellOfShell.size()) throw std::out_of_range("shells");
+  if (sides.size() != cellOfShell.size()) throw DamagedPart("shells");
   for (std::size_t shell = 0; shell < sides.size(); ++shell) {
     const auto& cell = cellOfShell[shell];
     if (cell.has_value() != (sides[shell] == ShellSide::Free) || (cell && *cell >= cellCount)) {
-      throw std::out_of_range("a shell's cell");
+      throw DamagedPart("a shell's cell");
     }
   }
 }
@@ -485,8 +507,11 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
     std::istringstream payloadStream(payload);
     CheckedBinaryIArchive archive(payloadStream);
     archive >> space;
-  } catch (const std::exception& error) {
-    throw InputError(path, std::string("damaged: ") + error.what());
+  } catch (const DamagedPart& part) {
+    throw InputError(path, std::string("damaged: ") + part.what());
+  } catch (const std::exception&) {
+    // The archive's and the standard library's own texts would mean nothing to a user.
+    throw InputError(path, "damaged: the payload ends early or does not decode");
   }
   auto impl = std::make_unique<Impl>();
   try {
@@ -499,7 +524,7 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
     arrangement.boxIndex = std::make_shared<const PatchBoxIndex>(arrangement.patches);
     for (const saved::Curve& stored : space.curves) {
       PatchCurve curve{stored.first, stored.second, angles.set(stored.angles), {}};
-      if (stored.ends.size() != 12 * curve.angles.arcs.size()) throw std::out_of_range("a curve's ends");
+      if (stored.ends.size() != 12 * curve.angles.arcs.size()) throw DamagedPart("a curve's ends");
       for (std::size_t arc = 0; arc < curve.angles.arcs.size(); ++arc) {
         std::array<CurveEnd, 2> ends{};
         for (int e = 0; e < 2; ++e) {
@@ -512,14 +537,14 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
       arrangement.curves.push_back(std::move(curve));
     }
     for (const saved::Overlap& stored : space.overlaps) {
-      if (stored.patches.size() != 2 || stored.reachesEnd.size() != 4) throw std::out_of_range("an overlap");
+      if (stored.patches.size() != 2 || stored.reachesEnd.size() != 4) throw DamagedPart("an overlap");
       arrangement.overlaps.push_back({{stored.patches[0], stored.patches[1]},
                                       angles.angle(stored.angle),
                                       {{{stored.reachesEnd[0] != 0, stored.reachesEnd[1] != 0},
                                         {stored.reachesEnd[2] != 0, stored.reachesEnd[3] != 0}}}});
     }
     for (const saved::Vertex& stored : space.vertices) {
-      if (stored.patches.size() != 3) throw std::out_of_range("a vertex");
+      if (stored.patches.size() != 3) throw DamagedPart("a vertex");
       arrangement.vertices.push_back({{stored.patches[0], stored.patches[1], stored.patches[2]},
                                       angles.angle(stored.angle),
                                       stored.crossing});
@@ -533,13 +558,13 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
       }
       arrangement.subdivisions.push_back(std::move(subdivision));
     }
-    if (space.gluings.size() != 3) throw std::out_of_range("gluings");
+    if (space.gluings.size() != 3) throw DamagedPart("gluings");
     arrangement.acrossCurves = gluingOf(space.gluings[0], angles);
     arrangement.aroundSpirals = gluingOf(space.gluings[1], angles);
     arrangement.acrossHorizontalEdges = gluingOf(space.gluings[2], angles);
     std::vector<std::optional<std::uint32_t>> cellOfShell;
     for (std::size_t shell = 0; shell < space.shellSides.size(); ++shell) {
-      if (space.shellSides[shell] > static_cast<std::uint8_t>(ShellSide::Open)) throw std::out_of_range("a shell");
+      if (space.shellSides[shell] > static_cast<std::uint8_t>(ShellSide::Open)) throw DamagedPart("a shell");
       impl->sides.push_back(static_cast<ShellSide>(space.shellSides[shell]));
       const std::int32_t cell = space.cellOfShell.at(shell);
       cellOfShell.push_back(cell < 0 ? std::nullopt : std::optional<std::uint32_t>(static_cast<std::uint32_t>(cell)));
@@ -547,7 +572,7 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
     checkConsistency(arrangement, impl->sides, cellOfShell, space.cellCount);
     arrangement.shells = Shells(arrangement.subdivisions, {&arrangement.acrossCurves, &arrangement.aroundSpirals,
                                                            &arrangement.acrossHorizontalEdges});
-    if (arrangement.shells.count() != impl->sides.size()) throw std::out_of_range("the shells' count");
+    if (arrangement.shells.count() != impl->sides.size()) throw DamagedPart("the shells' count");
     impl->cells = std::make_unique<FreeCells>(std::move(cellOfShell), space.cellCount);
     for (std::size_t i = 0; i < space.stageNames.size() && i < space.stageSeconds.size(); ++i) {
       impl->stageTimes.push_back({space.stageNames[i], space.stageSeconds[i]});
@@ -555,8 +580,10 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
     impl->finish();
   } catch (const InputError&) {
     throw;
-  } catch (const std::exception& error) {
-    throw InputError(path, std::string("inconsistent saved free space: ") + error.what());
+  } catch (const DamagedPart& part) {
+    throw InputError(path, std::string("inconsistent saved free space at ") + part.what());
+  } catch (const std::exception&) {
+    throw InputError(path, "inconsistent saved free space: its parts do not fit together");
   }
   return std::unique_ptr<FreeSpace>(new FreeSpace(std::move(impl)));
 }
