@@ -43,7 +43,9 @@ void measure(const std::string& cfg, int samples) {
   std::vector<Location> locations;
   locations.reserve(poses.size());
   start = std::chrono::steady_clock::now();
-  for (const Pose2& pose : poses) locations.push_back(space.locate(pose));
+  // Drawn in the construction's coordinates, where the exact test runs; located in the input's.
+  const double scale = space.meshes().scale;
+  for (const Pose2& pose : poses) locations.push_back(space.locate({pose.x / scale, pose.y / scale, pose.theta}));
   const double locateSeconds = secondsSince(start);
   int disagreements = 0, free = 0;
   std::set<std::uint32_t> cellsMet;

@@ -1,7 +1,9 @@
 #pragma once
 
 // locate against the exact collision test on random configurations around the
-// environment (x, y over its box grown by the robot's reach, theta uniform).
+// environment (x, y over its box grown by the robot's reach, theta uniform). The
+// exact test runs on the construction's meshes, locate takes the input's coordinates
+// (FreeSpace::meshes: they differ by a power of two).
 
 #include <random>
 #include <utility>
@@ -27,7 +29,8 @@ inline LocateCheck locateAgainstCollision(const FreeSpace& space, int samples, u
   LocateCheck check;
   for (int i = 0; i < samples; ++i) {
     const Pose2 pose{x(random), y(random), theta(random)};
-    const bool free = space.locate(pose).free;
+    const double scale = space.meshes().scale;
+    const bool free = space.locate({pose.x / scale, pose.y / scale, pose.theta}).free;
     check.free += free;
     check.disagreements += free == collision.inCollision(pose);
   }

@@ -41,7 +41,8 @@ TEST(BoundaryPly, VerticesLieOnTheFreeSpaceBoundary) {
     ply >> x >> y >> z >> red >> green >> blue;
     colours.insert(std::to_string(red) + "," + std::to_string(green) + "," + std::to_string(blue));
     if (i % 37 != 0) continue;
-    const Pose2 pose{x, y, z / reach};
+    const double scale = space.meshes().scale;  // the PLY is in the input's coordinates
+    const Pose2 pose{x * scale, y * scale, z / reach};
     if (!fcl.inCollision(pose)) worst = std::max(worst, fcl.distance(pose));
   }
   EXPECT_LT(worst, 1e-9);

@@ -1,5 +1,5 @@
 // Hostile input to the construction gives a clear error or a correct answer (checked
-// against the exact collision test): overlapping environment solids, huge
+// against the exact collision test): overlapping environment solids, tiny and huge
 // coordinates, a robot above the environment, heights that coincide without
 // perturbation, a surface that comes within a hair of itself.
 #include <gtest/gtest.h>
@@ -8,6 +8,7 @@
 #include <string>
 
 #include "freespace/input_error.h"
+#include "freespace/problem/planar_problem.h"
 #include "freespace/space/free_space.h"
 #include "locate_oracle.h"
 #include "test_meshes.h"
@@ -36,20 +37,24 @@ TEST(HostileInput, OverlappingEnvironmentSolidsAreTheirUnion) {
   EXPECT_GT(check.free, 0);
 }
 
-TEST(HostileInput, HugeCoordinatesGiveTheSameCells) {
-  // A yard closed by four overlapping walls: the robot inside cannot leave.
-  const Mesh world = Mesh::fromSoup(joinSoups({boxSoup({0, 0, 0}, {1, 4, 1}), boxSoup({3, 0, 0}, {4, 4, 1}),
-                                               boxSoup({0.5, -0.1, 0}, {3.5, 1, 0.95}),
-                                               boxSoup({0.5, 3, 0}, {3.5, 4.1, 0.95})}),
-                                    "walled yard");
-  const FreeSpace small(kRobot, world);
-  const FreeSpace huge(scaled(kRobot, 1e9), scaled(world, 1e9));
-  EXPECT_EQ(small.cellCount(), 2u);
-  EXPECT_EQ(huge.cellCount(), 2u);
-  const Location inside = huge.locate({1.8e9, 1.8e9, 0.3}), outside = huge.locate({8e9, 8e9, 0.3});
-  ASSERT_TRUE(inside.free && outside.free);
-  EXPECT_NE(inside.cell, outside.cell);
-  EXPECT_EQ(locateAgainstCollision(small, 200, 5).disagreements, 0);
+// Scenes far from unit size are scaled by a power of two before the construction
+// (docs/design.md section 5): tiny ones (whose products of coordinates would
+// underflow, every filter failing, and at 2^-126 a division by an interval holding
+// zero) and huge ones give the bundled keyhole's cells, and locate agrees with the
+// exact test.
+TEST(HostileInput, TinyAndHugeCoordinatesGiveTheSameCells) {
+  const LoadedProblem keyhole = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/keyhole.cfg");
+  const std::size_t cells = FreeSpace(keyhole.robot, keyhole.world).cellCount();
+  const Pose2 start = keyhole.problem.start, goal = keyhole.problem.goal;
+  for (const double factor : {0x1p-126, 1e-30, 1e-3, 1e9, 0x1p100}) {
+    const FreeSpace space(scaled(keyhole.robot, factor), scaled(keyhole.world, factor));
+    EXPECT_EQ(space.cellCount(), cells) << factor;
+    const Location from = space.locate({start.x * factor, start.y * factor, start.theta});
+    const Location to = space.locate({goal.x * factor, goal.y * factor, goal.theta});
+    EXPECT_TRUE(from.free && to.free && from.cell == to.cell) << factor;
+    EXPECT_FALSE(space.locate({0, 0, 0}).free) << factor;
+    EXPECT_EQ(locateAgainstCollision(space, 300, 5).disagreements, 0) << factor;
+  }
 }
 
 TEST(HostileInput, ARobotAboveTheEnvironmentIsFreeEverywhere) {

@@ -71,7 +71,8 @@ nlohmann::json statisticsJson(const FreeSpace& space) {
            {{"enabled", perturbation.enabled},
             {"seed", perturbation.seed},
             {"relative_size", perturbation.relativeSize},
-            {"absolute_size", perturbation.absoluteSize}}},
+            {"absolute_size", perturbation.absoluteSize / space.meshes().scale}}},
+          {"coordinate_scale", space.meshes().scale},
           {"cell_list", cellsJson(space)},
           {"predicates", predicatesJson(space.statistics())},
           {"double_interval_fraction", space.statistics().doubleIntervalFraction()}};

@@ -66,12 +66,14 @@ double farthestReach(const Mesh& robot) {
 
 void writeBoundaryPly(const FreeSpace& space, const BoundaryPlyOptions& options, std::ostream& out) {
   const Arrangement& arrangement = space.arrangement();
-  const double reach = std::max(farthestReach(space.meshes().robot), 1e-12);
-  const Box3 world = space.meshes().world.bounds();
-  const double tolerance = options.tolerance > 0 ? options.tolerance : 0.01 * world.sizes().head<2>().norm();
+  // Written in the input's coordinates: the construction's are scaled (FreeSpace::meshes).
+  const double scale = space.meshes().scale;
+  const double reach = std::max(farthestReach(space.meshes().robot) / scale, 1e-12);
+  const Eigen::Vector2d worldSize = space.meshes().world.bounds().sizes().head<2>() / scale;
+  const double tolerance = options.tolerance > 0 ? options.tolerance : 0.01 * worldSize.norm();
   // The end points run on circles of radius at most the robot's reach plus the
   // environment's size: a chord over dtheta is off by r dtheta^2 / 8.
-  const double radius = reach + world.sizes().head<2>().norm();
+  const double radius = reach + worldSize.norm();
   const double step = std::sqrt(8 * tolerance / radius);
   std::vector<Vertex> vertices;
   std::vector<std::array<std::uint32_t, 3>> triangles;
@@ -91,7 +93,9 @@ void writeBoundaryPly(const FreeSpace& space, const BoundaryPlyOptions& options,
             RoundingScope rounding;
             ends = sampler.at(gap, theta);
           }
-          for (const std::array<double, 2>& p : ends) vertices.push_back({p[0], p[1], reach * theta, *cell});
+          for (const std::array<double, 2>& p : ends) {
+            vertices.push_back({p[0] / scale, p[1] / scale, reach * theta, *cell});
+          }
           if (i == 0) continue;
           const auto n = static_cast<std::uint32_t>(vertices.size());
           triangles.push_back({n - 4, n - 3, n - 1});

@@ -21,11 +21,13 @@ struct View {
   int columns, rows;
 };
 
+// Drawn in the input's coordinates: the construction's are scaled (FreeSpace::meshes).
 View viewOf(const FreeSpace& space, int resolution) {
+  const double scale = space.meshes().scale;
   const Box3 world = space.meshes().world.bounds();
-  const double reach = space.meshes().robot.bounds().sizes().head<2>().norm();
-  View view{world.min().x() - reach, world.min().y() - reach, world.sizes().x() + 2 * reach,
-            world.sizes().y() + 2 * reach, 0, 0};
+  const double reach = space.meshes().robot.bounds().sizes().head<2>().norm() / scale;
+  const Eigen::Vector2d low = world.min().head<2>() / scale, size = world.sizes().head<2>() / scale;
+  View view{low.x() - reach, low.y() - reach, size.x() + 2 * reach, size.y() + 2 * reach, 0, 0};
   const double pixel = std::max(view.width, view.height) / resolution;
   view.columns = std::max(1, static_cast<int>(std::ceil(view.width / pixel)));
   view.rows = std::max(1, static_cast<int>(std::ceil(view.height / pixel)));
@@ -65,8 +67,9 @@ void writePieces(const FreeSpace& space, double theta, double strokeWidth, std::
   AngleAlgebra& algebra = space.algebra();
   const AlgebraicAngle angle = AlgebraicAngle::rational(HalfAngle::fromRadians(theta));
   const auto [cosine, sine] = exactCosSin(angle);
-  const auto toDouble = [](const std::array<Rational, 2>& p) {
-    return std::array<double, 2>{p[0].convert_to<double>(), p[1].convert_to<double>()};
+  const double scale = space.meshes().scale;
+  const auto toDouble = [scale](const std::array<Rational, 2>& p) {
+    return std::array<double, 2>{p[0].convert_to<double>() / scale, p[1].convert_to<double>() / scale};
   };
   out << "<g stroke-linecap=\"round\">\n";
   for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
@@ -89,12 +92,12 @@ void writePieces(const FreeSpace& space, double theta, double strokeWidth, std::
 /// The robot's triangles seen from above, placed at (x, y) turned by theta.
 void writeRobot(const FreeSpace& space, const std::array<double, 2>& at, double theta, std::ostream& out) {
   const Mesh& robot = space.meshes().robot;
-  const double c = std::cos(theta), s = std::sin(theta);
+  const double c = std::cos(theta), s = std::sin(theta), scale = space.meshes().scale;
   out << "<g fill=\"#000000\" fill-opacity=\"0.35\" stroke=\"none\">\n";
   for (const TriangleIndices& triangle : robot.triangles()) {
     out << "<polygon points=\"";
     for (std::uint32_t vertex : triangle) {
-      const Point3& p = robot.vertices()[vertex];
+      const Point3 p = robot.vertices()[vertex] / scale;
       out << at[0] + c * p.x() - s * p.y() << "," << at[1] + s * p.x() + c * p.y() << " ";
     }
     out << "\"/>\n";

@@ -1,6 +1,7 @@
 #include "freespace/geometry/perturbed_meshes.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "freespace/input_error.h"
 
@@ -14,10 +15,24 @@ namespace {
 constexpr int kSmallerPerturbations = 4;
 constexpr double kShrinkFactor = 16;
 
-Mesh perturbMesh(const Mesh& mesh, Perturbation& perturbation, const std::string& name) {
+// The power of two that brings the scene's largest coordinate into [1, 2), or 1 when
+// it is of ordinary size. Multiplying by it is exact, the free space scales with the
+// scene, and the construction's numbers (products of several coordinates) stay far
+// from double precision's underflow and overflow, where its filters fail and every
+// predicate falls back to exact arithmetic.
+double normalisingScale(const Mesh& robot, const Mesh& world) {
+  double largest = 0;
+  for (const Mesh* mesh : {&robot, &world}) {
+    for (const Point3& vertex : mesh->vertices()) largest = std::max(largest, vertex.cwiseAbs().maxCoeff());
+  }
+  if (largest == 0 || (largest >= kSmallestUnscaled && largest <= kLargestUnscaled)) return 1;
+  return std::ldexp(1.0, -std::ilogb(largest));
+}
+
+Mesh perturbMesh(const Mesh& mesh, double scale, Perturbation& perturbation, const std::string& name) {
   TriangleSoup soup{mesh.vertices(), mesh.triangles()};
   for (Point3& vertex : soup.vertices) {
-    for (int axis = 0; axis < 3; ++axis) vertex[axis] = perturbation.perturb(vertex[axis]);
+    for (int axis = 0; axis < 3; ++axis) vertex[axis] = perturbation.perturb(vertex[axis] * scale);
   }
   // Checked again: moved vertices can make triangles meet that were a hair apart.
   return Mesh::fromSoup(soup, name, nullptr, VertexWelding::asIndexed);
@@ -26,14 +41,15 @@ Mesh perturbMesh(const Mesh& mesh, Perturbation& perturbation, const std::string
 }  // namespace
 
 PerturbedMeshes perturbMeshes(const Mesh& robot, const Mesh& world, const PerturbationSettings& settings) {
-  const double sceneSize = std::max(robot.bounds().diagonal().norm(), world.bounds().diagonal().norm());
+  const double scale = normalisingScale(robot, world);
+  const double sceneSize = scale * std::max(robot.bounds().diagonal().norm(), world.bounds().diagonal().norm());
   PerturbationSettings attempt = settings;
   for (int smaller = 0;; ++smaller) {
     try {
       Perturbation perturbation(attempt, sceneSize);
-      Mesh perturbedRobot = perturbMesh(robot, perturbation, "perturbed robot");
-      Mesh perturbedWorld = perturbMesh(world, perturbation, "perturbed environment");
-      return {std::move(perturbedRobot), std::move(perturbedWorld), perturbation.record()};
+      Mesh perturbedRobot = perturbMesh(robot, scale, perturbation, "perturbed robot");
+      Mesh perturbedWorld = perturbMesh(world, scale, perturbation, "perturbed environment");
+      return {std::move(perturbedRobot), std::move(perturbedWorld), perturbation.record(), scale};
     } catch (const InputError&) {
       // Features of a mesh closer than the perturbation (a wall's foot a hair from
       // the edge of the floor it stands on) may cross once moved: a smaller

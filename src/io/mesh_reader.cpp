@@ -37,30 +37,38 @@ std::ifstream openNonEmptyFile(const std::string& path) {
 
 // OMPL.app's import flags: the same flags give the same vertices (JoinIdenticalVertices
 // merges only corners with equal normals, so GenNormals changes how many remain), and
-// the robot's centre is their average.
+// the robot's centre is their average. They are used for that average alone: the
+// import's JoinIdenticalVertices also merges distinct points of a model a few
+// millionths across (its tolerance is not relative to the model), so the triangles
+// are read without it, and points are welded by the repair (exactly, or within a
+// tolerance relative to the model).
 constexpr unsigned kOmplAppImportFlags = aiProcess_GenNormals | aiProcess_Triangulate |
                                          aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
                                          aiProcess_OptimizeGraph;
+constexpr unsigned kGeometryImportFlags = aiProcess_Triangulate | aiProcess_SortByPType;
 
-// Appends the triangles of `node`'s meshes, and of its descendants', placed by the
-// transform accumulated from the root, and adds every vertex of those meshes to
-// `vertexSum`. Both are computed in single precision as OMPL.app computes them, so the
-// positions and the sum are OMPL.app's to the bit. Each mesh a node holds is a piece
-// of its own. Point and line primitives add no triangles.
-void collectTriangles(const aiScene& scene, const aiNode& node, aiMatrix4x4 transform, ImportedMesh& imported,
-                      aiVector3D& vertexSum, std::size_t& vertexCount, std::size_t& pieceCount) {
+// Calls `visit(mesh, transform)` for the meshes of `node` and of its descendants,
+// each with the transform accumulated from the root.
+template <class Visit>
+void forEachPlacedMesh(const aiScene& scene, const aiNode& node, aiMatrix4x4 transform, const Visit& visit) {
   transform *= node.mTransformation;
-  for (unsigned m = 0; m < node.mNumMeshes; ++m) {
-    const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
-    TriangleSoup& soup = imported.soup;
+  for (unsigned m = 0; m < node.mNumMeshes; ++m) visit(*scene.mMeshes[node.mMeshes[m]], transform);
+  for (unsigned c = 0; c < node.mNumChildren; ++c) forEachPlacedMesh(scene, *node.mChildren[c], transform, visit);
+}
+
+// The triangles of the scene's meshes, placed by their nodes' transforms in single
+// precision as OMPL.app places them. Each mesh a node holds is a piece of its own.
+// Point and line primitives add no triangles.
+TriangleSoup trianglesOf(const aiScene& scene) {
+  TriangleSoup soup;
+  if (!scene.mRootNode) return soup;
+  forEachPlacedMesh(scene, *scene.mRootNode, aiMatrix4x4(), [&](const aiMesh& mesh, const aiMatrix4x4& transform) {
     const auto firstVertex = static_cast<std::uint32_t>(soup.vertices.size());
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
       const aiVector3D placed = transform * mesh.mVertices[v];
       soup.vertices.emplace_back(placed.x, placed.y, placed.z);
-      vertexSum += placed;
     }
-    vertexCount += mesh.mNumVertices;
-    const auto piece = static_cast<std::uint32_t>(pieceCount++);
+    const auto piece = soup.pieces.empty() ? 0u : soup.pieces.back() + 1;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
       if (face.mNumIndices != 3) continue;
@@ -68,10 +76,23 @@ void collectTriangles(const aiScene& scene, const aiNode& node, aiMatrix4x4 tran
                                 firstVertex + face.mIndices[2]});
       soup.pieces.push_back(piece);
     }
+  });
+  return soup;
+}
+
+// The average of every placed vertex, summed in single precision as OMPL.app sums
+// them (so that it is OMPL.app's robot centre to the bit).
+Point3 vertexAverageOf(const aiScene& scene) {
+  aiVector3D sum(0, 0, 0);
+  std::size_t count = 0;
+  if (scene.mRootNode) {
+    forEachPlacedMesh(scene, *scene.mRootNode, aiMatrix4x4(), [&](const aiMesh& mesh, const aiMatrix4x4& transform) {
+      for (unsigned v = 0; v < mesh.mNumVertices; ++v) sum += transform * mesh.mVertices[v];
+      count += mesh.mNumVertices;
+    });
   }
-  for (unsigned c = 0; c < node.mNumChildren; ++c) {
-    collectTriangles(scene, *node.mChildren[c], transform, imported, vertexSum, vertexCount, pieceCount);
-  }
+  if (count > 0) sum /= static_cast<float>(count);
+  return Point3(sum.x, sum.y, sum.z);
 }
 
 // Coordinates are read as floats: one beyond their range (about 3.4e38) is infinite,
@@ -90,25 +111,30 @@ void requireFiniteAsRead(const std::string& path, const aiScene& scene) {
   }
 }
 
-// Assimp applies its importers' conventions as OMPL.app sees them: a COLLADA
-// file's <unit> scale and its up axis (Z_UP is turned to Y_UP) are in the root
-// node's transform. `objText`, when not empty, is read in place of the file (an OFF
-// file's polygons as OBJ: checkOffFile).
-ImportedMesh importWithAssimp(const std::string& path, const std::string& objText) {
-  Assimp::Importer importer;
+// The file read by assimp with `flags` (`objText`, when not empty, read in its place:
+// an OFF file's polygons as OBJ, checkOffFile). Assimp applies its importers'
+// conventions as OMPL.app sees them: a COLLADA file's <unit> scale and its up axis
+// (Z_UP is turned to Y_UP) are in the root node's transform.
+const aiScene& importedScene(Assimp::Importer& importer, const std::string& path, const std::string& objText,
+                             unsigned flags) {
   const aiScene* scene = objText.empty()
-                             ? importer.ReadFile(path, kOmplAppImportFlags)
-                             : importer.ReadFileFromMemory(objText.data(), objText.size(), kOmplAppImportFlags, "obj");
+                             ? importer.ReadFile(path, flags)
+                             : importer.ReadFileFromMemory(objText.data(), objText.size(), flags, "obj");
   if (!scene) throw InputError(path, std::string("cannot read mesh: ") + importer.GetErrorString());
   requireFiniteAsRead(path, *scene);
+  return *scene;
+}
+
+ImportedMesh importWithAssimp(const std::string& path, const std::string& objText, bool withCentre) {
   ImportedMesh imported;
-  aiVector3D vertexSum(0, 0, 0);
-  std::size_t vertexCount = 0, pieceCount = 0;
-  if (scene->mRootNode) {
-    collectTriangles(*scene, *scene->mRootNode, aiMatrix4x4(), imported, vertexSum, vertexCount, pieceCount);
+  {
+    Assimp::Importer importer;
+    imported.soup = trianglesOf(importedScene(importer, path, objText, kGeometryImportFlags));
   }
-  if (vertexCount > 0) vertexSum /= static_cast<float>(vertexCount);
-  imported.vertexAverage = Point3(vertexSum.x, vertexSum.y, vertexSum.z);
+  if (withCentre) {
+    Assimp::Importer importer;
+    imported.vertexAverage = vertexAverageOf(importedScene(importer, path, objText, kOmplAppImportFlags));
+  }
   return imported;
 }
 
@@ -134,20 +160,19 @@ Point3 averageOf(const std::vector<Point3>& vertices) {
   return vertices.empty() ? sum : Point3(sum / static_cast<double>(vertices.size()));
 }
 
-}  // namespace
-
-ImportedMesh importMesh(const std::string& path) {
+// The file's triangles and, `withCentre`, the average of its vertices as imported.
+ImportedMesh importMeshFile(const std::string& path, bool withCentre) {
   std::ifstream file = openNonEmptyFile(path);
   const std::string extension = std::filesystem::path(path).extension().string();
   const std::string format = detail::lowercaseExtension(path);
   if (format == ".vtk") {
     const std::string content{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
     ImportedMesh imported{readLegacyVtk(path, content), Point3::Zero()};
-    imported.vertexAverage = averageOf(imported.soup.vertices);
+    if (withCentre) imported.vertexAverage = averageOf(imported.soup.vertices);
     return imported;
   }
   if (isAssimpFormat(format)) {
-    return importWithAssimp(path, checkBeforeImport(path, format, file));
+    return importWithAssimp(path, checkBeforeImport(path, format, file), withCentre);
   }
   const std::string found = extension.empty() ? ": the file name has no extension"
                                               : " '" + extension + "'";
@@ -155,6 +180,10 @@ ImportedMesh importMesh(const std::string& path) {
                              " (expected obj, stl, ply, off, dae or vtk)");
 }
 
-TriangleSoup readTriangleSoup(const std::string& path) { return importMesh(path).soup; }
+}  // namespace
+
+ImportedMesh importMesh(const std::string& path) { return importMeshFile(path, true); }
+
+TriangleSoup readTriangleSoup(const std::string& path) { return importMeshFile(path, false).soup; }
 
 }  // namespace freespace

@@ -53,8 +53,10 @@ FreeSpace::~FreeSpace() = default;
 
 Location FreeSpace::locate(const Pose2& pose) const {
   const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
+  // Exactly in the construction's coordinates.
+  const Rational scale(impl_->meshes.scale), x = Rational(pose.x) * scale, y = Rational(pose.y) * scale;
   for (int direction : {-1, 1}) {
-    const RayHit hit = impl_->rays->cast(at, {Rational(pose.x), Rational(pose.y)}, direction);
+    const RayHit hit = impl_->rays->cast(at, {x, y}, direction);
     if (hit.kind != RayHit::Kind::Degenerate) return impl_->locationOf(hit);
   }
   throw std::runtime_error("FreeSpace::locate: both rays from the configuration pass through vertices of its slice");
@@ -84,6 +86,14 @@ std::vector<std::optional<PatchBox>> FreeSpace::cellBoxes() const {
         boxes[cell]->low[axis] = std::min(boxes[cell]->low[axis], box.low[axis]);
         boxes[cell]->high[axis] = std::max(boxes[cell]->high[axis], box.high[axis]);
       }
+    }
+  }
+  // In the input's coordinates.
+  for (std::optional<PatchBox>& box : boxes) {
+    if (!box) continue;
+    for (int axis = 0; axis < 2; ++axis) {
+      box->low[axis] /= impl_->meshes.scale;
+      box->high[axis] /= impl_->meshes.scale;
     }
   }
   return boxes;

@@ -92,7 +92,7 @@ namespace freespace {
 namespace {
 
 const std::string kHeader = "freespace saved free space, format ";
-constexpr int kFormatVersion = 1;
+constexpr int kFormatVersion = 2;
 
 std::string text(const Rational& value) { return value.str(); }
 
@@ -332,6 +332,7 @@ saved::Space savedSpace(const PerturbedMeshes& meshes, const Arrangement& arrang
   space.seed = meshes.record.seed;
   space.relativeSize = meshes.record.relativeSize;
   space.absoluteSize = meshes.record.absoluteSize;
+  space.scale = meshes.scale;
   for (const PatchGeometry& patch : arrangement.patches) space.patches.push_back(savedPatch(patch, angles));
   for (const PatchCurve& curve : arrangement.curves) {
     saved::Curve stored{curve.first, curve.second, angles.add(curve.angles), {}};
@@ -519,6 +520,9 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
     impl->meshes.robot = meshOf(space.robot, path);
     impl->meshes.world = meshOf(space.world, path);
     impl->meshes.record = {space.perturbed, space.seed, space.relativeSize, space.absoluteSize};
+    int exponent = 0;
+    if (std::frexp(space.scale, &exponent) != 0.5) throw DamagedPart("the coordinates' scale (not a power of two)");
+    impl->meshes.scale = space.scale;
     Arrangement& arrangement = impl->arrangement;
     for (const saved::Patch& patch : space.patches) arrangement.patches.push_back(patchOf(patch, angles));
     arrangement.boxIndex = std::make_shared<const PatchBoxIndex>(arrangement.patches);

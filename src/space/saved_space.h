@@ -138,6 +138,7 @@ struct Space {
   bool perturbed = true;
   std::uint64_t seed = 1;
   double relativeSize = 0, absoluteSize = 0;
+  double scale = 1;
   std::vector<Function> functions;
   std::vector<Angle> angles;
   std::vector<Patch> patches;
@@ -154,8 +155,8 @@ struct Space {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & robot & world & perturbed & seed & relativeSize & absoluteSize & functions & angles & patches & curves &
-        overlaps & vertices & subdivisions & gluings & shellSides & cellOfShell & cellCount & stageNames &
+    archive & robot & world & perturbed & seed & relativeSize & absoluteSize & scale & functions & angles & patches &
+        curves & overlaps & vertices & subdivisions & gluings & shellSides & cellOfShell & cellCount & stageNames &
         stageSeconds;
   }
 };

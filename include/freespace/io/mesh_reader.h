@@ -17,17 +17,17 @@ struct ImportedMesh {
 };
 
 /// Reads the triangles of a mesh file without checking them. OBJ, STL, PLY, OFF and
-/// COLLADA (.dae) go through assimp with OMPL.app's import flags (GenNormals,
-/// Triangulate, JoinIdenticalVertices, SortByPType, OptimizeGraph) and every node
-/// transform applied; positions and their average are computed in single precision
-/// as OMPL.app computes them, so the soup holds OMPL.app's triangles and
-/// vertexAverage is OMPL.app's robot centre to the bit. Legacy VTK POLYDATA ASCII
-/// (.vtk) has its own reader (POINTS and POLYGONS, polygons triangulated as fans;
-/// vertexAverage is the average of its points). Throws InputError naming the file
-/// on any read error.
+/// COLLADA (.dae) go through assimp (Triangulate and SortByPType; vertices are welded
+/// by the repair, not the import) with every node transform applied, positions in
+/// single precision as OMPL.app computes them; vertexAverage comes from a second
+/// import with OMPL.app's flags (GenNormals, Triangulate, JoinIdenticalVertices,
+/// SortByPType, OptimizeGraph), averaged as OMPL.app averages, so that it is OMPL.app's
+/// robot centre to the bit. Legacy VTK POLYDATA ASCII (.vtk) has its own reader
+/// (POINTS and POLYGONS, polygons triangulated as fans; vertexAverage is the average
+/// of its points). Throws InputError naming the file on any read error.
 ImportedMesh importMesh(const std::string& path);
 
-/// The triangles of importMesh.
+/// The triangles of importMesh (one import: no centre).
 TriangleSoup readTriangleSoup(const std::string& path);
 
 /// The mesh a file shows: readTriangleSoup followed by prepareMesh (repair and solid

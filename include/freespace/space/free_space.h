@@ -65,7 +65,9 @@ class FreeSpace {
   /// through a vertex of the slice) tells free and the cell when the ray arrives
   /// from its positive side and its shell is free; blocked otherwise (a
   /// configuration on a segment touches the environment). A ray that meets nothing
-  /// starts in the unbounded cell. Configurations are of the perturbed meshes.
+  /// starts in the unbounded cell. Configurations are of the perturbed meshes, in
+  /// the input's coordinates (as every answer of this class but the internal
+  /// structures arrangement() and meshes(), which are scaled by meshes().scale).
   Location locate(const Pose2& pose) const;
 
   /// The number of free cells, the unbounded one included.
@@ -75,6 +77,7 @@ class FreeSpace {
   std::vector<std::optional<PatchBox>> cellBoxes() const;
   std::size_t shellCount() const;
   std::size_t freeShellCount() const;
+  /// The arrangement, in the construction's coordinates (the input's times meshes().scale).
   const Arrangement& arrangement() const;
   /// The free cell a shell bounds (its positive side), if it bounds one.
   std::optional<std::uint32_t> cellOfShell(std::uint32_t shell) const;
@@ -82,6 +85,7 @@ class FreeSpace {
   std::optional<std::uint32_t> cellOfSubFace(SubFaceId face) const;
   /// The exact predicates the structure was built with (for reading it further).
   AngleAlgebra& algebra() const;
+  /// The perturbed meshes, in the construction's coordinates (the input's times their scale).
   const PerturbedMeshes& meshes() const;
   const std::vector<StageTime>& stageTimes() const;
   const PredicateStatistics& statistics() const;
