@@ -1,7 +1,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
+#include <vector>
 
+#include "freespace/geometry/patch_segment.h"
 #include "freespace/geometry/perturbed_meshes.h"
 #include "freespace/input_error.h"
 #include "freespace/scenes/scene_generator.h"
@@ -38,6 +41,23 @@ TEST(PerturbedMeshes, SwitchedOffLeavesTheMeshesAlone) {
   EXPECT_EQ(same.world.vertices(), world.vertices());
   EXPECT_FALSE(same.record.enabled);
   EXPECT_EQ(same.record.absoluteSize, 0.0);
+}
+
+// 2,000 vertices at two heights, moved by at most 1e-14 of the scene (about 130
+// doubles around each height): offsets must land on the same double, and such
+// heights are moved apart.
+TEST(PerturbedMeshes, EveryVertexHeightIsDistinctEvenWhenOffsetsCollide) {
+  std::vector<TriangleSoup> boxes;
+  for (int i = 0; i < 250; ++i) boxes.push_back(boxSoup({2.0 * i, 0, 0.5}, {2.0 * i + 1, 1, 0.75}));
+  const Mesh world = Mesh::fromSoup(joinSoups(boxes), "row of boxes");
+  const Mesh robot = boxMesh({-1, -1, 0}, {1, 1, 1});
+  const PerturbedMeshes perturbed = perturbMeshes(robot, world, {true, 5, 1e-14});
+  std::set<double> heights;
+  for (const Mesh* mesh : {&perturbed.robot, &perturbed.world}) {
+    for (const Point3& vertex : mesh->vertices()) heights.insert(vertex.z());
+  }
+  EXPECT_EQ(heights.size(), robot.vertices().size() + world.vertices().size());
+  EXPECT_NO_THROW(requireDistinctHeights(perturbed.robot, perturbed.world, "row of boxes"));
 }
 
 // A square ring 4 wide cut through by a slit `gap` wide: its two sides face each other

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_set>
 
 #include "freespace/input_error.h"
 
@@ -29,10 +30,18 @@ double normalisingScale(const Mesh& robot, const Mesh& world) {
   return std::ldexp(1.0, -std::ilogb(largest));
 }
 
-Mesh perturbMesh(const Mesh& mesh, double scale, Perturbation& perturbation, const std::string& name) {
+// Perturbs the mesh's coordinates; `heights` holds those given to vertices so far.
+// The construction needs every vertex height distinct (requireDistinctHeights): with
+// a million vertices at one height, two offsets land on one double now and then (about
+// n^2 / 2 in 1e8 at the default size), and the later one is moved up by double steps
+// until its height is free, a perturbation as good as any.
+Mesh perturbMesh(const Mesh& mesh, double scale, Perturbation& perturbation, std::unordered_set<double>& heights,
+                 const std::string& name) {
   TriangleSoup soup{mesh.vertices(), mesh.triangles()};
   for (Point3& vertex : soup.vertices) {
     for (int axis = 0; axis < 3; ++axis) vertex[axis] = perturbation.perturb(vertex[axis] * scale);
+    if (perturbation.record().absoluteSize == 0) continue;
+    while (!heights.insert(vertex.z()).second) vertex.z() = std::nextafter(vertex.z(), HUGE_VAL);
   }
   // Checked again: moved vertices can make triangles meet that were a hair apart.
   return Mesh::fromSoup(soup, name, nullptr, VertexWelding::asIndexed);
@@ -47,8 +56,9 @@ PerturbedMeshes perturbMeshes(const Mesh& robot, const Mesh& world, const Pertur
   for (int smaller = 0;; ++smaller) {
     try {
       Perturbation perturbation(attempt, sceneSize);
-      Mesh perturbedRobot = perturbMesh(robot, scale, perturbation, "perturbed robot");
-      Mesh perturbedWorld = perturbMesh(world, scale, perturbation, "perturbed environment");
+      std::unordered_set<double> heights;
+      Mesh perturbedRobot = perturbMesh(robot, scale, perturbation, heights, "perturbed robot");
+      Mesh perturbedWorld = perturbMesh(world, scale, perturbation, heights, "perturbed environment");
       return {std::move(perturbedRobot), std::move(perturbedWorld), perturbation.record(), scale};
     } catch (const InputError&) {
       // Features of a mesh closer than the perturbation (a wall's foot a hair from
