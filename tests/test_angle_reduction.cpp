@@ -16,6 +16,7 @@
 #include "freespace/collision/fcl_collision_checker.h"
 #include "freespace/numbers/angle_reduction.h"
 #include "freespace/problem/planar_problem.h"
+#include "freespace/space/free_space.h"
 
 using namespace freespace;
 
@@ -92,6 +93,27 @@ TEST(AngleReduction, ExactTestAgreesWithFclAtHugeAngles) {
   }
   EXPECT_GT(compared, 2500);
   EXPECT_GT(collisions, 100);
+}
+
+// locate at theta and at theta + 2 pi k for k up to about 1e300 / 2 pi (the angles
+// randomAngle draws) answers as the exact test on the construction's meshes.
+TEST(AngleReduction, LocateAgreesWithTheExactTestAtHugeAngles) {
+  const LoadedProblem loaded = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/keyhole.cfg");
+  const FreeSpace space(loaded.robot, loaded.world);
+  const ExactCollisionChecker exact(space.meshes().robot, space.meshes().world);
+  const Box3 bounds = space.meshes().world.bounds();
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> x(bounds.min().x(), bounds.max().x()), y(bounds.min().y(), bounds.max().y());
+  int free = 0, huge = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const Pose2 pose{x(random), y(random), randomAngle(random)};
+    huge += std::fabs(pose.theta) > 1e15;
+    const bool located = space.locate(pose).free;
+    free += located;
+    ASSERT_EQ(located, !exact.inCollision(pose)) << pose.x << " " << pose.y << " " << pose.theta;
+  }
+  EXPECT_GT(free, 100);
+  EXPECT_GT(huge, 500);
 }
 
 TEST(AngleReduction, CheckAnswersForTheAngleGiven) {
