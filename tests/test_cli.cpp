@@ -97,6 +97,7 @@ TEST(Cli, BadOptionValuesExitWithStatusTwoNamingTheOption) {
       {"build " + meshes + " --perturbation nan", "--perturbation: must be a finite number, at least 0"},
       {"export " + meshes + " --ply out.ply --tolerance nan", "--tolerance: must be a finite number, at least 0"},
       {"info " + meshes + " --repair-tolerance inf", "--repair-tolerance: must be a finite number, at least 0"},
+      {"build " + meshes + " --memory-limit nan", "--memory-limit: must be a finite number, at least 0"},
       {"build " + meshes + " --no-such-option", "--no-such-option"},
       {"no-such-command", "no-such-command"},
   };

@@ -17,6 +17,9 @@
 #include <thread>
 #include <vector>
 
+#include "freespace/geometry/mesh_topology.h"
+#include "freespace/geometry/patch_candidates.h"
+#include "freespace/input_error.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/scenes/scene_generator.h"
 #include "freespace/space/free_space.h"
@@ -156,4 +159,35 @@ TEST(FreeSpaceConstruction, AnnouncesItsStagesAndStopsSoonAfterCancellation) {
     const std::vector<std::string> prefix(expectedStages.begin(), expectedStages.begin() + last + 1);
     EXPECT_EQ(build.stages, prefix);
   }
+}
+
+// The candidates counted before the construction bound its patches from above, on
+// every bundled problem; a memory limit below the estimate they give is refused
+// before any patch is built, naming the scene and the estimate.
+TEST(FreeSpaceConstruction, PatchCandidatesBoundThePatchesAndAreWeighedAgainstTheMemoryLimit) {
+  for (const char* name : {"cage", "keyhole", "maze", "table", "random_polyhedra"}) {
+    const LoadedProblem loaded = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + name + ".cfg");
+    const FreeSpace space(loaded.robot, loaded.world);
+    PredicateStatistics statistics;
+    const MeshTopology robotTopology(space.meshes().robot, statistics), worldTopology(space.meshes().world, statistics);
+    const std::size_t candidates =
+        countPatchCandidates(space.meshes().robot, robotTopology, space.meshes().world, worldTopology);
+    EXPECT_GE(candidates, space.arrangement().patches.size()) << name;
+    EXPECT_LE(candidates, 4 * space.arrangement().patches.size()) << name;
+  }
+  const LoadedProblem keyhole = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/keyhole.cfg");
+  FreeSpaceOptions options;
+  options.sourceName = "keyhole";
+  options.memoryLimitBytes = 1e6;
+  std::vector<std::string> stages;
+  options.progress = [&](const std::string& stage) { stages.push_back(stage); };
+  try {
+    const FreeSpace space(keyhole.robot, keyhole.world, options);
+    ADD_FAILURE() << "built within 1 MB";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.file(), "keyhole");
+    EXPECT_NE(error.problem().find("the construction needs at least"), std::string::npos) << error.problem();
+    EXPECT_NE(error.problem().find("more than the memory limit of 0.001 GB"), std::string::npos) << error.problem();
+  }
+  EXPECT_EQ(stages, (std::vector<std::string>{"perturb", "patches"}));
 }

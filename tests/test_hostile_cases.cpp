@@ -17,8 +17,9 @@
 //   a NUL byte in a .cfg: Problem.BadValuesAndSyntaxAreErrors.
 // Tiny and huge scenes: HostileInput.TinyAndHugeCoordinatesGiveTheSameCells,
 //   MeshReader.ReadsATinyModelAsTheSameSolid, and below.
-// Heights that collide after perturbation (a million-vertex environment):
-//   PerturbedMeshes.EveryVertexHeightIsDistinctEvenWhenOffsetsCollide.
+// A 2-million-triangle environment (heights that collided after perturbation, then
+//   memory beyond the machine's): PerturbedMeshes.EveryVertexHeightIsDistinctEvenWhenOffsetsCollide,
+//   FreeSpaceConstruction.PatchCandidatesBoundThePatchesAndAreWeighedAgainstTheMemoryLimit, and below.
 // FIFOs and devices as input: Cli.PipesAndDevicesAsInputAreRefusedNotWaitedOn.
 // A directory as batch file, a trailing comment on a batch line: below.
 #include <gtest/gtest.h>
@@ -79,4 +80,14 @@ TEST(HostileCases, ATinySceneIsLocatedAsAtItsOwnSize) {
       "locate " + quoted(dir.file("robot.stl")) + " " + quoted(dir.file("world.stl")) + " --batch " + quoted(batch), 60);
   EXPECT_EQ(result.status, 0) << result.err;
   EXPECT_EQ(result.out, std::string(start) + ": free, cell 1\n0 0 0: blocked\n") << result.err;
+}
+
+// A scene whose construction needs more memory than allowed is refused before any
+// patch is built, with the estimate (2 million triangles: at least 26 GB, after
+// loading, on a machine of 25 GB; here the keyhole under a limit of 1 MB).
+TEST(HostileCases, AConstructionBeyondTheMemoryLimitIsRefusedWithAnEstimate) {
+  const CommandResult result = runFreespace("build --cfg " + quoted(kKeyhole) + " --memory-limit 0.001");
+  EXPECT_EQ(result.status, 2);
+  EXPECT_EQ(result.err.rfind("error: " + kKeyhole + ": the construction needs at least ", 0), 0u) << result.err;
+  EXPECT_NE(result.err.find("more than the memory limit of 0.001 GB"), std::string::npos) << result.err;
 }

@@ -29,6 +29,10 @@ void FreeSpaceInput::addOptions(CLI::App& command) {
   command.add_option("--perturbation", perturbation_,
                      "size of the input perturbation relative to the scene (default 1e-8; 0 switches it off)")
       ->check(finiteNonNegative());
+  command.add_option("--memory-limit", memoryLimitGigabytes_,
+                     "memory the construction may use, in GB (default: the machine's); a scene that needs more by "
+                     "an estimate made before building is refused at once")
+      ->check(finiteNonNegative());
 }
 
 std::unique_ptr<FreeSpace> FreeSpaceInput::build(LoadedProblem& loaded) const {
@@ -38,6 +42,7 @@ std::unique_ptr<FreeSpace> FreeSpaceInput::build(LoadedProblem& loaded) const {
   options.perturbation.seed = seed_;
   options.perturbation.relativeSize = perturbation_;
   options.perturbation.enabled = perturbation_ > 0;
+  options.memoryLimitBytes = memoryLimitGigabytes_ * 1e9;
   options.sourceName = loaded.cfgPath.empty() ? loaded.problem.robot + " and " + loaded.problem.world : loaded.cfgPath;
   if (isatty(STDERR_FILENO)) {
     options.progress = [](const std::string& stage) { std::cerr << "building: " << stage << "...\n"; };

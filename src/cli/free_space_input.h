@@ -23,6 +23,7 @@ class FreeSpaceInput {
   SceneInput scene_;
   std::uint64_t seed_ = PerturbationSettings{}.seed;
   double perturbation_ = PerturbationSettings{}.relativeSize;
+  double memoryLimitGigabytes_ = 0;  // 0: the machine's memory
 };
 
 }  // namespace freespace::cli

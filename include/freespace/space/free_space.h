@@ -26,6 +26,10 @@ struct FreeSpaceOptions {
   /// Polled throughout the construction: once it asks, the constructor throws
   /// Cancelled (within a fraction of a second).
   Cancellation cancellation;
+  /// The memory the construction may need, in bytes (0: the machine's physical
+  /// memory). A scene that needs more by a lower-bound estimate made before any patch
+  /// is built is an InputError naming sourceName, with the estimate.
+  double memoryLimitBytes = 0;
 };
 
 /// Where a configuration lies: in a free cell (0 is the unbounded one), or blocked
