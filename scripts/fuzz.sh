@@ -23,7 +23,8 @@ else
   keepWork=no
 fi
 mkdir -p "$work"
-cmake -S tests/fuzz -B "$work/build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo > "$work/configure.log"
+cmake -S tests/fuzz -B "$work/build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DFREESPACE_BUILD_DIR="$PWD/build" > "$work/configure.log"
 cmake --build "$work/build" -j"$(nproc)" > "$work/build.log"
 
 # Seeds: the project's own files of each kind, and meshes of every format from the generator.
@@ -33,12 +34,24 @@ if [ ! -d "$generated" ]; then
     build/bin/freespace generate --out "$generated/$format" --scene keyhole --scene soup_pieces --format "$format" > /dev/null
   done
 fi
+# The payloads of small saved free spaces (the saved-space target adds header and checksum).
+savedSpacePayloads() {
+  local folder="$work/saved" cube=tests/data/meshes/cube.obj
+  if [ ! -d "$folder" ]; then
+    mkdir -p "$folder"
+    build/bin/freespace build "$cube" "$cube" --save "$folder/cube.fspace" > /dev/null
+    # The payload follows the header line, its 8-byte length and 4-byte CRC-32.
+    tail -c +$(( $(head -n 1 "$folder/cube.fspace" | wc -c) + 13 )) "$folder/cube.fspace" > "$folder/cube.payload"
+  fi
+  echo "$folder/cube.payload"
+}
 seeds() {  # TARGET -> folder of seed files (paths from the project's root)
   local target=$1 folder="$work/seeds/$1" extension=${1#fuzz_mesh_} i=0
   mkdir -p "$folder"
   case $target in
     fuzz_cfg) files=$(find benchmarks/problems "$generated/obj" -name "*.cfg") ;;
     fuzz_path) files=$(find benchmarks -name "*.path") ;;
+    fuzz_saved_space) files=$(savedSpacePayloads) ;;
     *) files=$(find tests/data benchmarks/problems "$generated/$extension" -name "*.$extension" -size -64k) ;;
   esac
   [ -d "tests/fuzz/regressions/$target" ] && files="$files $(find "tests/fuzz/regressions/$target" -type f)"

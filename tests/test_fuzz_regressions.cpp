@@ -5,23 +5,44 @@
 
 #include <filesystem>
 
+#include <boost/crc.hpp>
+
 #include "command_runner.h"
 
 using freespace::testing::CommandResult;
 using freespace::testing::runFreespace;
+using freespace::testing::TempDir;
 
 namespace fs = std::filesystem;
+
+namespace {
+
+// The saved-space target's input is a payload (tests/fuzz/fuzz_saved_space.cpp): the
+// file it stands for, with the header line, the length and a valid CRC-32.
+std::string savedSpaceOf(const fs::path& payloadFile, const TempDir& dir) {
+  const std::string payload = freespace::testing::readWholeFile(payloadFile.string());
+  boost::crc_32_type crc;
+  crc.process_bytes(payload.data(), payload.size());
+  std::string file = "freespace saved free space, format 2\n";
+  for (int i = 0; i < 8; ++i) file.push_back(static_cast<char>((std::uint64_t(payload.size()) >> (8 * i)) & 0xff));
+  for (int i = 0; i < 4; ++i) file.push_back(static_cast<char>((crc.checksum() >> (8 * i)) & 0xff));
+  return dir.write(payloadFile.filename().string() + ".fspace", file + payload);
+}
+
+}  // namespace
 
 TEST(FuzzRegressions, EveryFoundInputIsReadOrRefusedInTime) {
   const fs::path root = fs::path(FREESPACE_SOURCE_DIR) / "tests/fuzz/regressions";
   const std::string cube = "'" + std::string(FREESPACE_TEST_DATA) + "/meshes/cube.obj'";
   int inputs = 0;
+  const TempDir dir;
   for (const auto& entry : fs::recursive_directory_iterator(root)) {
     if (!entry.is_regular_file()) continue;
     const std::string target = entry.path().parent_path().filename().string();
     const std::string file = "'" + entry.path().string() + "'";
     std::string arguments;
-    if (target == "fuzz_cfg") arguments = "info --cfg " + file;
+    if (target == "fuzz_saved_space") arguments = "locate '" + savedSpaceOf(entry.path(), dir) + "' --at 0 0 0";
+    else if (target == "fuzz_cfg") arguments = "info --cfg " + file;
     else if (target == "fuzz_path") arguments = "check " + cube + " " + cube + " --batch " + file;
     else arguments = "info " + file + " " + cube;
     const CommandResult result = runFreespace(arguments, 30);

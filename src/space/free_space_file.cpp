@@ -58,6 +58,16 @@ class CheckedBinaryIArchive
     if (length > 0) load_binary(text.data(), length);
   }
 
+  // A flag is a byte of 0 or 1: any other value read into a bool is undefined
+  // behaviour (found by fuzzing).
+  void load(bool& flag) {
+    static_assert(sizeof(bool) == 1, "a saved flag is one byte");
+    unsigned char byte = 0;
+    load_binary(&byte, 1);
+    if (byte > 1) throw DamagedPart("a flag that is neither true nor false");
+    flag = byte == 1;
+  }
+
   template <class T>
   void load_override(T& value) {
     Base::load_override(value);
