@@ -111,45 +111,50 @@ void requireFiniteAsRead(const std::string& path, const aiScene& scene) {
   }
 }
 
-// The file read by assimp with `flags` (`objText`, when not empty, read in its place:
-// an OFF file's polygons as OBJ, checkOffFile). Assimp applies its importers'
+// What assimp reads: the file's bytes, checked (or the text that stands for them), and
+// their format as assimp names it ("obj", "ply", ...). Read from memory, the import
+// sees the very bytes the checks saw.
+struct ImportInput {
+  std::string bytes;
+  std::string format;
+};
+
+// The scene assimp makes of the input with `flags`. Assimp applies its importers'
 // conventions as OMPL.app sees them: a COLLADA file's <unit> scale and its up axis
 // (Z_UP is turned to Y_UP) are in the root node's transform.
-const aiScene& importedScene(Assimp::Importer& importer, const std::string& path, const std::string& objText,
+const aiScene& importedScene(Assimp::Importer& importer, const std::string& path, const ImportInput& input,
                              unsigned flags) {
-  const aiScene* scene = objText.empty()
-                             ? importer.ReadFile(path, flags)
-                             : importer.ReadFileFromMemory(objText.data(), objText.size(), flags, "obj");
+  const aiScene* scene = importer.ReadFileFromMemory(input.bytes.data(), input.bytes.size(), flags, input.format.c_str());
   if (!scene) throw InputError(path, std::string("cannot read mesh: ") + importer.GetErrorString());
   requireFiniteAsRead(path, *scene);
   return *scene;
 }
 
-ImportedMesh importWithAssimp(const std::string& path, const std::string& objText, bool withCentre) {
+ImportedMesh importWithAssimp(const std::string& path, const ImportInput& input, bool withCentre) {
   ImportedMesh imported;
   {
     Assimp::Importer importer;
-    imported.soup = trianglesOf(importedScene(importer, path, objText, kGeometryImportFlags));
+    imported.soup = trianglesOf(importedScene(importer, path, input, kGeometryImportFlags));
   }
   if (withCentre) {
     Assimp::Importer importer;
-    imported.vertexAverage = vertexAverageOf(importedScene(importer, path, objText, kOmplAppImportFlags));
+    imported.vertexAverage = vertexAverageOf(importedScene(importer, path, input, kOmplAppImportFlags));
   }
   return imported;
 }
 
 // The import library trusts counts and indices: PLY, OFF, OBJ and COLLADA files are
-// checked against their own headers and structure first (mesh_file_checks.h).
-// Returns the text to import in place of the file: empty but for an OFF file with
-// faces the import library's OFF reader would drop.
-std::string checkBeforeImport(const std::string& path, const std::string& format, std::ifstream& file) {
-  if (format == ".stl") return {};
-  const std::string content{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+// checked against their own headers and structure first (mesh_file_checks.h). An OFF
+// file with faces the import library's OFF reader would drop is imported as the same
+// polygons in OBJ text.
+ImportInput checkedForImport(const std::string& path, const std::string& format, std::string content) {
   if (format == ".ply") detail::checkPlyFile(path, content);
-  if (format == ".off") return detail::checkOffFile(path, content);
   if (format == ".obj") detail::checkObjFaces(path, content);
   if (format == ".dae") detail::checkColladaFile(path, content);
-  return {};
+  if (format == ".off") {
+    if (std::string objText = detail::checkOffFile(path, content); !objText.empty()) return {std::move(objText), "obj"};
+  }
+  return {std::move(content), format.substr(1)};
 }
 
 // Formats OMPL.app cannot read have no convention of their own: the plain average of
@@ -165,14 +170,12 @@ ImportedMesh importMeshFile(const std::string& path, bool withCentre) {
   std::ifstream file = openNonEmptyFile(path);
   const std::string extension = std::filesystem::path(path).extension().string();
   const std::string format = detail::lowercaseExtension(path);
-  if (format == ".vtk") {
-    const std::string content{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+  if (format == ".vtk" || isAssimpFormat(format)) {
+    std::string content{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+    if (format != ".vtk") return importWithAssimp(path, checkedForImport(path, format, std::move(content)), withCentre);
     ImportedMesh imported{readLegacyVtk(path, content), Point3::Zero()};
     if (withCentre) imported.vertexAverage = averageOf(imported.soup.vertices);
     return imported;
-  }
-  if (isAssimpFormat(format)) {
-    return importWithAssimp(path, checkBeforeImport(path, format, file), withCentre);
   }
   const std::string found = extension.empty() ? ": the file name has no extension"
                                               : " '" + extension + "'";
