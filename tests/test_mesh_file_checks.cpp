@@ -86,7 +86,9 @@ TEST(MeshFileChecks, EveryPrefixOfAValidFileLoadsOrIsRefused) {
     EXPECT_TRUE(loadsOrIsRefused(dir, std::string("prefix.") + extension, content)) << extension;
     // PLY and OFF give their counts: only prefixes that end inside the last record's
     // final number can still pass. An OBJ file cut short is a smaller valid file.
-    if (std::string(extension) != "obj") EXPECT_LT(loaded, 40) << extension;
+    if (std::string(extension) != "obj") {
+      EXPECT_LT(loaded, 40) << extension;
+    }
   }
   for (bool bigEndian : {false, true}) {
     const std::string content = binaryTetrahedronPly(bigEndian);
