@@ -23,6 +23,9 @@ inline std::string readWholeFile(const std::string& path) {
   return text.str();
 }
 
+/// The text in single quotes, as one shell word (for paths without quotes).
+inline std::string quoted(const std::string& text) { return "'" + text + "'"; }
+
 /// Runs the freespace command line tool with `arguments` (already shell quoted);
 /// with `timeLimit` seconds, a run that takes longer is killed (status 124).
 inline CommandResult runFreespace(const std::string& arguments, int timeLimit = 0) {

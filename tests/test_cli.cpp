@@ -14,8 +14,6 @@ namespace {
 
 const std::string kMeshes = std::string(FREESPACE_TEST_DATA) + "/meshes/";
 
-std::string quoted(const std::string& text) { return "'" + text + "'"; }
-
 }  // namespace
 
 TEST(Cli, EveryMalformedMeshExitsWithStatusTwoNamingTheFile) {

@@ -40,8 +40,6 @@ namespace {
 
 const std::string kKeyhole = std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/keyhole.cfg";
 
-std::string quoted(const std::string& text) { return "'" + text + "'"; }
-
 }  // namespace
 
 TEST(HostileCases, ADirectoryAsBatchFileIsAnErrorNamingIt) {
