@@ -60,6 +60,18 @@ std::string withValidChecksum(std::string bytes, std::size_t payloadStart) {
 
 std::size_t payloadStartOf(const std::string& bytes) { return bytes.find('\n') + 1 + 12; }  // header line, size, CRC-32
 
+/// The bytes of builtSpace() saved in `dir`.
+std::string savedBytes(const TempDir& dir) {
+  const std::string file = dir.file("space.fspace");
+  builtSpace().save(file);
+  return contents(file);
+}
+
+/// Writes `value` as 8 little-endian bytes at `at`.
+void putUint64(std::string& bytes, std::size_t at, std::uint64_t value) {
+  for (int i = 0; i < 8; ++i) bytes[at + i] = static_cast<char>((value >> (8 * i)) & 0xff);
+}
+
 /// The offset of the first 8-byte little-endian length followed by that many
 /// characters of a written rational ("-12/7"), as the saved format stores numbers.
 std::size_t firstNumberLength(const std::string& bytes, std::size_t from) {
@@ -165,15 +177,12 @@ TEST(SavedSpace, AlteredPayloadsWithAValidChecksumLoadOrFailCleanly) {
 // fills the machine's memory.
 TEST(SavedSpace, AHugeTextLengthIsAClearErrorWithoutAllocating) {
   TempDir dir;
-  const std::string file = dir.file("space.fspace");
-  builtSpace().save(file);
-  const std::string bytes = contents(file);
+  const std::string bytes = savedBytes(dir);
   const std::size_t payloadStart = payloadStartOf(bytes);
   const std::size_t at = firstNumberLength(bytes, payloadStart);
   ASSERT_NE(at, std::string::npos) << "no written number in the payload";
   std::string altered = bytes;
-  const std::uint64_t huge = std::uint64_t(1) << 34;
-  for (int i = 0; i < 8; ++i) altered[at + i] = static_cast<char>((huge >> (8 * i)) & 0xff);
+  putUint64(altered, at, std::uint64_t(1) << 34);
   const std::string other = dir.file("huge.fspace");
   write(other, withValidChecksum(altered, payloadStart));
   const auto start = std::chrono::steady_clock::now();
@@ -188,9 +197,7 @@ TEST(SavedSpace, AHugeTextLengthIsAClearErrorWithoutAllocating) {
 // texts, and without setting aside memory for the claimed length.
 TEST(SavedSpace, AlteredLengthsAreRefusedWithPlainMessages) {
   TempDir dir;
-  const std::string file = dir.file("space.fspace");
-  builtSpace().save(file);
-  const std::string bytes = contents(file);
+  const std::string bytes = savedBytes(dir);
   const std::size_t payloadStart = payloadStartOf(bytes);
   const std::string other = dir.file("altered.fspace");
   int altered = 0;
@@ -199,8 +206,7 @@ TEST(SavedSpace, AlteredLengthsAreRefusedWithPlainMessages) {
     for (int i = 0; i < 8; ++i) value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
     if (value == 0 || value > 100000) continue;
     std::string changed = bytes;
-    const std::uint64_t raised = value + (std::uint64_t(1) << 26);
-    for (int i = 0; i < 8; ++i) changed[at + i] = static_cast<char>((raised >> (8 * i)) & 0xff);
+    putUint64(changed, at, value + (std::uint64_t(1) << 26));
     write(other, withValidChecksum(changed, payloadStart));
     ++altered;
     try {
