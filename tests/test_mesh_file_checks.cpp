@@ -176,3 +176,27 @@ TEST(MeshFileChecks, CoordinatesBeyondSinglePrecisionAreReportedAsRead) {
   EXPECT_NE(problemOf(dir, "inf.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 -inf\n" + faces).find("(0, 0, -inf) as read"),
             std::string::npos);
 }
+
+// The import library reads ASCII PLY and OFF a record per line: a PLY record split over
+// lines or sharing one is refused, and an OFF file with blank lines and comments among
+// its records loads as the same file without them (its own reader took a line holding
+// a space for a face, and crashed on such a file; found by fuzzing).
+TEST(MeshFileChecks, RecordsAreReadOnePerLine) {
+  const TempDir dir;
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  EXPECT_EQ(problemOf(dir, "whole.ply", header + "0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces), "");
+  EXPECT_EQ(problemOf(dir, "split.ply", header + "0 0\n0 1 0 0\n0 1 0\n0 0 1\n" + faces),
+            "PLY line 10: vertex 0 has fewer values than its properties (records are one per line)");
+  EXPECT_EQ(problemOf(dir, "shared.ply", header + "0 0 0 1 0 0\n0 1 0\n0 0 1\n" + faces + "3 0 1 2\n"),
+            "PLY line 10: vertex 0 has more values than its properties (records are one per line)");
+  const std::string off = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces;
+  const std::string spaced = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n \n \n3 0 1 3 # a comment\n"
+                             "# a line of its own\n3 0 3 2\n\t\n3 1 2 3\n";
+  const TriangleSoup plain = readTriangleSoup(dir.write("plain.off", off));
+  const TriangleSoup blanks = readTriangleSoup(dir.write("blanks.off", spaced));
+  EXPECT_EQ(blanks.vertices, plain.vertices);
+  EXPECT_EQ(blanks.triangles, plain.triangles);
+  EXPECT_EQ(plain.triangles.size(), 4u);
+}

@@ -13,17 +13,26 @@ namespace freespace::detail {
 
 /// A PLY file (ASCII or binary, either byte order): a complete header; a vertex
 /// element with x, y and z and a face element with a vertex index list; every
-/// element's records present in full (counts weighed against the file's size first);
-/// every face with at least 3 vertices, each an index of a vertex.
+/// element's records present in full (counts weighed against the file's size first),
+/// in ASCII each on a line of its own with nothing else (the import library reads a
+/// record per line); every face with at least 3 vertices, each an index of a vertex.
 void checkPlyFile(const std::string& path, const std::string& content);
+
+/// What the import library reads in place of a file: a text and its format as the
+/// library names it ("off", "obj", ...).
+struct ImportText {
+  std::string text;
+  std::string format;
+};
 
 /// An OFF file (3D; OFF, COFF, NOFF, CNOFF, STOFF ... headers), plain text: its counts, weighed
 /// against the file's size; every vertex line with 3 numbers; every face with at
-/// least 3 vertices, each an index of a vertex. The import library's OFF reader drops
-/// faces of more than kLargestOffFaceImported vertices (its OBJ reader takes any): for
-/// a file with such faces this returns the same vertices and polygons as OBJ text,
-/// else an empty string.
-std::string checkOffFile(const std::string& path, const std::string& content);
+/// least 3 vertices, each an index of a vertex. Returns the same vertices and faces as
+/// the import library should read them: one record per line, without comments, blank
+/// lines or attributes (its OFF reader takes a blank line for a face, and crashed on
+/// such files), as OFF; as OBJ when a face has more than kLargestOffFaceImported
+/// vertices (the OFF reader drops those faces, the OBJ reader takes any).
+ImportText checkOffFile(const std::string& path, const std::string& content);
 constexpr int kLargestOffFaceImported = 9;
 
 /// An OBJ file: plain text (no control characters but tabs and line ends), every

@@ -111,26 +111,18 @@ void requireFiniteAsRead(const std::string& path, const aiScene& scene) {
   }
 }
 
-// What assimp reads: the file's bytes, checked (or the text that stands for them), and
-// their format as assimp names it ("obj", "ply", ...). Read from memory, the import
-// sees the very bytes the checks saw.
-struct ImportInput {
-  std::string bytes;
-  std::string format;
-};
-
 // The scene assimp makes of the input with `flags`. Assimp applies its importers'
 // conventions as OMPL.app sees them: a COLLADA file's <unit> scale and its up axis
 // (Z_UP is turned to Y_UP) are in the root node's transform.
-const aiScene& importedScene(Assimp::Importer& importer, const std::string& path, const ImportInput& input,
+const aiScene& importedScene(Assimp::Importer& importer, const std::string& path, const detail::ImportText& input,
                              unsigned flags) {
-  const aiScene* scene = importer.ReadFileFromMemory(input.bytes.data(), input.bytes.size(), flags, input.format.c_str());
+  const aiScene* scene = importer.ReadFileFromMemory(input.text.data(), input.text.size(), flags, input.format.c_str());
   if (!scene) throw InputError(path, std::string("cannot read mesh: ") + importer.GetErrorString());
   requireFiniteAsRead(path, *scene);
   return *scene;
 }
 
-ImportedMesh importWithAssimp(const std::string& path, const ImportInput& input, bool withCentre) {
+ImportedMesh importWithAssimp(const std::string& path, const detail::ImportText& input, bool withCentre) {
   ImportedMesh imported;
   {
     Assimp::Importer importer;
@@ -144,16 +136,14 @@ ImportedMesh importWithAssimp(const std::string& path, const ImportInput& input,
 }
 
 // The import library trusts counts and indices: PLY, OFF, OBJ and COLLADA files are
-// checked against their own headers and structure first (mesh_file_checks.h). An OFF
-// file with faces the import library's OFF reader would drop is imported as the same
-// polygons in OBJ text.
-ImportInput checkedForImport(const std::string& path, const std::string& format, std::string content) {
+// checked against their own headers and structure first (mesh_file_checks.h), and read
+// from memory: the import sees the very bytes the checks saw (an OFF file as the
+// text its check returns).
+detail::ImportText checkedForImport(const std::string& path, const std::string& format, std::string content) {
   if (format == ".ply") detail::checkPlyFile(path, content);
   if (format == ".obj") detail::checkObjFaces(path, content);
   if (format == ".dae") detail::checkColladaFile(path, content);
-  if (format == ".off") {
-    if (std::string objText = detail::checkOffFile(path, content); !objText.empty()) return {std::move(objText), "obj"};
-  }
+  if (format == ".off") return detail::checkOffFile(path, content);
   return {std::move(content), format.substr(1)};
 }
 

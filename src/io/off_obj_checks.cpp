@@ -12,7 +12,7 @@
 
 namespace freespace::detail {
 
-std::string checkOffFile(const std::string& path, const std::string& content) {
+ImportText checkOffFile(const std::string& path, const std::string& content) {
   requirePlainText(path, content, "OFF", true);
   Lines lines(content);
   std::string_view line;
@@ -48,9 +48,8 @@ std::string checkOffFile(const std::string& path, const std::string& content) {
     throw InputError(path, "OFF file is truncated: it promises " + std::to_string(vertices) + " vertices and " +
                                std::to_string(faces) + " faces in " + std::to_string(content.size()) + " bytes");
   }
-  // The same polygons as OBJ text, for files with faces the import library's OFF
-  // reader would drop.
-  std::string objText;
+  // The same records as OFF and as OBJ text: the import library reads one of them.
+  std::string offText = "OFF\n" + std::to_string(vertices) + " " + std::to_string(faces) + " 0\n", objText;
   std::int64_t largestFace = 0;
   for (std::int64_t v = 0; v < vertices; ++v) {
     double coordinate = 0;
@@ -60,7 +59,10 @@ std::string checkOffFile(const std::string& path, const std::string& content) {
       throw InputError(path, "OFF line " + std::to_string(lines.number()) + ": vertex " + std::to_string(v) +
                                  " is not three numbers");
     }
-    objText.append("v ").append(words[0]).append(" ").append(words[1]).append(" ").append(words[2]).append("\n");
+    const std::string coordinates =
+        std::string(words[0]).append(" ").append(words[1]).append(" ").append(words[2]).append("\n");
+    offText += coordinates;
+    objText.append("v ").append(coordinates);
   }
   for (std::int64_t f = 0; f < faces; ++f) {
     if (!nextWords()) throw InputError(path, "OFF file is truncated: face " + std::to_string(f) + " is missing");
@@ -75,17 +77,21 @@ std::string checkOffFile(const std::string& path, const std::string& content) {
                                  std::to_string(words.size() - 1) + " of its " + std::to_string(corners) + " vertices");
     }
     largestFace = std::max(largestFace, corners);
+    offText.append(std::to_string(corners));
     objText.append("f");
     for (std::int64_t i = 1; i <= corners; ++i) {
       std::int64_t index = 0;
       if (!parseWhole(words[i], index) || index < 0 || index >= vertices) {
         throw InputError(path, indexDefect(f, printable(words[i]), static_cast<std::uint64_t>(vertices)));
       }
+      offText.append(" ").append(std::to_string(index));
       objText.append(" ").append(std::to_string(index + 1));
     }
+    offText.append("\n");
     objText.append("\n");
   }
-  return largestFace > kLargestOffFaceImported ? objText : std::string();
+  if (largestFace > kLargestOffFaceImported) return {std::move(objText), "obj"};
+  return {std::move(offText), "off"};
 }
 
 void checkObjFaces(const std::string& path, const std::string& content) {

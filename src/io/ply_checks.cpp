@@ -246,45 +246,57 @@ void checkPlyBinaryBody(const std::string& path, const std::string& content, con
   }
 }
 
+// Each record on a line of its own holding its values and nothing else: the import
+// library reads a record per line, and one split over lines or sharing a line would
+// be read as other records than the checks saw (found by fuzzing: a vertex of two
+// values made it read the face as a vertex and crash).
 void checkPlyAsciiBody(const std::string& path, const std::string& content, const PlyHeader& header,
                        const PlyMeshLayout& layout) {
-  std::size_t at = header.bodyStart;
-  const auto nextWord = [&](std::string_view& word) {
-    while (at < content.size() && std::isspace(static_cast<unsigned char>(content[at]))) ++at;
-    const std::size_t start = at;
-    while (at < content.size() && !std::isspace(static_cast<unsigned char>(content[at]))) ++at;
-    if (at == start) throw InputError(path, "PLY file is truncated: it ends before the records its header promises");
-    word = std::string_view(content).substr(start, at - start);
-  };
-  std::string_view word;
-  const auto number = [&](const std::string& what) {
-    nextWord(word);
-    double value = 0;
-    if (!parseNumber(word, value)) throw InputError(path, "PLY " + what + ": '" + printable(word) + "' is not a number");
-    return value;
-  };
+  const std::string_view body = std::string_view(content).substr(header.bodyStart);
+  const std::size_t headerLines = static_cast<std::size_t>(
+      std::count(content.begin(), content.begin() + static_cast<std::ptrdiff_t>(header.bodyStart), '\n'));
+  Lines lines(body);
+  std::string_view line;
   for (std::size_t e = 0; e < header.elements.size(); ++e) {
     const PlyElement& element = header.elements[e];
     for (std::uint64_t record = 0; record < element.count; ++record) {
       const std::string what = printable(element.name) + " " + std::to_string(record);
+      if (!lines.next(line)) throw InputError(path, "PLY file is truncated: " + what + " is missing");
+      const std::string where = "PLY line " + std::to_string(headerLines + lines.number()) + ": " + what;
+      const std::vector<std::string_view> words = wordsOf(line);
+      std::size_t used = 0;
+      const auto number = [&] {
+        if (used == words.size()) {
+          throw InputError(path, where + " has fewer values than its properties (records are one per line)");
+        }
+        double value = 0;
+        if (!parseNumber(words[used], value)) {
+          throw InputError(path, where + ": '" + printable(words[used]) + "' is not a number");
+        }
+        ++used;
+        return value;
+      };
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
         const PlyProperty& property = element.properties[p];
         if (property.countSize == 0) {
-          number(what);
+          number();
           continue;
         }
-        const double count = number(what);
+        const double count = number();
         if (count != std::floor(count) || count < 0 || count > 1e9) {
-          throw InputError(path, "PLY " + what + ": list length is not a whole number");
+          throw InputError(path, where + ": list length is not a whole number");
         }
         const bool indices = e == layout.faceElement && p == layout.indexProperty;
         if (indices && count < 3) throw InputError(path, faceDefect(record, static_cast<std::int64_t>(count)));
         for (double i = 0; i < count; ++i) {
-          const double index = number(what);
+          const double index = number();
           if (indices && (index != std::floor(index) || index < 0 || index >= static_cast<double>(layout.vertices))) {
-            throw InputError(path, indexDefect(record, printable(word), layout.vertices));
+            throw InputError(path, indexDefect(record, printable(words[used - 1]), layout.vertices));
           }
         }
+      }
+      if (used != words.size()) {
+        throw InputError(path, where + " has more values than its properties (records are one per line)");
       }
     }
   }
