@@ -4,6 +4,7 @@
 // vertices and both of the cage's cells have boundary.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 #include <sstream>
 
@@ -53,4 +54,24 @@ TEST(BoundaryPly, VerticesLieOnTheFreeSpaceBoundary) {
     ASSERT_EQ(corners, 3u);
     ASSERT_LT(std::max({a, b, c}), vertexCount);
   }
+}
+
+// A scene of 1e-30 is exported in its own units: the theta axis is scaled by the
+// robot's reach as at ordinary size (not by a floor on it).
+TEST(BoundaryPly, ATinySceneKeepsItsReach) {
+  const LoadedProblem problem = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/cage.cfg");
+  const auto reachOf = [&](double factor) {
+    TriangleSoup robot{{}, problem.robot.triangles()}, world{{}, problem.world.triangles()};
+    for (const Point3& p : problem.robot.vertices()) robot.vertices.push_back(p * factor);
+    for (const Point3& p : problem.world.vertices()) world.vertices.push_back(p * factor);
+    const FreeSpace space(Mesh::fromSoup(robot, "robot"), Mesh::fromSoup(world, "world"));
+    std::stringstream ply;
+    writeBoundaryPly(space, {}, ply);
+    std::string line;
+    while (std::getline(ply, line) && line.rfind("comment", 0) != 0) {
+    }
+    return std::stod(line.substr(line.rfind(' ') + 1));
+  };
+  const double tiny = std::ldexp(1.0, -100);
+  EXPECT_NEAR(reachOf(tiny) / tiny, reachOf(1), 1e-9 * reachOf(1));
 }

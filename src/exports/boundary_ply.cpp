@@ -68,7 +68,8 @@ void writeBoundaryPly(const FreeSpace& space, const BoundaryPlyOptions& options,
   const Arrangement& arrangement = space.arrangement();
   // Written in the input's coordinates: the construction's are scaled (FreeSpace::meshes).
   const double scale = space.meshes().scale;
-  const double reach = std::max(farthestReach(space.meshes().robot) / scale, 1e-12);
+  // (A solid robot reaches beyond its centre; 1 guards a degenerate one.)
+  const double farthest = farthestReach(space.meshes().robot) / scale, reach = farthest > 0 ? farthest : 1;
   const Eigen::Vector2d worldSize = space.meshes().world.bounds().sizes().head<2>() / scale;
   const double tolerance = options.tolerance > 0 ? options.tolerance : 0.01 * worldSize.norm();
   // The end points run on circles of radius at most the robot's reach plus the
