@@ -191,6 +191,11 @@ TEST(MeshFileChecks, RecordsAreReadOnePerLine) {
             "PLY line 10: vertex 0 has fewer values than its properties (records are one per line)");
   EXPECT_EQ(problemOf(dir, "shared.ply", header + "0 0 0 1 0 0\n0 1 0\n0 0 1\n" + faces + "3 0 1 2\n"),
             "PLY line 10: vertex 0 has more values than its properties (records are one per line)");
+  // Numbers in the syntax the import library reads: it takes "+3" for 0.
+  EXPECT_EQ(problemOf(dir, "plus.ply", header + "0 0 0\n1 0 0\n0 1 0\n0 0 1\n+3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"),
+            "PLY line 14: face 0: '+3' is not a whole number");
+  EXPECT_EQ(problemOf(dir, "hex.off", "OFF\n4 4 0\n0x1p0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces),
+            "OFF line 3: vertex 0 is not three numbers");
   const std::string off = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n" + faces;
   const std::string spaced = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n \n \n3 0 1 3 # a comment\n"
                              "# a line of its own\n3 0 3 2\n\t\n3 1 2 3\n";

@@ -21,19 +21,60 @@ std::vector<std::string_view> wordsOf(std::string_view line) {
   return words;
 }
 
+namespace {
+
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+
+// How many digits `word` holds from `at` on, which is moved past them.
+std::size_t skipDigits(std::string_view word, std::size_t& at) {
+  const std::size_t start = at;
+  while (at < word.size() && isDigit(word[at])) ++at;
+  return at - start;
+}
+
+bool equalsIgnoringCase(std::string_view word, std::string_view expected) {
+  return word.size() == expected.size() &&
+         std::equal(word.begin(), word.end(), expected.begin(),
+                    [](char a, char b) { return std::tolower(static_cast<unsigned char>(a)) == b; });
+}
+
+// The decimal syntax the import library reads (and inf, infinity or nan): an optional
+// sign, digits with an optional point (at least one digit), an optional exponent. Forms
+// only strtod knows (hexadecimal, "nan(...)") would be read as other numbers than ours.
+bool isDecimal(std::string_view word) {
+  std::size_t at = word.empty() || (word[0] != '-' && word[0] != '+') ? 0 : 1;
+  const std::string_view rest = word.substr(at);
+  if (equalsIgnoringCase(rest, "inf") || equalsIgnoringCase(rest, "infinity") || equalsIgnoringCase(rest, "nan")) {
+    return true;
+  }
+  std::size_t digits = skipDigits(word, at);
+  if (at < word.size() && word[at] == '.') digits += skipDigits(word, ++at);
+  if (digits == 0) return false;
+  if (at < word.size() && (word[at] == 'e' || word[at] == 'E')) {
+    ++at;
+    if (at < word.size() && (word[at] == '-' || word[at] == '+')) ++at;
+    if (skipDigits(word, at) == 0) return false;
+  }
+  return at == word.size();
+}
+
+}  // namespace
+
 bool parseNumber(std::string_view word, double& value) {
+  if (!isDecimal(word)) return false;
   const std::string text(word);
-  char* end = nullptr;
-  value = std::strtod(text.c_str(), &end);
-  return !text.empty() && end == text.c_str() + text.size();
+  value = std::strtod(text.c_str(), nullptr);
+  return true;
 }
 
 bool parseWhole(std::string_view word, std::int64_t& value) {
+  // Digits with an optional minus sign only: the import library reads "+3" as 0.
+  std::size_t at = !word.empty() && word[0] == '-' ? 1 : 0;
+  if (skipDigits(word, at) == 0 || at != word.size()) return false;
   const std::string text(word);
-  char* end = nullptr;
   errno = 0;
-  value = std::strtoll(text.c_str(), &end, 10);
-  return !text.empty() && end == text.c_str() + text.size() && errno == 0;
+  value = std::strtoll(text.c_str(), nullptr, 10);
+  return errno == 0;
 }
 
 void requirePlainText(const std::string& path, std::string_view text, const std::string& format, bool ofLines) {

@@ -15,10 +15,12 @@ namespace freespace::detail {
 /// Splits a line into whitespace-separated words.
 std::vector<std::string_view> wordsOf(std::string_view line);
 
-/// Whether the whole word is a number (strtod's syntax), and its value.
+/// Whether the whole word is a number in the decimal syntax the import library reads
+/// (or inf, infinity, nan), and its value.
 bool parseNumber(std::string_view word, double& value);
 
-/// Whether the whole word is a whole number within 64 bits, and its value.
+/// Whether the whole word is a whole number within 64 bits (digits, an optional minus
+/// sign), and its value.
 bool parseWhole(std::string_view word, std::int64_t& value);
 
 /// The lines of a text, one at a time, with their numbers (from 1).

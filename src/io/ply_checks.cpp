@@ -265,15 +265,24 @@ void checkPlyAsciiBody(const std::string& path, const std::string& content, cons
       const std::string where = "PLY line " + std::to_string(headerLines + lines.number()) + ": " + what;
       const std::vector<std::string_view> words = wordsOf(line);
       std::size_t used = 0;
-      const auto number = [&] {
+      const auto next = [&] {
         if (used == words.size()) {
           throw InputError(path, where + " has fewer values than its properties (records are one per line)");
         }
+        return words[used++];
+      };
+      const auto number = [&] {
         double value = 0;
-        if (!parseNumber(words[used], value)) {
-          throw InputError(path, where + ": '" + printable(words[used]) + "' is not a number");
+        if (!parseNumber(next(), value)) {
+          throw InputError(path, where + ": '" + printable(words[used - 1]) + "' is not a number");
         }
-        ++used;
+      };
+      // Counts and indices in the digits the import library reads ("+3" it reads as 0).
+      const auto whole = [&] {
+        std::int64_t value = 0;
+        if (!parseWhole(next(), value)) {
+          throw InputError(path, where + ": '" + printable(words[used - 1]) + "' is not a whole number");
+        }
         return value;
       };
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
@@ -282,15 +291,20 @@ void checkPlyAsciiBody(const std::string& path, const std::string& content, cons
           number();
           continue;
         }
-        const double count = number();
-        if (count != std::floor(count) || count < 0 || count > 1e9) {
-          throw InputError(path, where + ": list length is not a whole number");
+        const std::int64_t count = whole();
+        if (count < 0 || static_cast<std::size_t>(count) > words.size() - used) {
+          throw InputError(path, where + ": list length " + std::to_string(count) + " but " +
+                                     std::to_string(words.size() - used) + " values follow on its line");
         }
         const bool indices = e == layout.faceElement && p == layout.indexProperty;
-        if (indices && count < 3) throw InputError(path, faceDefect(record, static_cast<std::int64_t>(count)));
-        for (double i = 0; i < count; ++i) {
-          const double index = number();
-          if (indices && (index != std::floor(index) || index < 0 || index >= static_cast<double>(layout.vertices))) {
+        if (indices && count < 3) throw InputError(path, faceDefect(record, count));
+        for (std::int64_t i = 0; i < count; ++i) {
+          if (!indices) {
+            number();
+            continue;
+          }
+          const std::int64_t index = whole();
+          if (index < 0 || static_cast<std::uint64_t>(index) >= layout.vertices) {
             throw InputError(path, indexDefect(record, printable(words[used - 1]), layout.vertices));
           }
         }
