@@ -30,7 +30,7 @@ double physicalMemoryBytes() {
 // that runs out of memory minutes later.
 void requireMemoryFor(std::size_t candidates, const FreeSpaceOptions& options) {
   const double limit = options.memoryLimitBytes > 0 ? options.memoryLimitBytes : physicalMemoryBytes();
-  const double needed = peakMemoryMegabytes() * 1e6 + kLeastBytesPerCandidate * static_cast<double>(candidates);
+  const double needed = peakMemoryMegabytes() * 1024 * 1024 + kLeastBytesPerCandidate * static_cast<double>(candidates);
   if (needed <= limit) return;
   std::ostringstream problem;
   problem.precision(3);
