@@ -24,6 +24,10 @@ else
   keepWork=no
 fi
 mkdir -p "$work"
+# The targets' input files, in memory where there is /dev/shm; removed on any exit.
+export FREESPACE_FUZZ_FILES
+FREESPACE_FUZZ_FILES=$(mktemp -d -p "$( [ -w /dev/shm ] && echo /dev/shm || echo /tmp )" freespace-fuzz.XXXXXX)
+trap 'rm -rf "$FREESPACE_FUZZ_FILES"' EXIT
 cmake -S tests/fuzz -B "$work/build" -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DFREESPACE_BUILD_DIR="$PWD/build" > "$work/configure.log"
 cmake --build "$work/build" -j"$(nproc)" > "$work/build.log"
