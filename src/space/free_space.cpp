@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -21,6 +22,16 @@ namespace {
 // triangles, more where patches cross often): 2 kB each is a lower bound.
 constexpr double kLeastBytesPerCandidate = 2048;
 
+// The memory the process holds now (its resident set, /proc/self/statm), in bytes;
+// 0 where that cannot be read (the estimate stays a lower bound). Not the peak so
+// far: loading may have held more than it keeps.
+double residentBytes() {
+  std::ifstream statm("/proc/self/statm");
+  double pages = 0, resident = 0;
+  if (!(statm >> pages >> resident)) return 0;
+  return resident * static_cast<double>(sysconf(_SC_PAGE_SIZE));
+}
+
 double physicalMemoryBytes() {
   return static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
 }
@@ -30,7 +41,7 @@ double physicalMemoryBytes() {
 // that runs out of memory minutes later.
 void requireMemoryFor(std::size_t candidates, const FreeSpaceOptions& options) {
   const double limit = options.memoryLimitBytes > 0 ? options.memoryLimitBytes : physicalMemoryBytes();
-  const double needed = peakMemoryMegabytes() * 1024 * 1024 + kLeastBytesPerCandidate * static_cast<double>(candidates);
+  const double needed = residentBytes() + kLeastBytesPerCandidate * static_cast<double>(candidates);
   if (needed <= limit) return;
   std::ostringstream problem;
   problem.precision(3);
