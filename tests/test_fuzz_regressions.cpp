@@ -5,9 +5,8 @@
 
 #include <filesystem>
 
-#include <boost/crc.hpp>
-
 #include "command_runner.h"
+#include "fuzz/saved_space_file.h"
 
 using freespace::testing::CommandResult;
 using freespace::testing::runFreespace;
@@ -20,13 +19,8 @@ namespace {
 // The saved-space target's input is a payload (tests/fuzz/fuzz_saved_space.cpp): the
 // file it stands for, with the header line, the length and a valid CRC-32.
 std::string savedSpaceOf(const fs::path& payloadFile, const TempDir& dir) {
-  const std::string payload = freespace::testing::readWholeFile(payloadFile.string());
-  boost::crc_32_type crc;
-  crc.process_bytes(payload.data(), payload.size());
-  std::string file = "freespace saved free space, format 2\n";
-  for (int i = 0; i < 8; ++i) file.push_back(static_cast<char>((std::uint64_t(payload.size()) >> (8 * i)) & 0xff));
-  for (int i = 0; i < 4; ++i) file.push_back(static_cast<char>((crc.checksum() >> (8 * i)) & 0xff));
-  return dir.write(payloadFile.filename().string() + ".fspace", file + payload);
+  return dir.write(payloadFile.filename().string() + ".fspace",
+                   savedSpaceFileAround(freespace::testing::readWholeFile(payloadFile.string())));
 }
 
 }  // namespace

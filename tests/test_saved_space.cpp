@@ -4,7 +4,6 @@
 // truncated, altered, or already present are clear errors naming the file.
 #include <gtest/gtest.h>
 
-#include <boost/crc.hpp>
 #include <chrono>
 #include <fstream>
 #include <random>
@@ -13,6 +12,7 @@
 #include "freespace/input_error.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/space/free_space.h"
+#include "fuzz/saved_space_file.h"
 #include "temp_dir.h"
 
 using namespace freespace;
@@ -48,14 +48,6 @@ std::string loadError(const std::string& path) {
   }
   ADD_FAILURE() << "loaded " << path;
   return {};
-}
-
-/// The payload with a valid CRC-32 (little-endian, after the 8-byte size).
-std::string withValidChecksum(std::string bytes, std::size_t payloadStart) {
-  boost::crc_32_type crc;
-  crc.process_bytes(bytes.data() + payloadStart, bytes.size() - payloadStart);
-  for (int i = 0; i < 4; ++i) bytes[payloadStart - 4 + i] = static_cast<char>((crc.checksum() >> (8 * i)) & 0xff);
-  return bytes;
 }
 
 std::size_t payloadStartOf(const std::string& bytes) { return bytes.find('\n') + 1 + 12; }  // header line, size, CRC-32
@@ -159,7 +151,7 @@ TEST(SavedSpace, AlteredPayloadsWithAValidChecksumLoadOrFailCleanly) {
     std::string altered = bytes;
     for (int flip = 0; flip < 4; ++flip) altered[position(random)] ^= static_cast<char>(1 + trial % 255);
     const std::string other = dir.file("altered.fspace");
-    write(other, withValidChecksum(altered, payloadStart));
+    write(other, savedSpaceFileAround(altered.substr(payloadStart)));
     try {
       FreeSpace::load(other);
       ++loaded;
@@ -184,7 +176,7 @@ TEST(SavedSpace, AHugeTextLengthIsAClearErrorWithoutAllocating) {
   std::string altered = bytes;
   putUint64(altered, at, std::uint64_t(1) << 34);
   const std::string other = dir.file("huge.fspace");
-  write(other, withValidChecksum(altered, payloadStart));
+  write(other, savedSpaceFileAround(altered.substr(payloadStart)));
   const auto start = std::chrono::steady_clock::now();
   EXPECT_NE(loadError(other).find("longer than the rest of the file"), std::string::npos);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -207,7 +199,7 @@ TEST(SavedSpace, AlteredLengthsAreRefusedWithPlainMessages) {
     if (value == 0 || value > 100000) continue;
     std::string changed = bytes;
     putUint64(changed, at, value + (std::uint64_t(1) << 26));
-    write(other, withValidChecksum(changed, payloadStart));
+    write(other, savedSpaceFileAround(changed.substr(payloadStart)));
     ++altered;
     try {
       FreeSpace::load(other);
