@@ -158,19 +158,17 @@ Point3 averageOf(const std::vector<Point3>& vertices) {
 // The file's triangles and, `withCentre`, the average of its vertices as imported.
 ImportedMesh importMeshFile(const std::string& path, bool withCentre) {
   std::ifstream file = openNonEmptyFile(path);
-  const std::string extension = std::filesystem::path(path).extension().string();
   const std::string format = detail::lowercaseExtension(path);
-  if (format == ".vtk" || isAssimpFormat(format)) {
-    std::string content{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
-    if (format != ".vtk") return importWithAssimp(path, checkedForImport(path, format, std::move(content)), withCentre);
-    ImportedMesh imported{readLegacyVtk(path, content), Point3::Zero()};
-    if (withCentre) imported.vertexAverage = averageOf(imported.soup.vertices);
-    return imported;
+  if (format != ".vtk" && !isAssimpFormat(format)) {
+    const std::string extension = std::filesystem::path(path).extension().string();
+    const std::string found = extension.empty() ? ": the file name has no extension" : " '" + extension + "'";
+    throw InputError(path, "unsupported mesh format" + found + " (expected obj, stl, ply, off, dae or vtk)");
   }
-  const std::string found = extension.empty() ? ": the file name has no extension"
-                                              : " '" + extension + "'";
-  throw InputError(path, "unsupported mesh format" + found +
-                             " (expected obj, stl, ply, off, dae or vtk)");
+  std::string content{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+  if (format != ".vtk") return importWithAssimp(path, checkedForImport(path, format, std::move(content)), withCentre);
+  ImportedMesh imported{readLegacyVtk(path, content), Point3::Zero()};
+  if (withCentre) imported.vertexAverage = averageOf(imported.soup.vertices);
+  return imported;
 }
 
 }  // namespace
