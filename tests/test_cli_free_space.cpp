@@ -83,9 +83,12 @@ StoppedBuild buildStoppedBy(const std::string& signal) {
   // second to load and check, and seconds to build.
   EXPECT_EQ(runFreespace("generate --out '" + dir.file("scene") + "' --scene tetra_floorplan_1024").status, 0);
   const auto start = std::chrono::steady_clock::now();
-  const std::string command = "timeout --preserve-status -s " + signal + " 1.5 '" + FREESPACE_CLI + "' build --cfg '" +
-                              dir.file("scene/tetra_floorplan_1024.cfg") + "' >'" + dir.file("out") + "' 2>'" +
-                              dir.file("err") + "'";
+  // --foreground: one signal, to the tool alone. Otherwise timeout sends it to its
+  // process group as well, the tool gets it twice, and a second signal means "stop
+  // now" (an exit without the message) when the first has not yet been handled.
+  const std::string command = "timeout --foreground --preserve-status -s " + signal + " 1.5 '" + FREESPACE_CLI +
+                              "' build --cfg '" + dir.file("scene/tetra_floorplan_1024.cfg") + "' >'" +
+                              dir.file("out") + "' 2>'" + dir.file("err") + "'";
   const int raw = std::system(command.c_str());
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, readWholeFile(dir.file("err")), seconds};
