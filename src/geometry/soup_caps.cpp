@@ -25,6 +25,7 @@
 #include <CGAL/Projection_traits_yz_3.h>
 
 #include "soup_complex.h"
+#include "triangle_box_tree.h"
 
 namespace freespace::detail {
 
@@ -147,17 +148,27 @@ class PlaneRegions {
                const std::unordered_map<EdgeKey, Index>& uses, const Plane& plane, double tolerance)
       : vertices_(vertices) {
     const auto inPlane = [&](Index v) { return plane.holds(vertices[v], tolerance); };
+    std::vector<TreeEntry> openEdgeBoxes;
     for (const auto& [key, count] : uses) {
       if (!inPlane(edgeLow(key)) || !inPlane(edgeHigh(key))) continue;
       const ExactPoint low = exactPoint(vertices[edgeLow(key)]), high = exactPoint(vertices[edgeHigh(key)]);
       triangulation_.insert_constraint(low, high);
-      if (count == 1) openEdges_.emplace_back(low, high);
+      if (count == 1) {
+        openEdgeBoxes.emplace_back(triangleBox(vertices, {edgeLow(key), edgeHigh(key), edgeHigh(key)}),
+                                   static_cast<Index>(openEdges_.size()));
+        openEdges_.emplace_back(low, high);
+      }
       pointIndex_.emplace(low, edgeLow(key));
       pointIndex_.emplace(high, edgeHigh(key));
     }
+    openEdgeTree_ = TriangleTree(openEdgeBoxes.begin(), openEdgeBoxes.end());
+    std::vector<TreeEntry> coveringBoxes;
     for (const TriangleIndices& triangle : triangles) {
-      if (inPlane(triangle[0]) && inPlane(triangle[1]) && inPlane(triangle[2])) covering_.push_back(triangle);
+      if (!inPlane(triangle[0]) || !inPlane(triangle[1]) || !inPlane(triangle[2])) continue;
+      coveringBoxes.emplace_back(triangleBox(vertices, triangle), static_cast<Index>(covering_.size()));
+      covering_.push_back(triangle);
     }
+    coveringTree_ = TriangleTree(coveringBoxes.begin(), coveringBoxes.end());
   }
 
   void appendCaps(NewPoints& newPoints, std::vector<TriangleIndices>& caps) {
@@ -208,21 +219,38 @@ class PlaneRegions {
     return region;
   }
 
+  // A box around exact points that holds them for certain: the boxes of triangles and
+  // edges are exact (they come from input doubles), so those that may hold the points
+  // all meet it.
+  static TreeBox boxAround(std::initializer_list<const ExactPoint*> points) {
+    CGAL::Bbox_3 box;
+    for (const ExactPoint* point : points) box += point->bbox();
+    return {TreePoint(box.xmin(), box.ymin(), box.zmin()), TreePoint(box.xmax(), box.ymax(), box.zmax())};
+  }
+
   // A constrained edge lies along one of the piece's edges, or a part of one.
   bool isOpenEdge(Face face, int i) const {
     const ExactPoint& p = face->vertex(Triangulation::ccw(i))->point();
     const ExactPoint& q = face->vertex(Triangulation::cw(i))->point();
-    return std::any_of(openEdges_.begin(), openEdges_.end(), [&](const auto& edge) {
-      return CGAL::collinear(edge.first, edge.second, p) && CGAL::collinear(edge.first, edge.second, q) &&
-             CGAL::collinear_are_ordered_along_line(edge.first, p, edge.second) &&
-             CGAL::collinear_are_ordered_along_line(edge.first, q, edge.second);
+    std::vector<TreeEntry> near;
+    openEdgeTree_.query(bgi::intersects(boxAround({&p, &q})), std::back_inserter(near));
+    return std::any_of(near.begin(), near.end(), [&](const TreeEntry& entry) {
+      const auto& [first, second] = openEdges_[entry.second];
+      return CGAL::collinear(first, second, p) && CGAL::collinear(first, second, q) &&
+             CGAL::collinear_are_ordered_along_line(first, p, second) &&
+             CGAL::collinear_are_ordered_along_line(first, q, second);
     });
   }
 
+  // A region lies in no triangle's edge (they are all constraints), so it is covered
+  // when the centre of one of its faces lies inside a triangle of the plane.
   bool covered(Face face) const {
     const ExactPoint centre = CGAL::centroid(face->vertex(0)->point(), face->vertex(1)->point(), face->vertex(2)->point());
     const auto orientation = Traits().orientation_2_object();
-    return std::any_of(covering_.begin(), covering_.end(), [&](const TriangleIndices& triangle) {
+    std::vector<TreeEntry> near;
+    coveringTree_.query(bgi::intersects(boxAround({&centre})), std::back_inserter(near));
+    return std::any_of(near.begin(), near.end(), [&](const TreeEntry& entry) {
+      const TriangleIndices& triangle = covering_[entry.second];
       const ExactPoint a = exactPoint(vertices_[triangle[0]]), b = exactPoint(vertices_[triangle[1]]),
                        c = exactPoint(vertices_[triangle[2]]);
       const CGAL::Orientation turn = orientation(a, b, c);
@@ -246,8 +274,10 @@ class PlaneRegions {
   const std::vector<Point3>& vertices_;
   Triangulation triangulation_;
   std::vector<std::pair<ExactPoint, ExactPoint>> openEdges_;
+  TriangleTree openEdgeTree_;  // boxes of openEdges_
   std::map<ExactPoint, Index, LessXyz> pointIndex_;
   std::vector<TriangleIndices> covering_;
+  TriangleTree coveringTree_;  // boxes of covering_
 };
 
 // The axis to drop so that the plane's projection keeps its area.

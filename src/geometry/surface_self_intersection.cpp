@@ -36,6 +36,12 @@ constexpr double kEpsilon = 0x1p-53;
 constexpr double kOrient2dError = (3 + 16 * kEpsilon) * kEpsilon;
 constexpr double kOrient3dError = (7 + 56 * kEpsilon) * kEpsilon;
 
+/// Whether x * y - z * w of exact numbers is zero because each product has a zero
+/// factor (a difference of doubles rounds to zero only when it is zero, so the
+/// rounded differences answer for the exact ones). Points on axis-aligned walls are
+/// decided here, without the slower stages.
+bool productsVanish(double x, double y, double z, double w) { return (x == 0 || y == 0) && (z == 0 || w == 0); }
+
 /// Exact signs of the determinants of ClosedTriangleTests on mesh vertices: the
 /// orientations filtered in doubles first (the caller rounds to nearest), every sign
 /// then at rising precision.
@@ -53,6 +59,11 @@ class VertexPredicates {
                              std::abs(b0.y()) * (std::abs(m3) + std::abs(m4)) +
                              std::abs(b0.z()) * (std::abs(m5) + std::abs(m6));
     if (const auto sign = certainInDoubles(determinant, permanent, kOrient3dError)) return *sign;
+    if ((b0.x() == 0 || productsVanish(c0.y(), d0.z(), c0.z(), d0.y())) &&
+        (b0.y() == 0 || productsVanish(c0.x(), d0.z(), c0.z(), d0.x())) &&
+        (b0.z() == 0 || productsVanish(c0.x(), d0.y(), c0.y(), d0.x()))) {
+      return Sign::Zero;
+    }
     return decide([&](auto point) { return orient3dDeterminant(point(a), point(b), point(c), point(d)); });
   }
   Sign orient2d(std::uint32_t a, std::uint32_t b, std::uint32_t c, int droppedAxis) {
@@ -62,6 +73,7 @@ class VertexPredicates {
     if (const auto sign = certainInDoubles(left - right, std::abs(left) + std::abs(right), kOrient2dError)) {
       return *sign;
     }
+    if (productsVanish(b0[u], c0[v], b0[v], c0[u])) return Sign::Zero;
     return decide([&](auto point) { return orient2dDeterminant(point(a), point(b), point(c), droppedAxis); });
   }
   Sign between(std::uint32_t a, std::uint32_t b, std::uint32_t c, int droppedAxis) {
