@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -61,6 +62,40 @@ TEST(CliFreeSpace, LocateSeparatesTheNarrowKeyholesStartAndGoal) {
     ASSERT_TRUE(answers[0]["free"].get<bool>() && answers[1]["free"].get<bool>());
     EXPECT_EQ(answers[0]["cell"] == answers[1]["cell"], solvable) << cfg;
   }
+}
+
+// Clearance on the keyhole: free or blocked as the exact test (check) says, positive
+// exactly when free, certified to 1e-12 relative, with its contact; the start can
+// slide 1.5 south before its edge meets the frame (less the perturbation).
+TEST(CliFreeSpace, ClearanceIsSignedByTheExactTestAndNamesItsContact) {
+  TempDir dir;
+  std::ofstream(dir.file("batch.txt")) << "0 -2.25 0\n0 0 0\n3 3 0.5\n-1 0 2\n";
+  const std::string batch = " --batch '" + dir.file("batch.txt") + "'";
+  const CommandResult cleared = runFreespace("clearance --json --cfg '" + kProblems + "keyhole.cfg'" + batch);
+  ASSERT_EQ(cleared.status, 0) << cleared.err;
+  const CommandResult checked = runFreespace("check --json --cfg '" + kProblems + "keyhole.cfg'" + batch);
+  ASSERT_EQ(checked.status, 0) << checked.err;
+  const std::vector<nlohmann::json> answers = jsonLines(cleared.out), exact = jsonLines(checked.out);
+  ASSERT_EQ(answers.size(), 4u);
+  for (std::size_t i = 0; i < answers.size(); ++i) {
+    EXPECT_EQ(answers[i]["free"], exact[i]["exact_free"]) << i;
+    const double lower = answers[i]["clearance_lower"], upper = answers[i]["clearance_upper"];
+    EXPECT_LE(lower, upper) << i;
+    EXPECT_EQ(lower > 0, answers[i]["free"].get<bool>()) << i;
+    EXPECT_LE(upper - lower, 1e-12 * std::abs(upper)) << i;
+    EXPECT_TRUE(answers[i].contains("clearance")) << i;
+    EXPECT_TRUE(answers[i]["contact"].contains("kind")) << i;
+  }
+  const CommandResult text = runFreespace("clearance --cfg '" + kProblems + "keyhole.cfg' --at 0 -2.25 0");
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("free, cell 1, clearance 1.49999"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("certified in ["), std::string::npos) << text.out;
+}
+
+TEST(CliFreeSpace, ClearanceRefusesABadConfiguration) {
+  const CommandResult result = runFreespace("clearance --cfg '" + kProblems + "keyhole.cfg' --at 0 nan 0");
+  EXPECT_EQ(result.status, 2);
+  EXPECT_NE(result.err.find("--at"), std::string::npos) << result.err;
 }
 
 TEST(CliFreeSpace, LocateWithoutConfigurationsIsAnError) {

@@ -15,5 +15,6 @@ void addLocateCommand(CLI::App& app);
 void addSliceCommand(CLI::App& app);
 void addExportCommand(CLI::App& app);
 void addRepairCommand(CLI::App& app);
+void addClearanceCommand(CLI::App& app);
 
 }  // namespace freespace::cli

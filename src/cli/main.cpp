@@ -29,6 +29,7 @@ int run(int argc, char** argv) {
   freespace::cli::addGenerateCommand(app);
   freespace::cli::addBuildCommand(app);
   freespace::cli::addLocateCommand(app);
+  freespace::cli::addClearanceCommand(app);
   freespace::cli::addSliceCommand(app);
   freespace::cli::addExportCommand(app);
   freespace::cli::addRepairCommand(app);

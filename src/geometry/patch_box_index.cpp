@@ -134,6 +134,24 @@ std::vector<std::uint32_t> PatchBoxIndex::meeting(const PatchBox& query) const {
   return patches;
 }
 
+std::vector<std::uint32_t> PatchBoxIndex::meetingAt(double theta, const std::array<double, 2>& low,
+                                                   const std::array<double, 2>& high) const {
+  constexpr double kAnglePad = 1e-9;
+  const double reduced = std::remainder(theta, 2 * M_PI);
+  PatchBox query{{low[0], low[1], 0}, {high[0], high[1], 0}};
+  std::vector<std::uint32_t> patches;
+  for (const double at : {reduced, reduced - 2 * M_PI, reduced + 2 * M_PI}) {
+    if (at < -M_PI - kAnglePad || at > M_PI + kAnglePad) continue;
+    query.low[2] = at - kAnglePad;
+    query.high[2] = at + kAnglePad;
+    const std::vector<std::uint32_t> found = meeting(query);
+    patches.insert(patches.end(), found.begin(), found.end());
+  }
+  std::sort(patches.begin(), patches.end());
+  patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
+  return patches;
+}
+
 namespace {
 
 /// A cell a box covers; sorted by cell, then by the box's lowest angle.

@@ -3,6 +3,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -105,6 +106,31 @@ Location FreeSpace::locate(const Pose2& pose) const {
     if (hit.kind != RayHit::Kind::Degenerate) return impl_->locationOf(hit);
   }
   throw std::runtime_error("FreeSpace::locate: both rays from the configuration pass through vertices of its slice");
+}
+
+Clearance FreeSpace::clearance(const Pose2& pose) const {
+  Clearance result;
+  result.location = locate(pose);
+  const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
+  const double scale = impl_->meshes.scale;
+  const Rational x = Rational(pose.x) * Rational(scale), y = Rational(pose.y) * Rational(scale);
+  const std::optional<BoundaryDistance> found = impl_->boundary->nearest(at, {x, y});
+  if (!found) {
+    const double unbounded = result.location.free ? HUGE_VAL : -HUGE_VAL;
+    result.lower = result.upper = unbounded;
+    return result;
+  }
+  // Back in the input's units: dividing by a power of two keeps the bounds exact.
+  const double low = found->distance.lower() / scale, high = found->distance.upper() / scale;
+  result.lower = result.location.free ? low : -high;
+  result.upper = result.location.free ? high : -low;
+  result.nearest = {found->nearest[0] / scale, found->nearest[1] / scale};
+  const double dx = result.nearest[0] - pose.x, dy = result.nearest[1] - pose.y, norm = std::hypot(dx, dy);
+  if (high > 0 && norm > 0) result.direction = {dx / norm, dy / norm};
+  const PatchGeometry& patch = impl_->arrangement.patches[found->face.patch];
+  result.contact = patch.patch.contact;
+  result.contactVertices = patch.line.vertices;
+  return result;
 }
 
 std::size_t FreeSpace::cellCount() const { return impl_->cells->count(); }

@@ -8,6 +8,7 @@
 #include "freespace/collision/exact_collision_checker.h"
 #include "freespace/space/free_space.h"
 #include "freespace/topology/free_cells.h"
+#include "freespace/topology/slice_boundary_distance.h"
 
 namespace freespace {
 
@@ -18,6 +19,7 @@ struct FreeSpace::Impl {
   PerturbedMeshes meshes;
   Arrangement arrangement;
   std::unique_ptr<SliceRays> rays;
+  std::unique_ptr<SliceBoundaryDistance> boundary;
   std::unique_ptr<ExactCollisionChecker> collision;
   std::vector<ShellSide> sides;
   std::unique_ptr<FreeCells> cells;
@@ -26,9 +28,13 @@ struct FreeSpace::Impl {
   Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options);
   /// Empty: its parts are set by the reader of a saved free space, then finish().
   Impl() = default;
-  /// The rays and the collision test over the parts.
+  /// The rays, the boundary distances and the collision test over the parts (the
+  /// distances ask `cells`, set after this).
   void finish() {
     rays = std::make_unique<SliceRays>(arrangement, algebra);
+    boundary = std::make_unique<SliceBoundaryDistance>(arrangement, algebra, [this](SubFaceId face) {
+      return cells->cellOfShell(arrangement.shells.shellOf(face)).has_value();
+    });
     collision = std::make_unique<ExactCollisionChecker>(meshes.robot, meshes.world);
   }
 

@@ -15,9 +15,6 @@ namespace {
 
 using slices::Point;
 
-/// Padding of a query's angle: far more than the error of a rational angle's radians.
-constexpr double kAnglePad = 1e-9;
-
 /// A candidate met by the ray: the patch, where along the ray (signed distance
 /// from the start) and where along its segment.
 struct Crossing {
@@ -103,29 +100,17 @@ struct SliceRays::Impl {
   /// far beyond the rounding of the query's doubles (see patchBoxes).
   std::vector<std::uint32_t> candidates(const AlgebraicAngle& angle, const Point& from, const Point& direction,
                                         std::optional<double> reach) const {
-    const double theta = std::remainder(angle.radians(), 2 * M_PI);
     const double huge = std::numeric_limits<double>::max();
-    PatchBox query{};
+    std::array<double, 2> low{}, high{};
     for (int axis = 0; axis < 2; ++axis) {
       const double start = from[axis].convert_to<double>(), step = direction[axis].convert_to<double>();
       const double pad = 1e-9 * (1 + std::fabs(start) + std::fabs(step) * reach.value_or(0));
       const double end = reach ? start + *reach * step
                                : (direction[axis] > 0 ? huge : (direction[axis] < 0 ? -huge : start));
-      query.low[axis] = std::min(start, end) - pad;
-      query.high[axis] = std::max(start, end) + pad;
+      low[axis] = std::min(start, end) - pad;
+      high[axis] = std::max(start, end) + pad;
     }
-    std::vector<std::uint32_t> patches;
-    // Boxes stop at theta = +-pi: near it, look on both sides.
-    for (const double at : {theta, theta - 2 * M_PI, theta + 2 * M_PI}) {
-      if (at < -M_PI - kAnglePad || at > M_PI + kAnglePad) continue;
-      query.low[2] = at - kAnglePad;
-      query.high[2] = at + kAnglePad;
-      const std::vector<std::uint32_t> found = index.meeting(query);
-      patches.insert(patches.end(), found.begin(), found.end());
-    }
-    std::sort(patches.begin(), patches.end());
-    patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
-    return patches;
+    return index.meetingAt(angle.radians(), low, high);
   }
 
   /// Where the ray from + s direction (s >= 0, and s <= 1 when bounded) meets the

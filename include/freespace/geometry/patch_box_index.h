@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <memory>
@@ -25,6 +26,12 @@ class PatchBoxIndex {
 
   /// Each patch with a box that meets the query box, once, in increasing order.
   std::vector<std::uint32_t> meeting(const PatchBox& query) const;
+  /// Each patch with a box that meets the (x, y) box from `low` to `high` at the
+  /// angle `theta` (any radians, padded by far more than the error of a rational
+  /// angle's radians), once, in increasing order: boxes stop at theta = +-pi, so near
+  /// it both sides are looked at.
+  std::vector<std::uint32_t> meetingAt(double theta, const std::array<double, 2>& low,
+                                       const std::array<double, 2>& high) const;
   /// Every pair of patches (the smaller index first) with boxes that meet, once, in
   /// increasing order.
   std::vector<std::pair<std::uint32_t, std::uint32_t>> meetingPairs(const Cancellation& cancellation = {}) const;

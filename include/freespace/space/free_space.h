@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -39,6 +40,25 @@ struct Location {
   std::uint32_t cell = 0;
 };
 
+/// The clearance of a configuration (docs/design.md section 7): how far the robot can
+/// slide horizontally, in any direction, before it touches the environment; for a
+/// blocked configuration minus the shortest horizontal slide that frees it.
+struct Clearance {
+  Location location;
+  /// The clearance lies in [lower, upper] (certified); 0 when touching; both
+  /// infinite when nothing can be touched at the configuration's angle.
+  double lower = 0, upper = 0;
+  /// The witness: the contact met by sliding the robot by |clearance| along
+  /// `direction` (a unit vector; zero when touching), to (x, y) = `nearest`: its
+  /// kind, its features (as in Contact) and their vertices (ContactPoints::vertices:
+  /// VF robot vertex, then the environment triangle's; FV environment vertex, then
+  /// the robot triangle's; EE the robot edge's two, then the environment edge's).
+  std::optional<Contact> contact;
+  std::array<std::uint32_t, 4> contactVertices{};
+  std::array<double, 2> direction{};
+  std::array<double, 2> nearest{};
+};
+
 /// The largest resident memory of this process so far, in megabytes (for the
 /// statistics of a construction).
 double peakMemoryMegabytes();
@@ -73,6 +93,11 @@ class FreeSpace {
   /// the input's coordinates (as every answer of this class but the internal
   /// structures arrangement() and meshes(), which are scaled by meshes().scale).
   Location locate(const Pose2& pose) const;
+
+  /// The clearance of a configuration, from the nearest point of the free space's
+  /// boundary in its slice (pieces of sub-faces that bound free cells), certified to
+  /// about 1e-13 relative (exact arithmetic where double intervals are wider).
+  Clearance clearance(const Pose2& pose) const;
 
   /// The number of free cells, the unbounded one included.
   std::size_t cellCount() const;

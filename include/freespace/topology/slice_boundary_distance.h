@@ -1,0 +1,54 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+
+#include "freespace/numbers/interval.h"
+#include "freespace/numbers/rational.h"
+#include "freespace/topology/arrangement.h"
+
+namespace freespace {
+
+/// The point of the free space's boundary nearest to a point of the slice at a fixed
+/// angle (docs/design.md section 7, clearance).
+struct BoundaryDistance {
+  /// The distance: the exact one lies in it.
+  Interval distance;
+  /// The sub-face whose piece of segment holds the nearest point (one of them when
+  /// several are equally near, within the interval's width).
+  SubFaceId face;
+  /// The nearest point, rounded to doubles.
+  std::array<double, 2> nearest{};
+};
+
+/// Distances from points of the slices of an arrangement at rational angles to the
+/// boundary of its free space there: the pieces of segments whose sub-faces bound a
+/// free cell. Candidates come from the R-tree of the patches' boxes, looked up near
+/// the point first, then farther; each piece's distance is bounded in double
+/// intervals, and found exactly (rationals, then a square root in intervals) for the
+/// pieces that may be nearest when the intervals leave the answer wider than asked.
+class SliceBoundaryDistance {
+ public:
+  /// `boundsFree` tells whether a sub-face bounds a free cell (on its positive side).
+  SliceBoundaryDistance(const Arrangement& arrangement, AngleAlgebra& algebra,
+                        std::function<bool(SubFaceId)> boundsFree);
+  ~SliceBoundaryDistance();
+  SliceBoundaryDistance(const SliceBoundaryDistance&) = delete;
+  SliceBoundaryDistance& operator=(const SliceBoundaryDistance&) = delete;
+
+  /// The nearest point of the boundary at a rational angle (AlgebraicAngle::isRational)
+  /// from `from`, with a distance interval whose width is at most `relativeWidth`
+  /// times its upper end where exact arithmetic can make it so; nothing when the
+  /// slice has no boundary.
+  std::optional<BoundaryDistance> nearest(const AlgebraicAngle& rationalAngle, const std::array<Rational, 2>& from,
+                                          double relativeWidth = 1e-13) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace freespace

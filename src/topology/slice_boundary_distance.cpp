@@ -1,0 +1,224 @@
+#include "freespace/topology/slice_boundary_distance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "freespace/geometry/patch_box_index.h"
+#include "freespace/topology/slice_pieces.h"
+#include "gluing_parts.h"
+
+namespace freespace {
+
+namespace {
+
+using slices::Point;
+using IntervalPoint = std::array<Interval, 2>;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// A piece of a patch's segment at the angle whose sub-face bounds free space: the
+/// gap `gap` between the curves of one of the patch's slabs there.
+struct BoundaryPiece {
+  std::uint32_t patch;
+  const PatchSlab* slab;
+  std::size_t gap;
+};
+
+/// A piece's distance from the point, bounded, and its point nearest to it (rounded).
+struct PieceDistance {
+  BoundaryPiece piece;
+  Interval distance;
+  std::array<double, 2> nearest;
+};
+
+Interval length(const Interval& x, const Interval& y) { return sqrt(x * x + y * y); }
+
+/// Bounds on the distance from `from` to the points e0 + lambda (e1 - e0) with lambda
+/// between `low` and `high`, two intervals holding the piece's ends (inside a
+/// RoundingScope). The lower bound comes from the piece's widest extent and the
+/// line's distance, the upper one from points certainly on the piece (a distance
+/// evaluated over an end's interval bounds the distance to the end from above).
+PieceDistance distanceToPiece(const BoundaryPiece& piece, const IntervalPoint& e0, const IntervalPoint& e1,
+                              const Interval& low, const Interval& high, const IntervalPoint& from) {
+  const Interval wx = e1[0] - e0[0], wy = e1[1] - e0[1], vx = from[0] - e0[0], vy = from[1] - e0[1];
+  const auto distanceAt = [&](const Interval& lambda) { return length(vx - lambda * wx, vy - lambda * wy); };
+  const Interval toLow = distanceAt(low), toHigh = distanceAt(high);
+  const Interval squaredLength = wx * wx + wy * wy;
+  double lower = 0, upper = std::min(toLow.upper(), toHigh.upper());
+  double nearestLambda = low.midpoint();
+  if (squaredLength.lower() > 0) {
+    const Interval foot = (vx * wx + vy * wy) / squaredLength;
+    const Interval cross = vx * wy - vy * wx;
+    const Interval toLine = sqrt(cross * cross / squaredLength);
+    if (foot.upper() < low.lower()) {
+      lower = toLow.lower();
+    } else if (foot.lower() > high.upper()) {
+      lower = toHigh.lower();
+    } else {
+      lower = toLine.lower();
+    }
+    if (foot.lower() >= low.upper() && foot.upper() <= high.lower()) upper = std::min(upper, toLine.upper());
+    nearestLambda = std::clamp(foot.midpoint(), low.midpoint(), std::max(low.midpoint(), high.midpoint()));
+  } else {
+    // A segment shrunk to (nearly) a point: every point of it is that near its end.
+    lower = std::min(toLow.lower(), toHigh.lower()) - sqrt(squaredLength).upper();
+  }
+  const std::array<double, 2> nearest{e0[0].midpoint() + nearestLambda * wx.midpoint(),
+                                      e0[1].midpoint() + nearestLambda * wy.midpoint()};
+  return {piece, Interval(std::max(lower, 0.0), upper), nearest};
+}
+
+/// Where the line of `other` crosses the segment, as lambda; nothing when it is
+/// parallel to it.
+std::optional<Rational> exactCrossing(const slices::ExactSegment& segment, const slices::ExactSegment& other) {
+  const Rational v0 = other.valueAt(segment.end0), v1 = other.valueAt(segment.end1);
+  if (v0 == v1) return std::nullopt;
+  return Rational(v0 / (v0 - v1));
+}
+
+/// The slabs of a patch whose gaps are the pieces of its segment at the angle: the
+/// slab holding it, or at one of the patch's events the slabs ending and starting
+/// there (the pieces at an event are limits of theirs).
+std::vector<const PatchSlab*> slabsAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle,
+                                      AngleAlgebra& algebra) {
+  if (const PatchSlab* slab = slabAt(subdivision, angle, algebra)) return {slab};
+  std::vector<const PatchSlab*> slabs;
+  for (const bool ending : {true, false}) {
+    if (const PatchSlab* slab = gluing::slabMeeting(subdivision, angle, ending, algebra)) slabs.push_back(slab);
+  }
+  return slabs;
+}
+
+}  // namespace
+
+struct SliceBoundaryDistance::Impl {
+  const Arrangement& arrangement;
+  AngleAlgebra& algebra;
+  std::function<bool(SubFaceId)> boundsFree;
+
+  /// The pieces of the boundary on patches whose boxes meet the square of half side
+  /// `reach` around `from`, with their distance bounds.
+  std::vector<PieceDistance> piecesWithin(const AlgebraicAngle& angle, const slices::IntervalSlice& slice,
+                                          const Point& from, const IntervalPoint& fromInterval, double reach) const {
+    std::array<double, 2> low{}, high{};
+    for (int axis = 0; axis < 2; ++axis) {
+      const double centre = from[axis].convert_to<double>();
+      const double pad = 1e-9 * (1 + std::fabs(centre) + reach);
+      low[axis] = std::isinf(reach) ? -std::numeric_limits<double>::max() : centre - reach - pad;
+      high[axis] = std::isinf(reach) ? std::numeric_limits<double>::max() : centre + reach + pad;
+    }
+    std::vector<PieceDistance> pieces;
+    for (std::uint32_t patch : arrangement.boxIndex->meetingAt(angle.radians(), low, high)) {
+      const PatchGeometry& geometry = arrangement.patches[patch];
+      if (!algebra.contains(geometry.patch.range, angle)) continue;
+      for (const PatchSlab* slab : slabsAt(arrangement.subdivisions[patch], angle, algebra)) {
+        for (std::size_t gap = 0; gap < slab->faces.size(); ++gap) {
+          if (!boundsFree({patch, slab->faces[gap]})) continue;
+          const RoundingScope rounding;
+          // An end that the intervals cannot place: the whole segment bounds the piece from outside.
+          const auto ends = slice.pieceOf(arrangement, patch, *slab, gap);
+          PieceDistance found = distanceToPiece({patch, slab, gap}, slice.end(geometry, 0), slice.end(geometry, 1),
+                                                ends ? ends->first : Interval(0), ends ? ends->second : Interval(1),
+                                                fromInterval);
+          if (!ends) found.distance = Interval(found.distance.lower(), kInfinity);
+          pieces.push_back(found);
+        }
+      }
+    }
+    return pieces;
+  }
+
+  /// The piece's distance exactly (enclosed in a narrow interval); nothing when an
+  /// end of the piece is a crossing with a line parallel to the segment.
+  std::optional<Interval> exactDistance(const PieceDistance& found, const AlgebraicAngle& angle,
+                                        const Point& from) const {
+    const auto [cosine, sine] = exactCosSin(angle);
+    const std::uint32_t patch = found.piece.patch;
+    const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[patch], cosine, sine);
+    const std::vector<std::uint32_t>& curves = found.piece.slab->curves;
+    const auto lambdaOf = [&](std::uint32_t curve) {
+      const std::uint32_t other = arrangement.curves[curve].other(patch);
+      return exactCrossing(segment, slices::segmentAt(arrangement.patches[other], cosine, sine));
+    };
+    const std::size_t gap = found.piece.gap;
+    const std::optional<Rational> low = gap == 0 ? Rational(0) : lambdaOf(curves[gap - 1]);
+    const std::optional<Rational> high = gap == curves.size() ? Rational(1) : lambdaOf(curves[gap]);
+    if (!low || !high) return std::nullopt;
+    const Rational wx = segment.end1[0] - segment.end0[0], wy = segment.end1[1] - segment.end0[1];
+    const Rational vx = from[0] - segment.end0[0], vy = from[1] - segment.end0[1];
+    const Rational squaredLength = wx * wx + wy * wy;
+    Rational lambda = *low;
+    if (squaredLength != 0) lambda = std::max(*low, std::min(Rational((vx * wx + vy * wy) / squaredLength), *high));
+    const Rational dx = vx - lambda * wx, dy = vy - lambda * wy;
+    const Rational squaredDistance = dx * dx + dy * dy;
+    const RoundingScope rounding;
+    return sqrt(enclosingInterval(squaredDistance));
+  }
+
+  /// The nearest of the pieces that may be nearest, exactly where the intervals are
+  /// wider than asked.
+  BoundaryDistance nearestOf(std::vector<PieceDistance> pieces, const AlgebraicAngle& angle, const Point& from,
+                             double relativeWidth) const {
+    const auto byUpper = [](const PieceDistance& a, const PieceDistance& b) {
+      return a.distance.upper() < b.distance.upper();
+    };
+    const auto lowest = [&] {
+      double lower = kInfinity;
+      const double best = std::min_element(pieces.begin(), pieces.end(), byUpper)->distance.upper();
+      for (const PieceDistance& piece : pieces) {
+        if (piece.distance.lower() <= best) lower = std::min(lower, piece.distance.lower());
+      }
+      return lower;
+    };
+    const double best = std::min_element(pieces.begin(), pieces.end(), byUpper)->distance.upper();
+    if (std::isinf(best) || best - lowest() > relativeWidth * best) {
+      for (PieceDistance& piece : pieces) {
+        if (piece.distance.lower() > best) continue;
+        if (const std::optional<Interval> exact = exactDistance(piece, angle, from)) piece.distance = *exact;
+      }
+    }
+    const PieceDistance& nearest = *std::min_element(pieces.begin(), pieces.end(), byUpper);
+    const PatchSlab& slab = *nearest.piece.slab;
+    return {Interval(lowest(), nearest.distance.upper()), {nearest.piece.patch, slab.faces[nearest.piece.gap]},
+            nearest.nearest};
+  }
+};
+
+SliceBoundaryDistance::SliceBoundaryDistance(const Arrangement& arrangement, AngleAlgebra& algebra,
+                                             std::function<bool(SubFaceId)> boundsFree)
+    : impl_(std::make_unique<Impl>(Impl{arrangement, algebra, std::move(boundsFree)})) {}
+
+SliceBoundaryDistance::~SliceBoundaryDistance() = default;
+
+/// Looks near the point first (like the rays of SliceRays: twice a typical box's
+/// width, then four times as far each time): once a piece is certainly within the
+/// reach, every piece nearer has a box meeting the reach's square.
+std::optional<BoundaryDistance> SliceBoundaryDistance::nearest(const AlgebraicAngle& rationalAngle, const Point& from,
+                                                               double relativeWidth) const {
+  if (!rationalAngle.isRational()) {
+    throw std::invalid_argument("SliceBoundaryDistance::nearest: the angle must be rational");
+  }
+  std::optional<slices::IntervalSlice> slice;
+  IntervalPoint fromInterval;
+  {
+    const RoundingScope rounding;
+    slice.emplace(rationalAngle);
+    fromInterval = {enclosingInterval(from[0]), enclosingInterval(from[1])};
+  }
+  const PatchBoxIndex::Scales& scales = impl_->arrangement.boxIndex->scales();
+  std::vector<PieceDistance> pieces;
+  for (double reach = std::max(2 * scales.typicalWidth, scales.side / 1024);; reach *= 4) {
+    if (reach >= 4 * scales.side) reach = kInfinity;
+    pieces = impl_->piecesWithin(rationalAngle, *slice, from, fromInterval, reach);
+    if (std::any_of(pieces.begin(), pieces.end(), [&](const PieceDistance& p) { return p.distance.upper() <= reach; })) {
+      break;
+    }
+    if (std::isinf(reach)) break;
+  }
+  if (pieces.empty()) return std::nullopt;
+  return impl_->nearestOf(std::move(pieces), rationalAngle, from, relativeWidth);
+}
+
+}  // namespace freespace
