@@ -61,10 +61,15 @@ inline ClearanceCheck clearanceAgainstCollision(const FreeSpace& space, int samp
     check.keepsStateTooClose += !kept;
     const double beyond = upper * (1 + kRelative);
     bool changes = !keepsState(pose.x + beyond * clearance.direction[0], pose.y + beyond * clearance.direction[1]);
+    // Around a corner of the slice the other state may be a thin wedge (measured: 3
+    // degrees, and 0.1 degree, at corners of random_polyhedra): more points on the
+    // circle when fewer find nothing.
     const double nx = clearance.nearest[0] * scale, ny = clearance.nearest[1] * scale;
-    for (int k = 0; k < kDirections && !changes; ++k) {
-      const double angle = 2 * M_PI * k / kDirections, radius = kRelative * upper / 2;
-      changes = !keepsState(nx + radius * std::cos(angle), ny + radius * std::sin(angle));
+    for (int points = 64; points <= 65536 && !changes; points *= 32) {
+      for (int k = 0; k < points && !changes; ++k) {
+        const double angle = 2 * M_PI * k / points, radius = kRelative * upper / 2;
+        changes = !keepsState(nx + radius * std::cos(angle), ny + radius * std::sin(angle));
+      }
     }
     check.noChangeWithin += !changes;
   }

@@ -1,0 +1,49 @@
+#pragma once
+
+#include <cstddef>
+
+#include "freespace/space/free_space.h"
+
+namespace freespace {
+
+/// What a motion check found (MotionChecker::check).
+struct MotionCheck {
+  /// The whole motion is free, certified.
+  bool free = false;
+  /// The motion is certified free from its start up to this fraction (1 when free).
+  double lastFreeFraction = 0;
+  /// A certified lower bound on the clearance along the whole motion (when free).
+  double minClearance = 0;
+  /// How many clearances were computed.
+  std::size_t clearanceQueries = 0;
+};
+
+/// Motions as OMPL's SE(2) space interpolates them (x and y linear, theta along the
+/// shorter arc), certified free by clearances (docs/design.md section 7): the
+/// clearance is 1-Lipschitz in (x, y) and r-Lipschitz in theta (r the robot's
+/// largest distance from its vertical axis), so a part of the motion between two
+/// free configurations with certified clearances c0 and c1 is free when c0 + c1
+/// exceeds its length in the metric |dxy| + r |dtheta|; parts that are not are
+/// halved, down to 1e-12 of the motion (a motion that only grazes the obstacle is
+/// never certified free).
+class MotionChecker {
+ public:
+  explicit MotionChecker(const FreeSpace& space);
+
+  /// The configuration a fraction t of the way from `from` to `to`.
+  static Pose2 interpolate(const Pose2& from, const Pose2& to, double t);
+
+  /// Checks the motion; `clearanceSlack` (relative) makes the parts shorter until the
+  /// bound on each is within that fraction of its ends' smaller clearance (1: only
+  /// certify freedom; 0.02 for a bound on the clearance within 2%).
+  MotionCheck check(const Pose2& from, const Pose2& to, double clearanceSlack = 1) const;
+
+  /// The robot's largest distance from its vertical axis, rounded up.
+  double robotReach() const { return reach_; }
+
+ private:
+  const FreeSpace& space_;
+  double reach_ = 0;
+};
+
+}  // namespace freespace

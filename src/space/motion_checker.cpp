@@ -1,0 +1,86 @@
+#include "freespace/space/motion_checker.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace freespace {
+
+namespace {
+
+/// The smallest fraction of a motion a part is halved down to.
+constexpr double kShortestPart = 1e-12;
+
+/// A part of the motion between fractions `from` and `to`, with the clearances there
+/// (certified lower bounds; 0 or less where the configuration is not free).
+struct Part {
+  double from, to;
+  double clearanceFrom, clearanceTo;
+};
+
+/// Theta's change along the shorter arc, as OMPL's SO(2) space interpolates (half a
+/// turn goes the direct way).
+double shorterTurn(double from, double to) {
+  double turn = to - from;
+  if (std::fabs(turn) > M_PI) turn = std::remainder(turn, 2 * M_PI);
+  return turn;
+}
+
+/// The least clearance the Lipschitz bound guarantees on a part of metric length
+/// `length` between clearances c0 and c1: the lowest point of the upper envelope of
+/// the two cones c0 - s and c1 - (length - s).
+double leastClearanceOn(double c0, double c1, double length) {
+  if (std::fabs(c0 - c1) >= length) return std::min(c0, c1);
+  return (c0 + c1 - length) / 2;
+}
+
+}  // namespace
+
+MotionChecker::MotionChecker(const FreeSpace& space) : space_(space) {
+  const PerturbedMeshes& meshes = space.meshes();
+  for (const Point3& vertex : meshes.robot.vertices()) reach_ = std::max(reach_, std::hypot(vertex.x(), vertex.y()));
+  // In the input's units, rounded up far beyond the rounding of the hypotenuse.
+  reach_ = reach_ / meshes.scale * (1 + 1e-12);
+}
+
+Pose2 MotionChecker::interpolate(const Pose2& from, const Pose2& to, double t) {
+  return {from.x + t * (to.x - from.x), from.y + t * (to.y - from.y), from.theta + t * shorterTurn(from.theta, to.theta)};
+}
+
+MotionCheck MotionChecker::check(const Pose2& from, const Pose2& to, double clearanceSlack) const {
+  MotionCheck result;
+  const auto clearanceAt = [&](double t) {
+    ++result.clearanceQueries;
+    const Clearance clearance = space_.clearance(interpolate(from, to, t));
+    return clearance.location.free ? clearance.lower : 0.0;
+  };
+  // The motion's length in |dxy| + r |dtheta|, with room for the rounding of the
+  // interpolated configurations' coordinates.
+  const double rounding = 1e-12 * (1 + std::max({std::fabs(from.x), std::fabs(from.y), std::fabs(to.x), std::fabs(to.y)}));
+  const double length = std::hypot(to.x - from.x, to.y - from.y) * (1 + 1e-12) +
+                        reach_ * std::fabs(shorterTurn(from.theta, to.theta)) + rounding;
+  result.minClearance = HUGE_VAL;
+  // Parts from the start on, the nearest first, so that the certified prefix grows.
+  std::vector<Part> parts{{0, 1, clearanceAt(0), clearanceAt(1)}};
+  while (!parts.empty()) {
+    const Part part = parts.back();
+    parts.pop_back();
+    if (part.clearanceFrom <= 0) break;  // blocked at its start
+    const double least = leastClearanceOn(part.clearanceFrom, part.clearanceTo, (part.to - part.from) * length);
+    const bool certain = least > 0 && least >= (1 - clearanceSlack) * std::min(part.clearanceFrom, part.clearanceTo);
+    if (certain) {
+      result.lastFreeFraction = part.to;
+      result.minClearance = std::min(result.minClearance, least);
+      continue;
+    }
+    if (part.to - part.from < kShortestPart) break;
+    const double middle = 0.5 * (part.from + part.to), clearanceMiddle = clearanceAt(middle);
+    parts.push_back({middle, part.to, clearanceMiddle, part.clearanceTo});
+    parts.push_back({part.from, middle, part.clearanceFrom, clearanceMiddle});
+  }
+  result.free = parts.empty() && result.lastFreeFraction == 1;
+  if (!result.free) result.minClearance = 0;
+  return result;
+}
+
+}  // namespace freespace
