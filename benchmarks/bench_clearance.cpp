@@ -27,19 +27,8 @@ void measure(const std::string& cfg, int samples) {
 }
 
 int run(int argc, char** argv) {
-  int samples = 10000;
-  std::vector<std::string> problems;
-  for (int i = 1; i < argc; ++i) {
-    const std::string argument = argv[i];
-    if (argument == "--samples" && i + 1 < argc) {
-      samples = static_cast<int>(benchmarks::wholeNumber(argument, argv[++i]));
-    } else {
-      benchmarks::rejectOption(argument, "bench_clearance [--samples N] [PROBLEM.cfg ...]");
-      problems.push_back(argument);
-    }
-  }
-  if (problems.empty()) problems = benchmarks::bundledProblems();
-  benchmarks::requireFiles(problems);
+  const auto [samples, problems] =
+      benchmarks::sampledProblems(argc, argv, 10000, "bench_clearance [--samples N] [PROBLEM.cfg ...]");
   std::cout << "| problem | configurations | free | state changed nearer than the clearance | no change within "
                "it | widest interval (relative) | us per clearance |\n| --- | --- | --- | --- | --- | --- | --- |"
             << std::endl;

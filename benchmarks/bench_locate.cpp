@@ -72,19 +72,8 @@ void measure(const std::string& cfg, int samples) {
 
 
 int run(int argc, char** argv) {
-  int samples = 100000;
-  std::vector<std::string> problems;
-  for (int i = 1; i < argc; ++i) {
-    const std::string argument = argv[i];
-    if (argument == "--samples" && i + 1 < argc) {
-      samples = static_cast<int>(benchmarks::wholeNumber(argument, argv[++i]));
-    } else {
-      benchmarks::rejectOption(argument, "bench_locate [--samples N] [PROBLEM.cfg ...]");
-      problems.push_back(argument);
-    }
-  }
-  if (problems.empty()) problems = benchmarks::bundledProblems();
-  benchmarks::requireFiles(problems);
+  const auto [samples, problems] =
+      benchmarks::sampledProblems(argc, argv, 100000, "bench_locate [--samples N] [PROBLEM.cfg ...]");
   for (const std::string& problem : problems) measure(problem, samples);
   return 0;
 }

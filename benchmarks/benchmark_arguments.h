@@ -55,4 +55,27 @@ inline std::vector<std::string> bundledProblems() {
   return problems;
 }
 
+/// The arguments of a benchmark run over problems: `--samples N` (else
+/// `defaultSamples`) and problem files (else every bundled problem), checked.
+struct SampledProblems {
+  int samples;
+  std::vector<std::string> problems;
+};
+
+inline SampledProblems sampledProblems(int argc, char** argv, int defaultSamples, const std::string& usage) {
+  SampledProblems run{defaultSamples, {}};
+  for (int i = 1; i < argc; ++i) {
+    const std::string argument = argv[i];
+    if (argument == "--samples" && i + 1 < argc) {
+      run.samples = static_cast<int>(wholeNumber(argument, argv[++i]));
+    } else {
+      rejectOption(argument, usage);
+      run.problems.push_back(argument);
+    }
+  }
+  if (run.problems.empty()) run.problems = bundledProblems();
+  requireFiles(run.problems);
+  return run;
+}
+
 }  // namespace freespace::benchmarks

@@ -13,6 +13,7 @@
 
 #include "freespace/collision/exact_collision_checker.h"
 #include "freespace/space/free_space.h"
+#include "random_configurations.h"
 
 namespace freespace::testing {
 
@@ -29,16 +30,11 @@ inline ClearanceCheck clearanceAgainstCollision(const FreeSpace& space, int samp
   constexpr int kDirections = 64, kDistances = 8;
   constexpr double kRelative = 1e-6;
   const ExactCollisionChecker collision(space.meshes().robot, space.meshes().world);
-  const Box3 world = space.meshes().world.bounds();
-  const double reach = space.meshes().robot.bounds().sizes().head<2>().norm();
   const double scale = space.meshes().scale;
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> x(world.min().x() - reach, world.max().x() + reach);
-  std::uniform_real_distribution<double> y(world.min().y() - reach, world.max().y() + reach);
-  std::uniform_real_distribution<double> theta(-M_PI, M_PI);
+  RandomConfigurations configurations(space, seed);
   ClearanceCheck check;
   for (int i = 0; i < samples; ++i) {
-    const Pose2 pose{x(random), y(random), theta(random)};  // construction coordinates
+    const Pose2 pose = configurations.next();  // construction coordinates
     const auto start = std::chrono::steady_clock::now();
     const Clearance clearance = space.clearance({pose.x / scale, pose.y / scale, pose.theta});
     check.clearanceSeconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -10,6 +10,7 @@
 
 #include "freespace/collision/exact_collision_checker.h"
 #include "freespace/space/free_space.h"
+#include "random_configurations.h"
 
 namespace freespace::testing {
 
@@ -20,15 +21,10 @@ struct LocateCheck {
 
 inline LocateCheck locateAgainstCollision(const FreeSpace& space, int samples, unsigned seed) {
   const ExactCollisionChecker collision(space.meshes().robot, space.meshes().world);
-  const Box3 world = space.meshes().world.bounds();
-  const double reach = space.meshes().robot.bounds().sizes().head<2>().norm();
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> x(world.min().x() - reach, world.max().x() + reach);
-  std::uniform_real_distribution<double> y(world.min().y() - reach, world.max().y() + reach);
-  std::uniform_real_distribution<double> theta(-M_PI, M_PI);
+  RandomConfigurations configurations(space, seed);
   LocateCheck check;
   for (int i = 0; i < samples; ++i) {
-    const Pose2 pose{x(random), y(random), theta(random)};
+    const Pose2 pose = configurations.next();
     const double scale = space.meshes().scale;
     const bool free = space.locate({pose.x / scale, pose.y / scale, pose.theta}).free;
     check.free += free;

@@ -27,6 +27,17 @@ std::vector<nlohmann::json> jsonLines(const std::string& text) {
   return lines;
 }
 
+/// The JSON answers of `command --json --cfg CFG` (a bundled problem) on a batch file
+/// holding `batch`; empty after a failure, which it reports.
+std::vector<nlohmann::json> batchAnswers(const std::string& command, const std::string& cfg, const std::string& batch) {
+  TempDir dir;
+  std::ofstream(dir.file("batch.txt")) << batch;
+  const CommandResult result =
+      runFreespace(command + " --json --cfg '" + kProblems + cfg + "' --batch '" + dir.file("batch.txt") + "'");
+  EXPECT_EQ(result.status, 0) << result.err;
+  return result.status == 0 ? jsonLines(result.out) : std::vector<nlohmann::json>{};
+}
+
 }  // namespace
 
 TEST(CliFreeSpace, BuildPrintsTheStatisticsAsJson) {
@@ -46,16 +57,9 @@ TEST(CliFreeSpace, BuildPrintsTheStatisticsAsJson) {
 
 TEST(CliFreeSpace, LocateSeparatesTheNarrowKeyholesStartAndGoal) {
   for (const auto& [cfg, solvable] : {std::pair<std::string, bool>{"keyhole.cfg", true}, {"keyhole_narrow.cfg", false}}) {
-    TempDir dir;
     // Start, goal, and configurations across the scene, for the exact test to judge.
-    std::ofstream(dir.file("batch.txt")) << "# start and goal\n0 -2.25 0\n0 2.25 0\n"
-                                         << "0 0 0\n0 0 1.5707963267948966\n0.5 0.1 0.3\n-1 0 2\n3 3 0\n";
-    const std::string batch = " --batch '" + dir.file("batch.txt") + "'";
-    const CommandResult located = runFreespace("locate --json --cfg '" + kProblems + cfg + "'" + batch);
-    ASSERT_EQ(located.status, 0) << located.err;
-    const CommandResult checked = runFreespace("check --json --cfg '" + kProblems + cfg + "'" + batch);
-    ASSERT_EQ(checked.status, 0) << checked.err;
-    const std::vector<nlohmann::json> answers = jsonLines(located.out), exact = jsonLines(checked.out);
+    const std::string batch = "# start and goal\n0 -2.25 0\n0 2.25 0\n0 0 0\n0 0 1.5707963267948966\n0.5 0.1 0.3\n-1 0 2\n3 3 0\n";
+    const std::vector<nlohmann::json> answers = batchAnswers("locate", cfg, batch), exact = batchAnswers("check", cfg, batch);
     ASSERT_EQ(answers.size(), 7u);
     ASSERT_EQ(exact.size(), 7u);
     for (std::size_t i = 0; i < answers.size(); ++i) EXPECT_EQ(answers[i]["free"], exact[i]["exact_free"]) << i;
@@ -68,14 +72,9 @@ TEST(CliFreeSpace, LocateSeparatesTheNarrowKeyholesStartAndGoal) {
 // exactly when free, certified to 1e-12 relative, with its contact; the start can
 // slide 1.5 south before its edge meets the frame (less the perturbation).
 TEST(CliFreeSpace, ClearanceIsSignedByTheExactTestAndNamesItsContact) {
-  TempDir dir;
-  std::ofstream(dir.file("batch.txt")) << "0 -2.25 0\n0 0 0\n3 3 0.5\n-1 0 2\n";
-  const std::string batch = " --batch '" + dir.file("batch.txt") + "'";
-  const CommandResult cleared = runFreespace("clearance --json --cfg '" + kProblems + "keyhole.cfg'" + batch);
-  ASSERT_EQ(cleared.status, 0) << cleared.err;
-  const CommandResult checked = runFreespace("check --json --cfg '" + kProblems + "keyhole.cfg'" + batch);
-  ASSERT_EQ(checked.status, 0) << checked.err;
-  const std::vector<nlohmann::json> answers = jsonLines(cleared.out), exact = jsonLines(checked.out);
+  const std::string batch = "0 -2.25 0\n0 0 0\n3 3 0.5\n-1 0 2\n";
+  const std::vector<nlohmann::json> answers = batchAnswers("clearance", "keyhole.cfg", batch),
+                                    exact = batchAnswers("check", "keyhole.cfg", batch);
   ASSERT_EQ(answers.size(), 4u);
   for (std::size_t i = 0; i < answers.size(); ++i) {
     EXPECT_EQ(answers[i]["free"], exact[i]["exact_free"]) << i;

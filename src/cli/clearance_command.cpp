@@ -1,11 +1,9 @@
 #include <iostream>
-#include <memory>
 
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
-#include "configuration_input.h"
-#include "free_space_input.h"
+#include "configuration_query.h"
 
 namespace freespace::cli {
 
@@ -75,33 +73,17 @@ void printClearance(const Pose2& pose, const Clearance& clearance) {
 }  // namespace
 
 void addClearanceCommand(CLI::App& app) {
-  struct Options {
-    FreeSpaceInput input;
-    ConfigurationInput configurations;
-    bool json = false;
-  };
-  auto options = std::make_shared<Options>();
-  CLI::App* command = app.add_subcommand(
-      "clearance",
-      "Clearance of configurations: how far the robot can slide horizontally before touching (negative: how far "
-      "it must slide to get free), certified, with the contact that limits it");
-  options->input.addOptions(*command);
-  options->configurations.addOptions(*command);
-  command->add_flag("--json", options->json, "print JSON (one object per line)");
-  command->callback([options]() {
-    const std::vector<Pose2> poses = options->configurations.poses();
-    LoadedProblem loaded;
-    const std::unique_ptr<FreeSpace> space = options->input.build(loaded);
-    std::cout.precision(17);
-    for (const Pose2& pose : poses) {
-      const Clearance clearance = space->clearance(pose);
-      if (options->json) {
-        std::cout << clearanceJson(pose, clearance).dump() << "\n";
-      } else {
-        printClearance(pose, clearance);
-      }
-    }
-  });
+  addConfigurationQuery(app, "clearance",
+                        "Clearance of configurations: how far the robot can slide horizontally before touching "
+                        "(negative: how far it must slide to get free), certified, with the contact that limits it",
+                        [](const FreeSpace& space, const Pose2& pose, bool json) {
+                          const Clearance clearance = space.clearance(pose);
+                          if (json) {
+                            std::cout << clearanceJson(pose, clearance).dump() << "\n";
+                          } else {
+                            printClearance(pose, clearance);
+                          }
+                        });
 }
 
 }  // namespace freespace::cli
