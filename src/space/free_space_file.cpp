@@ -102,7 +102,7 @@ namespace freespace {
 namespace {
 
 const std::string kHeader = "freespace saved free space, format ";
-constexpr int kFormatVersion = 2;
+constexpr int kFormatVersion = 3;
 
 std::string text(const Rational& value) { return value.str(); }
 
@@ -144,16 +144,28 @@ class AngleTable {
  public:
   explicit AngleTable(saved::Space& space) : space_(space) {}
 
+  /// Each distinct angle once: a root by its function, chart and place among the
+  /// function's roots (copies of it may hold enclosures refined differently), a
+  /// rational angle by its chart and t.
   std::uint32_t add(const AlgebraicAngle& angle) {
+    const IsolatingInterval root = angle.root();
+    const auto [found, inserted] =
+        indexOfAngle_.try_emplace(AngleKey{angle.isRational() ? nullptr : angle.function().get(), angle.chart(),
+                                           angle.index(), angle.index() < 0 || angle.isRational() ? root.lo : Rational(0)},
+                                  static_cast<std::uint32_t>(space_.angles.size()));
+    if (!inserted) return found->second;
     saved::Angle stored;
     stored.chart = angle.chart();
     stored.index = angle.index();
-    const IsolatingInterval root = angle.root();
-    stored.lo = text(root.lo);
-    stored.hi = text(root.hi);
+    stored.lower = angle.lower();
+    stored.upper = angle.upper();
+    if (angle.isRational() || root.lo != Rational(angle.lower()) || root.hi != Rational(angle.upper())) {
+      stored.lo = text(root.lo);
+      stored.hi = text(root.hi);
+    }
     if (angle.function()) stored.function = static_cast<std::int32_t>(functionIndex(*angle.function()));
     space_.angles.push_back(stored);
-    return static_cast<std::uint32_t>(space_.angles.size() - 1);
+    return found->second;
   }
 
   saved::AngleSet add(const AngleSet& set) {
@@ -166,17 +178,12 @@ class AngleTable {
     return stored;
   }
 
+  /// The angle at an index of the table, read once.
   AlgebraicAngle angle(std::uint32_t index) {
-    const saved::Angle& stored = space_.angles.at(index);
-    const IsolatingInterval root{rationalOf(stored.lo), rationalOf(stored.hi)};
-    if ((stored.chart != 0 && stored.chart != 1) || root.hi < root.lo || stored.index < -1) {
-      throw DamagedPart("an angle");
-    }
-    if (stored.function < 0) {
-      if (root.lo != root.hi) throw DamagedPart("a rational angle with an interval");
-      return AlgebraicAngle::rational(stored.chart, root.lo);
-    }
-    return AlgebraicAngle(function(static_cast<std::size_t>(stored.function)), stored.chart, root, stored.index);
+    if (read_.empty()) read_.resize(space_.angles.size());
+    std::optional<AlgebraicAngle>& angle = read_.at(index);
+    if (!angle) angle = readAngle(space_.angles[index]);
+    return *angle;
   }
 
   AngleSet set(const saved::AngleSet& stored) {
@@ -224,9 +231,44 @@ class AngleTable {
     return function;
   }
 
+  AlgebraicAngle readAngle(const saved::Angle& stored) {
+    const bool doubles = stored.lo.empty() && stored.hi.empty();
+    if ((stored.chart != 0 && stored.chart != 1) || stored.index < -1 || !(stored.lower <= stored.upper) ||
+        (doubles && stored.function < 0)) {
+      throw DamagedPart("an angle");
+    }
+    if (doubles) {
+      return AlgebraicAngle(function(static_cast<std::size_t>(stored.function)), stored.chart, stored.lower,
+                            stored.upper, stored.index);
+    }
+    const IsolatingInterval root{rationalOf(stored.lo), rationalOf(stored.hi)};
+    if (root.hi < root.lo) throw DamagedPart("an angle");
+    if (stored.function < 0) {
+      if (root.lo != root.hi) throw DamagedPart("a rational angle with an interval");
+      return AlgebraicAngle::rational(stored.chart, root.lo);
+    }
+    return AlgebraicAngle(function(static_cast<std::size_t>(stored.function)), stored.chart, root, stored.index);
+  }
+
+  /// What identifies an angle of the table (see add).
+  struct AngleKey {
+    const AngleFunction* function;
+    int chart;
+    int index;
+    Rational t;  // a rational angle's t, or the lower end of a root of unknown place
+    bool operator<(const AngleKey& other) const {
+      if (function != other.function) return std::less<>()(function, other.function);
+      if (chart != other.chart) return chart < other.chart;
+      if (index != other.index) return index < other.index;
+      return t < other.t;
+    }
+  };
+
   saved::Space& space_;
   std::map<const AngleFunction*, std::size_t> indexOf_;
+  std::map<AngleKey, std::uint32_t> indexOfAngle_;
   std::vector<std::shared_ptr<const AngleFunction>> loaded_;
+  std::vector<std::optional<AlgebraicAngle>> read_;
 };
 
 saved::Mesh savedMesh(const Mesh& mesh) {

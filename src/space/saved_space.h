@@ -2,7 +2,8 @@
 
 // A built free space as plain data for Boost.Serialization (free_space_file.cpp):
 // numbers as exact decimal or rational strings, algebraic angles as indices into a
-// table of angles whose functions are stored by their exact polynomials.
+// table of angles (each distinct angle once, by its double enclosure where that
+// isolates it) whose functions are stored by their exact polynomials.
 
 #include <cstdint>
 #include <string>
@@ -26,12 +27,16 @@ struct Function {
 struct Angle {
   std::int32_t function = -1;  // -1: a rational angle
   std::int32_t chart = 0;
+  /// The root's double enclosure, which isolates it; an exact isolating interval
+  /// (lo, hi) only when it is narrower than the doubles can say (else both empty),
+  /// and a rational angle's t in lo.
+  double lower = 0, upper = 0;
   std::string lo, hi;
   std::int32_t index = -1;
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & function & chart & lo & hi & index;
+    archive & function & chart & lower & upper & lo & hi & index;
   }
 };
 
