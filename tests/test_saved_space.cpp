@@ -64,15 +64,25 @@ void putUint64(std::string& bytes, std::size_t at, std::uint64_t value) {
   for (int i = 0; i < 8; ++i) bytes[at + i] = static_cast<char>((value >> (8 * i)) & 0xff);
 }
 
-/// The offset of the first 8-byte little-endian length followed by that many
-/// characters of a written rational ("-12/7"), as the saved format stores numbers.
+/// The offset of the first 8-byte little-endian length followed by that many bytes
+/// of a written rational, as the saved format stores numbers.
 std::size_t firstNumberLength(const std::string& bytes, std::size_t from) {
+  const auto littleEndian = [&](std::size_t at, int width) {
+    std::uint64_t value = 0;
+    for (int i = 0; i < width; ++i) value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+    return value;
+  };
+  // A text holding a sign byte, then a numerator and a denominator of at least one
+  // byte, each after its 4-byte length, filling the text exactly.
   for (std::size_t at = from; at + 8 < bytes.size(); ++at) {
-    std::uint64_t length = 0;
-    for (int i = 0; i < 8; ++i) length |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
-    if (length < 3 || length > 40 || at + 8 + length > bytes.size()) continue;
-    const std::string text = bytes.substr(at + 8, length);
-    if (text.find_first_not_of("-0123456789/") == std::string::npos && text.find('/') != std::string::npos) return at;
+    const std::uint64_t length = littleEndian(at, 8);
+    if (length < 10 || length > 200 || at + 8 + length > bytes.size()) continue;
+    const std::size_t text = at + 8;
+    if (static_cast<unsigned char>(bytes[text]) > 1) continue;
+    const std::uint64_t numerator = littleEndian(text + 1, 4);
+    if (5 + numerator + 4 > length) continue;
+    const std::uint64_t denominator = littleEndian(text + 5 + numerator, 4);
+    if (denominator >= 1 && 9 + numerator + denominator == length) return at;
   }
   return std::string::npos;
 }
@@ -127,7 +137,7 @@ TEST(SavedSpace, BadFilesAreClearErrors) {
   std::string version = bytes;
   version.replace(bytes.find('\n') - 1, 1, "9");
   write(other, version);
-  EXPECT_NE(loadError(other).find("format 9; this build reads format 3"), std::string::npos);
+  EXPECT_NE(loadError(other).find("format 9; this build reads format 4"), std::string::npos);
   write(other, bytes.substr(0, bytes.size() / 2));
   EXPECT_NE(loadError(other).find("damaged"), std::string::npos);
   std::string altered = bytes;
@@ -181,6 +191,24 @@ TEST(SavedSpace, AHugeTextLengthIsAClearErrorWithoutAllocating) {
   EXPECT_NE(loadError(other).find("longer than the rest of the file"), std::string::npos);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "rejected in " << seconds << " s\n";
+}
+
+// A number made an unreduced fraction (numerator and denominator both even), the
+// checksum valid again, is refused as damage before GMP takes it.
+TEST(SavedSpace, AnUnreducedFractionIsRefused) {
+  TempDir dir;
+  const std::string bytes = savedBytes(dir);
+  const std::size_t payloadStart = payloadStartOf(bytes);
+  const std::size_t at = firstNumberLength(bytes, payloadStart);
+  ASSERT_NE(at, std::string::npos) << "no written number in the payload";
+  std::string altered = bytes;
+  const std::size_t text = at + 8, numeratorLength = static_cast<unsigned char>(bytes[text + 1]);
+  const std::size_t denominatorEnd = at + 8 + static_cast<unsigned char>(bytes[at]);  // lengths below 256
+  altered[text + 5 + numeratorLength - 1] = 2;
+  altered[denominatorEnd - 1] = 4;
+  const std::string other = dir.file("unreduced.fspace");
+  write(other, savedSpaceFileAround(altered.substr(payloadStart)));
+  EXPECT_NE(loadError(other).find("inconsistent saved free space at a number"), std::string::npos) << loadError(other);
 }
 
 // Every 8-byte value in the payload that could be a length (1 to 100,000) raised by

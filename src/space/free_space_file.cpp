@@ -17,6 +17,7 @@
 #include <cstring>
 #include <fstream>
 #include <map>
+#include <new>
 #include <sstream>
 
 #include "free_space_impl.h"
@@ -49,7 +50,7 @@ class CheckedBinaryIArchive
   friend class boost::archive::load_access;
 
  public:
-  explicit CheckedBinaryIArchive(std::istringstream& payload) : Base(payload, 0), payload_(payload) { init(0); }
+  explicit CheckedBinaryIArchive(std::istream& payload) : Base(payload, 0), payload_(payload) { init(0); }
 
   using Base::load;
   void load(std::string& text) {
@@ -84,7 +85,17 @@ class CheckedBinaryIArchive
     return static_cast<std::size_t>(std::max<std::streamsize>(payload_.rdbuf()->in_avail(), 0));
   }
 
-  std::istringstream& payload_;
+  std::istream& payload_;
+};
+
+/// The payload read in place, without a copy (a large space's payload is hundreds of
+/// megabytes).
+class PayloadBuffer : public std::streambuf {
+ public:
+  explicit PayloadBuffer(const std::string& payload) {
+    char* begin = const_cast<char*>(payload.data());  // only read
+    setg(begin, begin, begin + payload.size());
+  }
 };
 
 }  // namespace
@@ -104,33 +115,53 @@ namespace freespace {
 namespace {
 
 const std::string kHeader = "freespace saved free space, format ";
-constexpr int kFormatVersion = 3;
+constexpr int kFormatVersion = 4;
 
-std::string text(const Rational& value) { return value.str(); }
+// Rationals as bytes: a sign byte (0 or 1), then the numerator's magnitude and the
+// denominator, each as a 4-byte length (least significant byte first) and its bytes
+// (most significant first): read back in linear time, unlike decimal text.
 
-/// A rational written by text(): canonical (lowest terms, positive denominator), so
-/// that no zero denominator or unreduced fraction reaches GMP.
-/// Digits with no leading zero (or "0" alone when `zero` allows it).
-bool plainDigits(const std::string& digits, bool zero) {
-  if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) return false;
-  return digits[0] != '0' || (zero && digits == "0");
+void appendMagnitude(std::string& out, mpz_srcptr value) {
+  std::string digits((mpz_sizeinbase(value, 2) + 7) / 8, '\0');
+  std::size_t count = 0;
+  mpz_export(digits.data(), &count, 1, 1, 1, 0, value);
+  digits.resize(count);
+  for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((count >> (8 * i)) & 0xff));
+  out += digits;
 }
 
-/// A rational written as saved: an integer, or a fraction in lowest terms with a
-/// denominator above 1; checked before GMP reads it (it must never see a malformed
-/// or unreduced number).
-Rational rationalOf(const std::string& value) {
+std::string bytesOf(const Rational& value) {
+  const mpq_srcptr q = value.backend().data();
+  std::string out(1, static_cast<char>(mpq_sgn(q) < 0 ? 1 : 0));
+  appendMagnitude(out, mpq_numref(q));
+  appendMagnitude(out, mpq_denref(q));
+  return out;
+}
+
+/// The magnitude at `at` (moved past it): its bytes must be there, without a leading
+/// zero byte (one writing only).
+boost::multiprecision::mpz_int magnitudeAt(const std::string& bytes, std::size_t& at) {
+  if (bytes.size() - at < 4) throw DamagedPart("a number");
+  std::size_t count = 0;
+  for (int i = 0; i < 4; ++i) count |= std::size_t(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+  at += 4;
+  if (bytes.size() - at < count || (count > 0 && bytes[at] == '\0')) throw DamagedPart("a number");
+  boost::multiprecision::mpz_int value;
+  if (count > 0) mpz_import(value.backend().data(), count, 1, 1, 1, 0, bytes.data() + at);
+  at += count;
+  return value;
+}
+
+/// A rational written by bytesOf: canonical (lowest terms, positive denominator, no
+/// negative zero), checked before GMP takes it (it must never see a zero
+/// denominator or an unreduced fraction).
+Rational rationalOf(const std::string& bytes) {
   using boost::multiprecision::mpz_int;
-  const bool negative = !value.empty() && value[0] == '-';
-  const std::string magnitude = value.substr(negative ? 1 : 0);
-  const std::size_t slash = magnitude.find('/');
-  const std::string numeratorDigits = magnitude.substr(0, slash);
-  const std::string denominatorDigits = slash == std::string::npos ? "1" : magnitude.substr(slash + 1);
-  if (!plainDigits(numeratorDigits, !negative) || !plainDigits(denominatorDigits, false)) {
-    throw DamagedPart("a number");
-  }
-  const mpz_int numerator(numeratorDigits), denominator(denominatorDigits);
-  if ((slash != std::string::npos && denominator == 1) || gcd(numerator, denominator) != 1) {
+  if (bytes.empty() || static_cast<unsigned char>(bytes[0]) > 1) throw DamagedPart("a number");
+  const bool negative = bytes[0] == 1;
+  std::size_t at = 1;
+  const mpz_int numerator = magnitudeAt(bytes, at), denominator = magnitudeAt(bytes, at);
+  if (at != bytes.size() || denominator == 0 || gcd(numerator, denominator) != 1 || (negative && numerator == 0)) {
     throw DamagedPart("a number");
   }
   return Rational(negative ? mpz_int(-numerator) : numerator, denominator);
@@ -162,8 +193,8 @@ class AngleTable {
     stored.lower = angle.lower();
     stored.upper = angle.upper();
     if (angle.isRational() || root.lo != Rational(angle.lower()) || root.hi != Rational(angle.upper())) {
-      stored.lo = text(root.lo);
-      stored.hi = text(root.hi);
+      stored.lo = bytesOf(root.lo);
+      stored.hi = bytesOf(root.hi);
     }
     if (angle.function()) stored.function = static_cast<std::int32_t>(functionIndex(*angle.function()));
     space_.angles.push_back(stored);
@@ -204,8 +235,8 @@ class AngleTable {
     if (inserted) {
       saved::Function stored;
       if (function.key()) stored.key.assign(function.key()->begin(), function.key()->end());
-      for (const Rational& c : function.exact(0).coefficients()) stored.chart0.push_back(text(c));
-      for (const Rational& c : function.exact(1).coefficients()) stored.chart1.push_back(text(c));
+      for (const Rational& c : function.exact(0).coefficients()) stored.chart0.push_back(bytesOf(c));
+      for (const Rational& c : function.exact(1).coefficients()) stored.chart1.push_back(bytesOf(c));
       space_.functions.push_back(std::move(stored));
     }
     return found->second;
@@ -562,12 +593,17 @@ void FreeSpace::save(const std::string& path, bool overwrite) const {
 }
 
 std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
-  const std::string payload = readPayload(path);
   saved::Space space;
   try {
-    std::istringstream payloadStream(payload);
+    const std::string payload = readPayload(path);  // freed once decoded
+    PayloadBuffer buffer(payload);
+    std::istream payloadStream(&buffer);
     CheckedBinaryIArchive archive(payloadStream);
     archive >> space;
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
+    throw;
   } catch (const DamagedPart& part) {
     throw InputError(path, std::string("damaged: ") + part.what());
   } catch (const std::exception&) {
@@ -643,6 +679,8 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
     }
     impl->finish();
   } catch (const InputError&) {
+    throw;
+  } catch (const std::bad_alloc&) {
     throw;
   } catch (const DamagedPart& part) {
     throw InputError(path, std::string("inconsistent saved free space at ") + part.what());

@@ -1,7 +1,7 @@
 #pragma once
 
 // A built free space as plain data for Boost.Serialization (free_space_file.cpp):
-// numbers as exact decimal or rational strings, algebraic angles as indices into a
+// rationals as bytes (sign, numerator, denominator), algebraic angles as indices into a
 // table of angles (each distinct angle once, by its double enclosure where that
 // isolates it) whose functions are stored by their exact polynomials.
 
