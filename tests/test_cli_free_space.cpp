@@ -150,7 +150,15 @@ TEST(CliFreeSpace, SliceDrawsTheCellsAndNeverOverwrites) {
   ASSERT_EQ(first.status, 0) << first.err;
   const std::string picture = readWholeFile(svg);
   EXPECT_EQ(picture.rfind("<svg", 0), 0u);
-  EXPECT_NE(picture.find("(2 free cells)"), std::string::npos);
+  // A title, axes in the meshes' units, and a legend naming what is drawn.
+  EXPECT_NE(picture.find(">Free space slice at theta = 0.3 rad"), std::string::npos);
+  EXPECT_NE(picture.find(", 2 free cells</text>"), std::string::npos);
+  EXPECT_NE(picture.find(">x (the meshes' units)</text>"), std::string::npos);
+  EXPECT_NE(picture.find(">y (the meshes' units)</text>"), std::string::npos);
+  for (const char* entry : {">blocked (robot touches or overlaps)<", ">free, cell 0 (unbounded)<", ">free, cell 1<",
+                            ">boundary of cell 1<", ">the robot at the point given<"}) {
+    EXPECT_NE(picture.find(entry), std::string::npos) << entry;
+  }
   // The caged robot's cell and the outside both have boundary pieces drawn.
   EXPECT_NE(picture.find("stroke=\"#1f77b4\""), std::string::npos);
   EXPECT_NE(picture.find("stroke=\"#ff7f0e\""), std::string::npos);

@@ -87,6 +87,21 @@ std::size_t firstNumberLength(const std::string& bytes, std::size_t from) {
   return std::string::npos;
 }
 
+/// A saved file's bytes, where its payload starts, and where the length of its first
+/// written number is (npos when none is found).
+struct SavedNumber {
+  std::string bytes;
+  std::size_t payloadStart;
+  std::size_t at;
+};
+
+SavedNumber firstSavedNumber(const TempDir& dir) {
+  SavedNumber number{savedBytes(dir), 0, 0};
+  number.payloadStart = payloadStartOf(number.bytes);
+  number.at = firstNumberLength(number.bytes, number.payloadStart);
+  return number;
+}
+
 }  // namespace
 
 TEST(SavedSpace, LoadedSpaceLocatesAsTheBuiltOne) {
@@ -179,14 +194,12 @@ TEST(SavedSpace, AlteredPayloadsWithAValidChecksumLoadOrFailCleanly) {
 // fills the machine's memory.
 TEST(SavedSpace, AHugeTextLengthIsAClearErrorWithoutAllocating) {
   TempDir dir;
-  const std::string bytes = savedBytes(dir);
-  const std::size_t payloadStart = payloadStartOf(bytes);
-  const std::size_t at = firstNumberLength(bytes, payloadStart);
-  ASSERT_NE(at, std::string::npos) << "no written number in the payload";
-  std::string altered = bytes;
-  putUint64(altered, at, std::uint64_t(1) << 34);
+  const SavedNumber number = firstSavedNumber(dir);
+  ASSERT_NE(number.at, std::string::npos) << "no written number in the payload";
+  std::string altered = number.bytes;
+  putUint64(altered, number.at, std::uint64_t(1) << 34);
   const std::string other = dir.file("huge.fspace");
-  write(other, savedSpaceFileAround(altered.substr(payloadStart)));
+  write(other, savedSpaceFileAround(altered.substr(number.payloadStart)));
   const auto start = std::chrono::steady_clock::now();
   EXPECT_NE(loadError(other).find("longer than the rest of the file"), std::string::npos);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -197,17 +210,15 @@ TEST(SavedSpace, AHugeTextLengthIsAClearErrorWithoutAllocating) {
 // checksum valid again, is refused as damage before GMP takes it.
 TEST(SavedSpace, AnUnreducedFractionIsRefused) {
   TempDir dir;
-  const std::string bytes = savedBytes(dir);
-  const std::size_t payloadStart = payloadStartOf(bytes);
-  const std::size_t at = firstNumberLength(bytes, payloadStart);
-  ASSERT_NE(at, std::string::npos) << "no written number in the payload";
-  std::string altered = bytes;
-  const std::size_t text = at + 8, numeratorLength = static_cast<unsigned char>(bytes[text + 1]);
-  const std::size_t denominatorEnd = at + 8 + static_cast<unsigned char>(bytes[at]);  // lengths below 256
+  const SavedNumber number = firstSavedNumber(dir);
+  ASSERT_NE(number.at, std::string::npos) << "no written number in the payload";
+  std::string altered = number.bytes;
+  const std::size_t text = number.at + 8, numeratorLength = static_cast<unsigned char>(altered[text + 1]);
+  const std::size_t textEnd = text + static_cast<unsigned char>(altered[number.at]);  // lengths below 256
   altered[text + 5 + numeratorLength - 1] = 2;
-  altered[denominatorEnd - 1] = 4;
+  altered[textEnd - 1] = 4;
   const std::string other = dir.file("unreduced.fspace");
-  write(other, savedSpaceFileAround(altered.substr(payloadStart)));
+  write(other, savedSpaceFileAround(altered.substr(number.payloadStart)));
   EXPECT_NE(loadError(other).find("inconsistent saved free space at a number"), std::string::npos) << loadError(other);
 }
 

@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
+#include <sstream>
+#include <vector>
 
 namespace freespace {
 
@@ -15,6 +18,8 @@ std::string cellColour(std::uint32_t cell, bool dark) {
   static const char* const kDark[] = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2"};
   return (dark ? kDark : kLight)[cell % 7];
 }
+
+const std::string kBlocked = "#555555", kOtherPiece = "#aaaaaa";
 
 struct View {
   double left, bottom, width, height;
@@ -34,8 +39,9 @@ View viewOf(const FreeSpace& space, int resolution) {
   return view;
 }
 
-/// The pixels, run by run along each row.
-void writePixels(const FreeSpace& space, const View& view, double theta, std::ostream& out) {
+/// The pixels, run by run along each row; returns the free cells met.
+std::set<std::uint32_t> writePixels(const FreeSpace& space, const View& view, double theta, std::ostream& out) {
+  std::set<std::uint32_t> cells;
   const double pixelWidth = view.width / view.columns, pixelHeight = view.height / view.rows;
   out << "<g shape-rendering=\"crispEdges\">\n";
   for (int row = 0; row < view.rows; ++row) {
@@ -46,7 +52,8 @@ void writePixels(const FreeSpace& space, const View& view, double theta, std::os
       std::string colour;
       if (column < view.columns) {
         const Location location = space.locate({view.left + (column + 0.5) * pixelWidth, y, theta});
-        colour = location.free ? cellColour(location.cell, false) : "#555555";
+        colour = location.free ? cellColour(location.cell, false) : kBlocked;
+        if (location.free) cells.insert(location.cell);
       }
       if (colour == runColour) continue;
       if (!runColour.empty()) {
@@ -59,6 +66,7 @@ void writePixels(const FreeSpace& space, const View& view, double theta, std::os
     }
   }
   out << "</g>\n";
+  return cells;
 }
 
 /// The pieces of segment of every sub-face active at the angle.
@@ -82,7 +90,7 @@ void writePieces(const FreeSpace& space, double theta, double strokeWidth, std::
       const std::array<double, 2> a = toDouble(segment.at(low)), b = toDouble(segment.at(high));
       const std::optional<std::uint32_t> cell = space.cellOfSubFace({patch, slab->faces[gap]});
       out << "<line x1=\"" << a[0] << "\" y1=\"" << a[1] << "\" x2=\"" << b[0] << "\" y2=\"" << b[1] << "\" stroke=\""
-          << (cell ? cellColour(*cell, true) : std::string("#aaaaaa")) << "\" stroke-width=\""
+          << (cell ? cellColour(*cell, true) : kOtherPiece) << "\" stroke-width=\""
           << (cell ? 2 : 0.6) * strokeWidth << "\"/>\n";
     }
   }
@@ -105,20 +113,104 @@ void writeRobot(const FreeSpace& space, const std::array<double, 2>& at, double 
   out << "</g>\n";
 }
 
+/// Steps of 1, 2 or 5 times a power of ten, about `count` of them across `span`.
+double tickStep(double span, int count) {
+  const double rough = span / count, power = std::pow(10, std::floor(std::log10(rough)));
+  for (const double factor : {1.0, 2.0, 5.0}) {
+    if (factor * power >= rough) return factor * power;
+  }
+  return 10 * power;
+}
+
+/// The picture's frame in pixels: the plot between margins for the title and the
+/// axes' labels, and the legend on the right.
+struct Frame {
+  double left = 70, top = 40, plotWidth, plotHeight, legendWidth = 230, bottom = 50;
+  double width() const { return left + plotWidth + legendWidth; }
+  double height() const { return top + plotHeight + bottom; }
+};
+
+/// The axes below and left of the plot, with ticks labelled in the input's units.
+void writeAxes(const View& view, const Frame& frame, std::ostream& out) {
+  const double perUnit = frame.plotWidth / view.width;
+  const auto pixelX = [&](double x) { return frame.left + (x - view.left) * perUnit; };
+  const auto pixelY = [&](double y) { return frame.top + frame.plotHeight - (y - view.bottom) * perUnit; };
+  const double step = tickStep(std::max(view.width, view.height), 6), base = frame.top + frame.plotHeight;
+  out << "<g font-family=\"sans-serif\" font-size=\"12\" stroke=\"#000000\">\n"
+      << "<rect x=\"" << frame.left << "\" y=\"" << frame.top << "\" width=\"" << frame.plotWidth << "\" height=\""
+      << frame.plotHeight << "\" fill=\"none\"/>\n";
+  for (double x = std::ceil(view.left / step) * step; x <= view.left + view.width; x += step) {
+    out << "<line x1=\"" << pixelX(x) << "\" y1=\"" << base << "\" x2=\"" << pixelX(x) << "\" y2=\"" << base + 5
+        << "\"/><text x=\"" << pixelX(x) << "\" y=\"" << base + 18 << "\" text-anchor=\"middle\" stroke=\"none\">"
+        << (std::fabs(x) < step / 2 ? 0 : x) << "</text>\n";
+  }
+  for (double y = std::ceil(view.bottom / step) * step; y <= view.bottom + view.height; y += step) {
+    out << "<line x1=\"" << frame.left - 5 << "\" y1=\"" << pixelY(y) << "\" x2=\"" << frame.left << "\" y2=\""
+        << pixelY(y) << "\"/><text x=\"" << frame.left - 8 << "\" y=\"" << pixelY(y) + 4
+        << "\" text-anchor=\"end\" stroke=\"none\">" << (std::fabs(y) < step / 2 ? 0 : y) << "</text>\n";
+  }
+  out << "<text x=\"" << frame.left + frame.plotWidth / 2 << "\" y=\"" << base + 40
+      << "\" text-anchor=\"middle\" stroke=\"none\">x (the meshes' units)</text>\n"
+      << "<text transform=\"translate(" << 18 << "," << frame.top + frame.plotHeight / 2
+      << ") rotate(-90)\" text-anchor=\"middle\" stroke=\"none\">y (the meshes' units)</text>\n</g>\n";
+}
+
+/// What the colours and lines mean: blocked, each free cell met, the boundary
+/// pieces, the robot.
+void writeLegend(const Frame& frame, const std::set<std::uint32_t>& cells, bool robot, std::ostream& out) {
+  double y = frame.top + 10;
+  const double x = frame.left + frame.plotWidth + 20;
+  out << "<g font-family=\"sans-serif\" font-size=\"12\">\n";
+  const auto swatch = [&](const std::string& fill, const std::string& label) {
+    out << "<rect x=\"" << x << "\" y=\"" << y - 10 << "\" width=\"14\" height=\"12\" fill=\"" << fill
+        << "\" stroke=\"#000000\" stroke-width=\"0.5\"/><text x=\"" << x + 22 << "\" y=\"" << y << "\">" << label
+        << "</text>\n";
+    y += 20;
+  };
+  const auto line = [&](const std::string& stroke, double width, const std::string& label) {
+    out << "<line x1=\"" << x << "\" y1=\"" << y - 4 << "\" x2=\"" << x + 14 << "\" y2=\"" << y - 4 << "\" stroke=\""
+        << stroke << "\" stroke-width=\"" << width << "\"/><text x=\"" << x + 22 << "\" y=\"" << y << "\">" << label
+        << "</text>\n";
+    y += 20;
+  };
+  swatch(kBlocked, "blocked (robot touches or overlaps)");
+  for (std::uint32_t cell : cells) {
+    swatch(cellColour(cell, false), "free, cell " + std::to_string(cell) + (cell == 0 ? " (unbounded)" : ""));
+  }
+  for (std::uint32_t cell : cells) line(cellColour(cell, true), 3, "boundary of cell " + std::to_string(cell));
+  line(kOtherPiece, 1, "other contact pieces");
+  if (robot) swatch("#a6a6a6", "the robot at the point given");
+  out << "</g>\n";
+}
+
 }  // namespace
 
 void writeSliceSvg(const FreeSpace& space, const SliceSvgOptions& options, std::ostream& out) {
   const View view = viewOf(space, options.resolution);
   const double pixel = view.width / view.columns;
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << 3 * view.columns << "\" height=\"" << 3 * view.rows
-      << "\" viewBox=\"" << view.left << " " << -(view.bottom + view.height) << " " << view.width << " " << view.height
-      << "\">\n"
-      << "<title>free space slice at theta = " << options.theta << " (" << space.cellCount() << " free cells)</title>\n"
-      << "<g transform=\"scale(1,-1)\">\n";
-  writePixels(space, view, options.theta, out);
+  Frame frame;
+  frame.plotWidth = 3 * view.columns;  // three picture pixels per located pixel
+  const double perUnit = frame.plotWidth / view.width;
+  frame.plotHeight = perUnit * view.height;
+  std::ostringstream title;
+  title << "Free space slice at theta = " << options.theta << " rad (" << options.theta * 180 / M_PI << " degrees), "
+        << space.cellCount() << " free cells";
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << frame.width() << "\" height=\"" << frame.height()
+      << "\" viewBox=\"0 0 " << frame.width() << " " << frame.height() << "\">\n"
+      << "<title>" << title.str() << "</title>\n"
+      << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n"
+      << "<text x=\"" << frame.left << "\" y=\"24\" font-family=\"sans-serif\" font-size=\"16\">" << title.str()
+      << "</text>\n"
+      // The plot in the input's (x, y), y up.
+      << "<g transform=\"translate(" << frame.left << "," << frame.top + frame.plotHeight << ") scale(" << perUnit << ","
+      << -perUnit << ") translate(" << -view.left << "," << -view.bottom << ")\">\n";
+  const std::set<std::uint32_t> cells = writePixels(space, view, options.theta, out);
   writePieces(space, options.theta, pixel / 3, out);
   if (options.robotAt) writeRobot(space, *options.robotAt, options.theta, out);
-  out << "</g>\n</svg>\n";
+  out << "</g>\n";
+  writeAxes(view, frame, out);
+  writeLegend(frame, cells, options.robotAt.has_value(), out);
+  out << "</svg>\n";
 }
 
 }  // namespace freespace
