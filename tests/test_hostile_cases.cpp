@@ -7,7 +7,8 @@
 //   MeshFileChecks.* (every prefix, every byte edit, counts beyond the file, hostile
 //   COLLADA) and FuzzRegressions.EveryFoundInputIsReadOrRefusedInTime.
 // Valid meshes refused or malformed accepted: MeshReader.ReadsOffFacesOfAnySize,
-//   MeshFileChecks.FacesWithFewerThanThreeVerticesAreRefused.
+//   MeshFileChecks.FacesWithFewerThanThreeVerticesAreRefused, and a COLLADA
+//   coordinate the import library would misread: MeshFileChecks.HostileColladaIsRefusedNamingTheDefect.
 // Angles of 1e15 and beyond: AngleReduction.* (check and locate against the exact test).
 // Output to a full device, signals, concurrent writers, "already exists": OutputFile.*,
 //   CliFreeSpace.InterruptStopsABuildWithStatus130 / TerminationStopsABuildWithStatus143.

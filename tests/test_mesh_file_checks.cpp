@@ -165,6 +165,12 @@ TEST(MeshFileChecks, HostileColladaIsRefusedNamingTheDefect) {
             std::string::npos);
   EXPECT_NE(problemOf(dir, "words.dae", edited("<p>", "<p>x ")).find("holds something other than indices"),
             std::string::npos);
+  // A coordinate the import library would read as another number (hexadecimal: 0).
+  const std::size_t first = content.find_first_not_of(" \n", content.find('>', content.find("<float_array")) + 1);
+  const std::string hexadecimal =
+      content.substr(0, first) + "0x1p2" + content.substr(content.find_first_of(" <", first));
+  EXPECT_NE(problemOf(dir, "hexadecimal.dae", hexadecimal).find("'0x1p2' is not a decimal number"), std::string::npos)
+      << problemOf(dir, "hexadecimal.dae", hexadecimal);
 }
 
 TEST(MeshFileChecks, CoordinatesBeyondSinglePrecisionAreReportedAsRead) {

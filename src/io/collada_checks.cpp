@@ -35,14 +35,33 @@ void forEachElement(const pugi::xml_node& root, Visitor visit) {
   }
 }
 
+// Calls visit(word) for each whitespace-separated word of the text.
+template <class Visitor>
+void forEachWord(const char* text, Visitor visit) {
+  while (*text) {
+    while (*text && std::isspace(static_cast<unsigned char>(*text))) ++text;
+    const char* start = text;
+    while (*text && !std::isspace(static_cast<unsigned char>(*text))) ++text;
+    if (text > start) visit(std::string_view(start, static_cast<std::size_t>(text - start)));
+  }
+}
+
 std::size_t countWords(const char* text) {
   std::size_t count = 0;
-  for (bool inWord = false; *text; ++text) {
-    const bool space = std::isspace(static_cast<unsigned char>(*text));
-    count += !space && !inWord;
-    inWord = !space;
-  }
+  forEachWord(text, [&](std::string_view) { ++count; });
   return count;
+}
+
+// The first word of an array's text that is not a number of its kind: decimal (as
+// the import library reads them) in a <float_array>, whole in an <int_array>.
+std::string firstNonNumber(const char* text, bool floats) {
+  std::string bad;
+  forEachWord(text, [&](std::string_view word) {
+    double number = 0;
+    std::int64_t whole = 0;
+    if (bad.empty() && !(floats ? parseNumber(word, number) : parseWhole(word, whole))) bad = std::string(word);
+  });
+  return bad;
 }
 
 std::string elementDefect(const pugi::xml_node& element, const std::string& defect) {
@@ -103,7 +122,7 @@ bool indicesBelow(const char* text, long double limit) {
   return true;
 }
 
-// <float_array> counts, <accessor> reach and index lists.
+// <float_array> and <int_array> numbers and counts, <accessor> reach and index lists.
 void requireConsistentArrays(const std::string& path, const pugi::xml_document& document) {
   std::map<std::string, std::size_t> arraySizes;
   std::size_t values = 0;
@@ -111,6 +130,10 @@ void requireConsistentArrays(const std::string& path, const pugi::xml_document& 
     const bool floats = std::strcmp(element.name(), "float_array") == 0;
     if (!floats && std::strcmp(element.name(), "int_array") != 0) return;
     const std::size_t words = countWords(element.child_value());
+    if (const std::string bad = firstNonNumber(element.child_value(), floats); !bad.empty()) {
+      throw InputError(path, elementDefect(element, "'" + printable(bad) + "' is not " +
+                                                        (floats ? "a decimal number" : "a whole number")));
+    }
     std::int64_t count = -1;
     if (!parseWhole(element.attribute("count").value(), count) || count != static_cast<std::int64_t>(words)) {
       throw InputError(path, elementDefect(element, "count=\"" + printable(element.attribute("count").value()) +
