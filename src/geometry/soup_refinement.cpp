@@ -4,9 +4,7 @@
 #include <optional>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Projection_traits_xy_3.h>
-#include <CGAL/Projection_traits_xz_3.h>
-#include <CGAL/Projection_traits_yz_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/intersections.h>
 
 #include "disjoint_sets.h"
@@ -81,55 +79,96 @@ int droppedAxis(const ExactTriangle& triangle) {
   return x >= y && x >= z ? 0 : (y >= z ? 1 : 2);
 }
 
-// Triangulates the union of a cluster's coplanar triangles with its constraints, in a
-// projection given by `Traits`, and appends the faces inside the triangles.
-template <class Traits>
+// A cluster's plane seen in the coordinate plane that keeps its area: points are
+// projected once (dropping one coordinate) and the triangulation runs on plane
+// points, whose predicates CGAL filters directly; a new point is lifted back onto
+// the plane exactly (solving the plane's equation for the dropped coordinate).
+class ClusterPlane {
+ public:
+  using Point2 = ExactKernel::Point_2;
+
+  explicit ClusterPlane(const ExactTriangle& triangle)
+      : plane_(triangle[0], triangle[1], triangle[2]), dropped_(droppedAxis(triangle)) {}
+
+  Point2 project(const ExactPoint& p) const {
+    switch (dropped_) {
+      case 0:
+        return {p.y(), p.z()};
+      case 1:
+        return {p.z(), p.x()};
+      default:
+        return {p.x(), p.y()};
+    }
+  }
+
+  ExactPoint lift(const Point2& q) const {
+    const ExactKernel::FT a = plane_.a(), b = plane_.b(), c = plane_.c(), d = plane_.d();
+    switch (dropped_) {
+      case 0:
+        return {-(b * q.x() + c * q.y() + d) / a, q.x(), q.y()};
+      case 1:
+        return {q.y(), -(a * q.y() + c * q.x() + d) / b, q.x()};
+      default:
+        return {q.x(), q.y(), -(a * q.x() + b * q.y() + d) / c};
+    }
+  }
+
+ private:
+  ExactKernel::Plane_3 plane_;
+  int dropped_;
+};
+
+// Triangulates the union of a cluster's coplanar triangles with its constraints and
+// appends the faces inside the triangles (each vertex of the soup keeps its index).
 void triangulateCluster(const std::vector<Index>& members, const std::vector<TriangleIndices>& triangles,
                         const Constraints& constraints, PointIndex& points, SoupComplex& complex) {
-  using Triangulation = CGAL::Constrained_Delaunay_triangulation_2<Traits, CGAL::Default, CGAL::Exact_intersections_tag>;
+  using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<std::optional<Index>, ExactKernel>;
+  using FaceBase = CGAL::Constrained_triangulation_face_base_2<ExactKernel>;
+  using Triangulation = CGAL::Constrained_Delaunay_triangulation_2<
+      ExactKernel, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>, CGAL::Exact_intersections_tag>;
+  const ClusterPlane plane(exactTriangle(points, triangles[members.front()]));
   Triangulation triangulation;
+  std::map<Index, ClusterPlane::Point2> projected;  // the members' corners
+  const auto corner = [&](Index vertex) {
+    const auto [found, inserted] = projected.try_emplace(vertex);
+    if (inserted) found->second = plane.project(points[vertex]);
+    return found->second;
+  };
+  const auto insertCorner = [&](Index vertex) {
+    const auto handle = triangulation.insert(corner(vertex));
+    handle->info() = vertex;
+    return handle;
+  };
   for (Index t : members) {
-    for (int corner = 0; corner < 3; ++corner) {
-      triangulation.insert_constraint(points[triangles[t][corner]], points[triangles[t][(corner + 1) % 3]]);
+    for (int k = 0; k < 3; ++k) {
+      triangulation.insert_constraint(insertCorner(triangles[t][k]), insertCorner(triangles[t][(k + 1) % 3]));
     }
   }
   for (const ExactSegment& segment : constraints.segments) {
     if (segment.is_degenerate()) {
-      triangulation.insert(segment.source());
+      triangulation.insert(plane.project(segment.source()));
     } else {
-      triangulation.insert_constraint(segment.source(), segment.target());
+      triangulation.insert_constraint(plane.project(segment.source()), plane.project(segment.target()));
     }
   }
-  for (const ExactPoint& point : constraints.points) triangulation.insert(point);
+  for (const ExactPoint& point : constraints.points) triangulation.insert(plane.project(point));
 
-  const auto orientation = Traits().orientation_2_object();
-  const auto inside = [&](Index t, const ExactPoint& point) {
-    const ExactPoint &a = points[triangles[t][0]], &b = points[triangles[t][1]], &c = points[triangles[t][2]];
-    const CGAL::Orientation turn = orientation(a, b, c);
-    return orientation(a, b, point) == turn && orientation(b, c, point) == turn && orientation(c, a, point) == turn;
+  const auto inside = [&](Index t, const ClusterPlane::Point2& point) {
+    const ClusterPlane::Point2 &a = corner(triangles[t][0]), &b = corner(triangles[t][1]), &c = corner(triangles[t][2]);
+    const CGAL::Orientation turn = CGAL::orientation(a, b, c);
+    return CGAL::orientation(a, b, point) == turn && CGAL::orientation(b, c, point) == turn &&
+           CGAL::orientation(c, a, point) == turn;
+  };
+  const auto indexOf = [&](const typename Triangulation::Vertex_handle& vertex) {
+    return vertex->info() ? *vertex->info() : points.indexOf(plane.lift(vertex->point()));
   };
   for (auto face = triangulation.finite_faces_begin(); face != triangulation.finite_faces_end(); ++face) {
-    const ExactPoint centre = CGAL::centroid(face->vertex(0)->point(), face->vertex(1)->point(), face->vertex(2)->point());
+    const ClusterPlane::Point2 centre =
+        CGAL::centroid(face->vertex(0)->point(), face->vertex(1)->point(), face->vertex(2)->point());
     const auto source = std::find_if(members.begin(), members.end(), [&](Index t) { return inside(t, centre); });
     if (source == members.end()) continue;  // in the convex hull of the triangles, outside them
-    complex.faces.push_back({points.indexOf(face->vertex(0)->point()), points.indexOf(face->vertex(1)->point()),
-                             points.indexOf(face->vertex(2)->point())});
+    complex.faces.push_back({indexOf(face->vertex(0)), indexOf(face->vertex(1)), indexOf(face->vertex(2))});
     complex.sourceTriangle.push_back(*source);
-  }
-}
-
-void triangulateCluster(const std::vector<Index>& members, const std::vector<TriangleIndices>& triangles,
-                        const Constraints& constraints, PointIndex& points, SoupComplex& complex) {
-  switch (droppedAxis(exactTriangle(points, triangles[members.front()]))) {
-    case 0:
-      return triangulateCluster<CGAL::Projection_traits_yz_3<ExactKernel>>(members, triangles, constraints, points,
-                                                                            complex);
-    case 1:
-      return triangulateCluster<CGAL::Projection_traits_xz_3<ExactKernel>>(members, triangles, constraints, points,
-                                                                            complex);
-    default:
-      return triangulateCluster<CGAL::Projection_traits_xy_3<ExactKernel>>(members, triangles, constraints, points,
-                                                                            complex);
   }
 }
 
