@@ -159,8 +159,11 @@ void triangulateCluster(const std::vector<Index>& members, const std::vector<Tri
     return CGAL::orientation(a, b, point) == turn && CGAL::orientation(b, c, point) == turn &&
            CGAL::orientation(c, a, point) == turn;
   };
+  // A new vertex is lifted and looked up once (its faces share it): the lookup
+  // compares equal points, which makes CGAL evaluate them exactly.
   const auto indexOf = [&](const typename Triangulation::Vertex_handle& vertex) {
-    return vertex->info() ? *vertex->info() : points.indexOf(plane.lift(vertex->point()));
+    if (!vertex->info()) vertex->info() = points.indexOf(plane.lift(vertex->point()));
+    return *vertex->info();
   };
   for (auto face = triangulation.finite_faces_begin(); face != triangulation.finite_faces_end(); ++face) {
     const ClusterPlane::Point2 centre =
