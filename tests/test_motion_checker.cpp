@@ -12,6 +12,7 @@
 
 #include "freespace/collision/exact_collision_checker.h"
 #include "freespace/problem/planar_problem.h"
+#include "freespace/scenes/scene_generator.h"
 #include "freespace/space/motion_checker.h"
 
 using namespace freespace;
@@ -107,6 +108,23 @@ TEST(MotionChecker, ASlideIntoAWallStopsBeforeIt) {
   const double left = clearance.upper - 0.4 * reach;  // at its end, the least along it
   EXPECT_LE(free.minClearance, left * (1 + 1e-12));
   EXPECT_GE(free.minClearance, 0.98 * left);
+}
+
+// Where the environment lies above the robot's heights nothing can be touched: the
+// clearance is unbounded and any motion is free at once (an unbounded clearance once
+// made the check halve the motion without end).
+TEST(MotionChecker, AMotionWhereNothingCanBeTouchedIsFree) {
+  const Mesh robot = makeBarRobot(2, 0.5, 0.5);
+  const Mesh world = makeCheckedMesh(makeBox(Box3(Point3(-1, -1, 2), Point3(1, 1, 3))), "shelf");
+  const FreeSpace space(robot, world);
+  const MotionChecker motions(space);
+  EXPECT_EQ(space.clearance({0, 0, 0}).lower, HUGE_VAL);
+  for (const double slack : {1.0, 0.02}) {
+    const MotionCheck check = motions.check({-3, 0, 0}, {3, 1, 2}, slack);
+    EXPECT_TRUE(check.free) << slack;
+    EXPECT_EQ(check.minClearance, HUGE_VAL) << slack;
+    EXPECT_LE(check.clearanceQueries, 2u) << slack;
+  }
 }
 
 // OMPL's SO(2) interpolation: the shorter arc, across theta = +-pi.

@@ -67,7 +67,9 @@ MotionCheck MotionChecker::check(const Pose2& from, const Pose2& to, double clea
     parts.pop_back();
     if (part.clearanceFrom <= 0) break;  // blocked at its start
     const double least = leastClearanceOn(part.clearanceFrom, part.clearanceTo, (part.to - part.from) * length);
-    const bool certain = least > 0 && least >= (1 - clearanceSlack) * std::min(part.clearanceFrom, part.clearanceTo);
+    // (Without a slack, an unbounded clearance, where nothing can be touched, needs no comparison.)
+    const bool certain =
+        least > 0 && (clearanceSlack >= 1 || least >= (1 - clearanceSlack) * std::min(part.clearanceFrom, part.clearanceTo));
     if (certain) {
       result.lastFreeFraction = part.to;
       result.minClearance = std::min(result.minClearance, least);
