@@ -20,6 +20,9 @@ std::string cellColour(std::uint32_t cell, bool dark) {
 }
 
 const std::string kBlocked = "#555555", kOtherPiece = "#aaaaaa";
+// The robot's outline: black, seen through.
+const std::string kRobotFill = "#000000";
+constexpr double kRobotOpacity = 0.35;
 
 struct View {
   double left, bottom, width, height;
@@ -86,7 +89,7 @@ void writePieces(const FreeSpace& space, double theta, double strokeWidth, std::
     if (!slab) continue;  // the angle is an event of the patch
     const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[patch], cosine, sine);
     for (std::size_t gap = 0; gap < slab->faces.size(); ++gap) {
-      const auto [low, high] = slices::pieceOf(arrangement, patch, *slab, gap, segment, cosine, sine);
+      const auto [low, high] = slices::pieceOf(arrangement, patch, *slab, gap, segment, cosine, sine).value();
       const std::array<double, 2> a = toDouble(segment.at(low)), b = toDouble(segment.at(high));
       const std::optional<std::uint32_t> cell = space.cellOfSubFace({patch, slab->faces[gap]});
       out << "<line x1=\"" << a[0] << "\" y1=\"" << a[1] << "\" x2=\"" << b[0] << "\" y2=\"" << b[1] << "\" stroke=\""
@@ -101,7 +104,7 @@ void writePieces(const FreeSpace& space, double theta, double strokeWidth, std::
 void writeRobot(const FreeSpace& space, const std::array<double, 2>& at, double theta, std::ostream& out) {
   const Mesh& robot = space.meshes().robot;
   const double c = std::cos(theta), s = std::sin(theta), scale = space.meshes().scale;
-  out << "<g fill=\"#000000\" fill-opacity=\"0.35\" stroke=\"none\">\n";
+  out << "<g fill=\"" << kRobotFill << "\" fill-opacity=\"" << kRobotOpacity << "\" stroke=\"none\">\n";
   for (const TriangleIndices& triangle : robot.triangles()) {
     out << "<polygon points=\"";
     for (std::uint32_t vertex : triangle) {
@@ -161,10 +164,10 @@ void writeLegend(const Frame& frame, const std::set<std::uint32_t>& cells, bool 
   double y = frame.top + 10;
   const double x = frame.left + frame.plotWidth + 20;
   out << "<g font-family=\"sans-serif\" font-size=\"12\">\n";
-  const auto swatch = [&](const std::string& fill, const std::string& label) {
+  const auto swatch = [&](const std::string& fill, const std::string& label, double opacity = 1) {
     out << "<rect x=\"" << x << "\" y=\"" << y - 10 << "\" width=\"14\" height=\"12\" fill=\"" << fill
-        << "\" stroke=\"#000000\" stroke-width=\"0.5\"/><text x=\"" << x + 22 << "\" y=\"" << y << "\">" << label
-        << "</text>\n";
+        << "\" fill-opacity=\"" << opacity << "\" stroke=\"#000000\" stroke-width=\"0.5\"/><text x=\"" << x + 22
+        << "\" y=\"" << y << "\">" << label << "</text>\n";
     y += 20;
   };
   const auto line = [&](const std::string& stroke, double width, const std::string& label) {
@@ -179,7 +182,7 @@ void writeLegend(const Frame& frame, const std::set<std::uint32_t>& cells, bool 
   }
   for (std::uint32_t cell : cells) line(cellColour(cell, true), 3, "boundary of cell " + std::to_string(cell));
   line(kOtherPiece, 1, "other contact pieces");
-  if (robot) swatch("#a6a6a6", "the robot at the point given");
+  if (robot) swatch(kRobotFill, "the robot at the point given", kRobotOpacity);
   out << "</g>\n";
 }
 

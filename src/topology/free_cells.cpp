@@ -123,7 +123,8 @@ class Nesting {
     for (const PieceEnd& end : ends) {
       if (end.lowestX > leftmostX) continue;
       const slices::ExactSegment segment = slices::segmentAt(arrangement_.patches[end.face.patch], cosine, sine);
-      const auto [low, high] = slices::pieceOf(arrangement_, end.face.patch, *end.slab, end.gap, segment, cosine, sine);
+      const auto [low, high] =
+          slices::pieceOf(arrangement_, end.face.patch, *end.slab, end.gap, segment, cosine, sine).value();
       for (const Rational& lambda : {low, high}) {
         const Point point = segment.at(lambda);
         if (!best || leftOf(point, *best)) best = point;

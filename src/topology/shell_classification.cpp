@@ -51,7 +51,7 @@ std::optional<PieceMiddle> middleInDoubles(const Arrangement& arrangement, SubFa
 PieceMiddle middleExactly(const Arrangement& arrangement, SubFaceId face, const PatchSlab& slab, std::size_t gap) {
   const auto [cosine, sine] = exactCosSin(slab.sample);
   const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[face.patch], cosine, sine);
-  const auto [low, high] = slices::pieceOf(arrangement, face.patch, slab, gap, segment, cosine, sine);
+  const auto [low, high] = slices::pieceOf(arrangement, face.patch, slab, gap, segment, cosine, sine).value();
   return {segment.at((low + high) / 2), segment.nx, segment.ny};
 }
 

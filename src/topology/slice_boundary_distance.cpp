@@ -70,14 +70,6 @@ PieceDistance distanceToPiece(const BoundaryPiece& piece, const IntervalPoint& e
   return {piece, Interval(std::max(lower, 0.0), upper), nearest};
 }
 
-/// Where the line of `other` crosses the segment, as lambda; nothing when it is
-/// parallel to it.
-std::optional<Rational> exactCrossing(const slices::ExactSegment& segment, const slices::ExactSegment& other) {
-  const Rational v0 = other.valueAt(segment.end0), v1 = other.valueAt(segment.end1);
-  if (v0 == v1) return std::nullopt;
-  return Rational(v0 / (v0 - v1));
-}
-
 /// The slabs of a patch whose gaps are the pieces of its segment at the angle: the
 /// slab holding it, or at one of the patch's events the slabs ending and starting
 /// there (the pieces at an event are limits of theirs).
@@ -137,20 +129,14 @@ struct SliceBoundaryDistance::Impl {
     const auto [cosine, sine] = exactCosSin(angle);
     const std::uint32_t patch = found.piece.patch;
     const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[patch], cosine, sine);
-    const std::vector<std::uint32_t>& curves = found.piece.slab->curves;
-    const auto lambdaOf = [&](std::uint32_t curve) {
-      const std::uint32_t other = arrangement.curves[curve].other(patch);
-      return exactCrossing(segment, slices::segmentAt(arrangement.patches[other], cosine, sine));
-    };
-    const std::size_t gap = found.piece.gap;
-    const std::optional<Rational> low = gap == 0 ? Rational(0) : lambdaOf(curves[gap - 1]);
-    const std::optional<Rational> high = gap == curves.size() ? Rational(1) : lambdaOf(curves[gap]);
-    if (!low || !high) return std::nullopt;
+    const auto piece = slices::pieceOf(arrangement, patch, *found.piece.slab, found.piece.gap, segment, cosine, sine);
+    if (!piece) return std::nullopt;
+    const auto& [low, high] = *piece;
     const Rational wx = segment.end1[0] - segment.end0[0], wy = segment.end1[1] - segment.end0[1];
     const Rational vx = from[0] - segment.end0[0], vy = from[1] - segment.end0[1];
     const Rational squaredLength = wx * wx + wy * wy;
-    Rational lambda = *low;
-    if (squaredLength != 0) lambda = std::max(*low, std::min(Rational((vx * wx + vy * wy) / squaredLength), *high));
+    Rational lambda = low;
+    if (squaredLength != 0) lambda = std::max(low, std::min(Rational((vx * wx + vy * wy) / squaredLength), high));
     const Rational dx = vx - lambda * wx, dy = vy - lambda * wy;
     const Rational squaredDistance = dx * dx + dy * dy;
     const RoundingScope rounding;
@@ -164,18 +150,16 @@ struct SliceBoundaryDistance::Impl {
     const auto byUpper = [](const PieceDistance& a, const PieceDistance& b) {
       return a.distance.upper() < b.distance.upper();
     };
+    // The distance, the least of the pieces', is at least their least lower bound.
     const auto lowest = [&] {
-      double lower = kInfinity;
-      const double best = std::min_element(pieces.begin(), pieces.end(), byUpper)->distance.upper();
-      for (const PieceDistance& piece : pieces) {
-        if (piece.distance.lower() <= best) lower = std::min(lower, piece.distance.lower());
-      }
-      return lower;
+      return std::min_element(pieces.begin(), pieces.end(), [](const PieceDistance& a, const PieceDistance& b) {
+               return a.distance.lower() < b.distance.lower();
+             })->distance.lower();
     };
     const double best = std::min_element(pieces.begin(), pieces.end(), byUpper)->distance.upper();
     if (std::isinf(best) || best - lowest() > relativeWidth * best) {
       for (PieceDistance& piece : pieces) {
-        if (piece.distance.lower() > best) continue;
+        if (piece.distance.lower() > best) continue;  // certainly not the nearest
         if (const std::optional<Interval> exact = exactDistance(piece, angle, from)) piece.distance = *exact;
       }
     }

@@ -311,7 +311,8 @@ RayHit SliceRays::Impl::castExactly(const AlgebraicAngle& angle, const Point& fr
   std::size_t gap = 0;
   for (std::uint32_t curve : slab->curves) {
     const std::uint32_t other = arrangement.curves[curve].other(first->patch);
-    const Rational lambda = slices::crossingLambda(own, slices::segmentAt(arrangement.patches[other], cosine, sine));
+    const Rational lambda =
+        slices::crossingLambda(own, slices::segmentAt(arrangement.patches[other], cosine, sine)).value();
     if (lambda == first->lambda) return hit;  // through a curve's crossing
     gap += lambda < first->lambda;
   }

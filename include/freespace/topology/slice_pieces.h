@@ -34,22 +34,29 @@ inline ExactSegment segmentAt(const PatchGeometry& patch, const Rational& cosine
           spiralPoint(spiralOf<Rational>(patch.ends[1]), cosine, sine), line.nx, line.ny, line.w};
 }
 
-/// Where the line of `other` crosses the segment, as lambda from end 0.
-inline Rational crossingLambda(const ExactSegment& segment, const ExactSegment& other) {
+/// Where the line of `other` crosses the segment, as lambda from end 0; nothing when
+/// it is parallel to the segment (which a curve's other patch can be only at one of
+/// the slab's ends, never inside it).
+inline std::optional<Rational> crossingLambda(const ExactSegment& segment, const ExactSegment& other) {
   const Rational v0 = other.valueAt(segment.end0), v1 = other.valueAt(segment.end1);
-  return v0 / (v0 - v1);
+  if (v0 == v1) return std::nullopt;
+  return Rational(v0 / (v0 - v1));
 }
 
 /// The first and last lambda of the sub-face at index `gap` of `slab` (a slab of
-/// `patch` holding the angle of `segment`).
-inline std::pair<Rational, Rational> pieceOf(const Arrangement& arrangement, std::uint32_t patch,
-                                             const PatchSlab& slab, std::size_t gap, const ExactSegment& segment,
-                                             const Rational& cosine, const Rational& sine) {
+/// `patch` holding the angle of `segment`, or ending or starting there); nothing when
+/// an end is a crossing with a parallel line (see crossingLambda).
+inline std::optional<std::pair<Rational, Rational>> pieceOf(const Arrangement& arrangement, std::uint32_t patch,
+                                                            const PatchSlab& slab, std::size_t gap,
+                                                            const ExactSegment& segment, const Rational& cosine,
+                                                            const Rational& sine) {
   const auto lambdaOf = [&](std::uint32_t curve) {
     return crossingLambda(segment, segmentAt(arrangement.patches[arrangement.curves[curve].other(patch)], cosine, sine));
   };
-  return {gap == 0 ? Rational(0) : lambdaOf(slab.curves[gap - 1]),
-          gap == slab.curves.size() ? Rational(1) : lambdaOf(slab.curves[gap])};
+  const std::optional<Rational> low = gap == 0 ? Rational(0) : lambdaOf(slab.curves[gap - 1]);
+  const std::optional<Rational> high = gap == slab.curves.size() ? Rational(1) : lambdaOf(slab.curves[gap]);
+  if (!low || !high) return std::nullopt;
+  return std::make_pair(*low, *high);
 }
 
 /// The slice at an angle in an interval number type T, a filter before the exact
