@@ -56,12 +56,6 @@ std::pair<double, double> anglesOf(const PatchSlab& slab) {
   return {from, to};
 }
 
-double farthestReach(const Mesh& robot) {
-  double reach = 0;
-  for (const Point3& p : robot.vertices()) reach = std::max(reach, std::hypot(p.x(), p.y()));
-  return reach;
-}
-
 }  // namespace
 
 void writeBoundaryPly(const FreeSpace& space, const BoundaryPlyOptions& options, std::ostream& out) {
@@ -69,7 +63,7 @@ void writeBoundaryPly(const FreeSpace& space, const BoundaryPlyOptions& options,
   // Written in the input's coordinates: the construction's are scaled (FreeSpace::meshes).
   const double scale = space.meshes().scale;
   // (A solid robot reaches beyond its centre; 1 guards a degenerate one.)
-  const double farthest = farthestReach(space.meshes().robot) / scale, reach = farthest > 0 ? farthest : 1;
+  const double farthest = space.meshes().robot.horizontalReach() / scale, reach = farthest > 0 ? farthest : 1;
   const Eigen::Vector2d worldSize = space.meshes().world.bounds().sizes().head<2>() / scale;
   const double tolerance = options.tolerance > 0 ? options.tolerance : 0.01 * worldSize.norm();
   // The end points run on circles of radius at most the robot's reach plus the

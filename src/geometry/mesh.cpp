@@ -261,6 +261,12 @@ Box3 Mesh::bounds() const {
   return box;
 }
 
+double Mesh::horizontalReach() const {
+  double reach = 0;
+  for (const Point3& vertex : vertices_) reach = std::max(reach, std::hypot(vertex.x(), vertex.y()));
+  return reach;
+}
+
 double Mesh::volume() const {
   double total = 0;
   for (double componentVolume : componentVolume_) total += componentVolume;

@@ -30,8 +30,7 @@ const std::string kSoupMaze = "soup_maze";
 /// The planning volume: the environment and the robot's reach around the start
 /// and the goal, with a margin, rounded outwards to quarter units.
 Box2 planningVolume(const Mesh& robot, const Mesh& world, const Pose2& start, const Pose2& goal) {
-  double reach = 0;
-  for (const Point3& v : robot.vertices()) reach = std::max(reach, std::hypot(v.x(), v.y()));
+  const double reach = robot.horizontalReach();
   const Box3 worldBounds = world.bounds();
   Box2 volume(worldBounds.min().head<2>(), worldBounds.max().head<2>());
   for (const Pose2& pose : {start, goal}) {

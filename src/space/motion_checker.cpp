@@ -36,12 +36,9 @@ double leastClearanceOn(double c0, double c1, double length) {
 
 }  // namespace
 
-MotionChecker::MotionChecker(const FreeSpace& space) : space_(space) {
-  const PerturbedMeshes& meshes = space.meshes();
-  for (const Point3& vertex : meshes.robot.vertices()) reach_ = std::max(reach_, std::hypot(vertex.x(), vertex.y()));
-  // In the input's units, rounded up far beyond the rounding of the hypotenuse.
-  reach_ = reach_ / meshes.scale * (1 + 1e-12);
-}
+MotionChecker::MotionChecker(const FreeSpace& space)
+    // In the input's units, rounded up far beyond the rounding of the hypotenuse.
+    : space_(space), reach_(space.meshes().robot.horizontalReach() / space.meshes().scale * (1 + 1e-12)) {}
 
 Pose2 MotionChecker::interpolate(const Pose2& from, const Pose2& to, double t) {
   return {from.x + t * (to.x - from.x), from.y + t * (to.y - from.y), from.theta + t * shorterTurn(from.theta, to.theta)};

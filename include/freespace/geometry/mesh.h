@@ -74,6 +74,9 @@ class Mesh {
   const std::vector<std::uint32_t>& componentRepresentatives() const { return componentVertex_; }
   const std::vector<Box3>& componentBounds() const { return componentBounds_; }
   Box3 bounds() const;
+  /// The largest distance of a vertex from the vertical axis x = y = 0: how far a
+  /// point of the body moves per radian it turns about that axis.
+  double horizontalReach() const;
 
   /// Sum of the absolute enclosed volumes of the components.
   double volume() const;

@@ -38,12 +38,9 @@ class MotionChecker {
   /// certify freedom; 0.02 for a bound on the clearance within 2%).
   MotionCheck check(const Pose2& from, const Pose2& to, double clearanceSlack = 1) const;
 
-  /// The robot's largest distance from its vertical axis, rounded up.
-  double robotReach() const { return reach_; }
-
  private:
   const FreeSpace& space_;
-  double reach_ = 0;
+  double reach_;  // the robot's largest distance from its vertical axis, rounded up
 };
 
 }  // namespace freespace
