@@ -25,7 +25,6 @@
 #include <CGAL/Projection_traits_yz_3.h>
 
 #include "soup_complex.h"
-#include "triangle_box_tree.h"
 
 namespace freespace::detail {
 
@@ -217,15 +216,6 @@ class PlaneRegions {
       }
     }
     return region;
-  }
-
-  // A box around exact points that holds them for certain: the boxes of triangles and
-  // edges are exact (they come from input doubles), so those that may hold the points
-  // all meet it.
-  static TreeBox boxAround(std::initializer_list<const ExactPoint*> points) {
-    CGAL::Bbox_3 box;
-    for (const ExactPoint* point : points) box += point->bbox();
-    return {TreePoint(box.xmin(), box.ymin(), box.zmin()), TreePoint(box.xmax(), box.ymax(), box.zmax())};
   }
 
   // A constrained edge lies along one of the piece's edges, or a part of one.

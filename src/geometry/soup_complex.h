@@ -6,17 +6,27 @@
 // intersections needs new points (exact constructions), which CGAL provides.
 
 #include <cstdint>
+#include <initializer_list>
 #include <utility>
 #include <vector>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include "soup_enclosure.h"
+#include "triangle_box_tree.h"
 
 namespace freespace::detail {
 
 using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using ExactPoint = ExactKernel::Point_3;
+
+/// A box in the soup's R-trees that holds exact points for certain (CGAL's boxes
+/// enclose its lazy points), so every box of input doubles that may hold them meets it.
+inline TreeBox boxAround(std::initializer_list<const ExactPoint*> points) {
+  CGAL::Bbox_3 box;
+  for (const ExactPoint* point : points) box += point->bbox();
+  return {TreePoint(box.xmin(), box.ymin(), box.zmin()), TreePoint(box.xmax(), box.ymax(), box.zmax())};
+}
 
 /// Triangles that meet only in shared vertices and whole shared edges, covering the
 /// same point set as the soup they come from: each soup triangle that meets another

@@ -9,7 +9,6 @@
 
 #include "disjoint_sets.h"
 #include "soup_complex.h"
-#include "triangle_box_tree.h"
 
 namespace freespace::detail {
 
@@ -199,17 +198,15 @@ bool meetBeyondSharedFeatures(const std::vector<ExactPoint>& points, const Trian
   return true;
 }
 
-TreeBox exactTriangleBox(const std::vector<ExactPoint>& points, const TriangleIndices& triangle) {
-  const CGAL::Bbox_3 box = points[triangle[0]].bbox() + points[triangle[1]].bbox() + points[triangle[2]].bbox();
-  return {TreePoint(box.xmin(), box.ymin(), box.zmin()), TreePoint(box.xmax(), box.ymax(), box.zmax())};
-}
-
 }  // namespace
 
 std::vector<std::pair<Index, Index>> capMeetingPairs(const std::vector<ExactPoint>& points,
                                                      const std::vector<TriangleIndices>& triangles, Index firstCap) {
   std::vector<TreeEntry> entries;
-  for (Index t = 0; t < triangles.size(); ++t) entries.emplace_back(exactTriangleBox(points, triangles[t]), t);
+  for (Index t = 0; t < triangles.size(); ++t) {
+    const TriangleIndices& triangle = triangles[t];
+    entries.emplace_back(boxAround({&points[triangle[0]], &points[triangle[1]], &points[triangle[2]]}), t);
+  }
   const TriangleTree tree(entries.begin(), entries.end());
   std::vector<std::pair<Index, Index>> pairs;
   for (Index cap = firstCap; cap < triangles.size(); ++cap) {
