@@ -181,12 +181,13 @@ class AngleTable {
   /// function's roots (copies of it may hold enclosures refined differently), a
   /// rational angle by its chart and t.
   std::uint32_t add(const AlgebraicAngle& angle) {
-    const IsolatingInterval root = angle.root();
+    const bool byValue = angle.isRational() || angle.index() < 0;
     const auto [found, inserted] =
         indexOfAngle_.try_emplace(AngleKey{angle.isRational() ? nullptr : angle.function().get(), angle.chart(),
-                                           angle.index(), angle.index() < 0 || angle.isRational() ? root.lo : Rational(0)},
+                                           angle.index(), byValue ? angle.root().lo : Rational(0)},
                                   static_cast<std::uint32_t>(space_.angles.size()));
     if (!inserted) return found->second;
+    const IsolatingInterval root = angle.root();  // exact, so only for angles not seen yet
     saved::Angle stored;
     stored.chart = angle.chart();
     stored.index = angle.index();
