@@ -97,15 +97,37 @@ FreeSpace::FreeSpace(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
 FreeSpace::~FreeSpace() = default;
 
-Location FreeSpace::locate(const Pose2& pose) const {
-  const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
+/// The first sub-face a ray from the configuration meets (toward -x, or +x when
+/// that ray passes exactly through a vertex of the slice), at its rational angle.
+RayHit FreeSpace::Impl::firstHit(const Pose2& pose, const AlgebraicAngle& at) const {
   // Exactly in the construction's coordinates.
-  const Rational scale(impl_->meshes.scale), x = Rational(pose.x) * scale, y = Rational(pose.y) * scale;
+  const Rational scale(meshes.scale), x = Rational(pose.x) * scale, y = Rational(pose.y) * scale;
   for (int direction : {-1, 1}) {
-    const RayHit hit = impl_->rays->cast(at, {x, y}, direction);
-    if (hit.kind != RayHit::Kind::Degenerate) return impl_->locationOf(hit);
+    const RayHit hit = rays->cast(at, {x, y}, direction);
+    if (hit.kind != RayHit::Kind::Degenerate) return hit;
   }
   throw std::runtime_error("FreeSpace::locate: both rays from the configuration pass through vertices of its slice");
+}
+
+Location FreeSpace::locate(const Pose2& pose) const {
+  const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
+  return impl_->locationOf(impl_->firstHit(pose, at));
+}
+
+const CellGraph& FreeSpace::cellGraph() const {
+  if (!impl_->graph) {
+    impl_->graph = std::make_unique<CellGraph>(
+        impl_->arrangement, *impl_->rays, [this](SubFaceId face) { return cellOfSubFace(face); }, impl_->algebra);
+  }
+  return *impl_->graph;
+}
+
+std::optional<std::uint32_t> FreeSpace::nodeOf(const Pose2& pose) const {
+  const CellGraph& graph = cellGraph();
+  const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
+  const RayHit hit = impl_->firstHit(pose, at);
+  if (!impl_->locationOf(hit).free) return std::nullopt;
+  return graph.nodeOf(hit, at, impl_->algebra);
 }
 
 Clearance FreeSpace::clearance(const Pose2& pose) const {

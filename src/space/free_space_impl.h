@@ -7,6 +7,7 @@
 
 #include "freespace/collision/exact_collision_checker.h"
 #include "freespace/space/free_space.h"
+#include "freespace/topology/cell_graph.h"
 #include "freespace/topology/free_cells.h"
 #include "freespace/topology/slice_boundary_distance.h"
 
@@ -23,6 +24,8 @@ struct FreeSpace::Impl {
   std::unique_ptr<ExactCollisionChecker> collision;
   std::vector<ShellSide> sides;
   std::unique_ptr<FreeCells> cells;
+  /// Built on first use (FreeSpace::cellGraph).
+  std::unique_ptr<CellGraph> graph;
 
   /// Builds everything from the meshes.
   Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options);
@@ -37,6 +40,8 @@ struct FreeSpace::Impl {
     });
     collision = std::make_unique<ExactCollisionChecker>(meshes.robot, meshes.world);
   }
+
+  RayHit firstHit(const Pose2& pose, const AlgebraicAngle& at) const;
 
   /// Free (with its cell) or blocked, from the first sub-face a ray meets: a point
   /// sees a sub-face's positive side across free space only if that side is free,

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
-#include "freespace/topology/slice_pieces.h"
+#include "slice_nesting.h"
 
 namespace freespace {
 
@@ -20,11 +20,7 @@ struct Leftmost {
   Point point;
 };
 
-/// The distances tried from a shell's leftmost point, relative to its size.
-const Rational kLargest = powerOfHalf(24);
-const Rational kSmallest = powerOfHalf(200);
-
-bool leftOf(const Point& a, const Point& b) { return a[0] < b[0] || (a[0] == b[0] && a[1] < b[1]); }
+using slices::leftOf;
 
 /// Nests the free closed shells (see FreeCells).
 class Nesting {
@@ -80,57 +76,21 @@ class Nesting {
     throw std::logic_error("FreeCells: a free shell has no slab");
   }
 
-  /// The leftmost point of the shell's slice at a rational angle, if it has one:
-  /// the ends of its sub-faces' pieces are first bounded in double intervals, and
-  /// only those that may be leftmost are computed exactly. Sub-faces come by the
-  /// left end of their patches' boxes: none past the leftmost end found so far
-  /// need be looked at.
+  /// The leftmost point of the shell's slice at a rational angle, if it has one.
+  /// Sub-faces come by the left end of their patches' boxes: none past the leftmost
+  /// end found so far need be looked at.
   std::optional<Point> leftmostAt(std::uint32_t shell, const AlgebraicAngle& angle) const {
-    struct PieceEnd {
-      SubFaceId face;
-      const PatchSlab* slab;
-      std::size_t gap;
-      double lowestX;
-    };
-    std::vector<PieceEnd> ends;
-    double leftmostX = HUGE_VAL;  // no piece end lies right of every point left of this
-    {
-      RoundingScope rounding;
-      const slices::IntervalSlice slice(angle);
-      for (const auto& [face, lowestX] : members_[shell]) {
-        if (lowestX > leftmostX) break;
-        if (!algebra_.contains(arrangement_.patches[face.patch].patch.range, angle)) continue;
-        const PatchSlab* slab = slabAt(arrangement_.subdivisions[face.patch], angle, algebra_);
-        if (!slab) throw std::logic_error("FreeCells: a shell's angle is an event of one of its patches");
-        const PatchGeometry& patch = arrangement_.patches[face.patch];
-        const std::array<Interval, 2> end0 = slice.end(patch, 0), end1 = slice.end(patch, 1);
-        for (std::size_t gap = 0; gap < slab->faces.size(); ++gap) {
-          if (slab->faces[gap] != face.face) continue;
-          const auto piece = slice.pieceOf(arrangement_, face.patch, *slab, gap);
-          Interval x(-HUGE_VAL, HUGE_VAL);
-          if (piece) {
-            const Interval low = end0[0] + piece->first * (end1[0] - end0[0]);
-            const Interval high = end0[0] + piece->second * (end1[0] - end0[0]);
-            x = Interval(std::min(low.lower(), high.lower()), std::min(low.upper(), high.upper()));
-          }
-          ends.push_back({face, slab, gap, x.lower()});
-          leftmostX = std::min(leftmostX, x.upper());
-        }
+    slices::LeftmostEnd leftmost(arrangement_, angle);
+    for (const auto& [face, lowestX] : members_[shell]) {
+      if (!leftmost.worthOffering(lowestX)) break;
+      if (!algebra_.contains(arrangement_.patches[face.patch].patch.range, angle)) continue;
+      const PatchSlab* slab = slabAt(arrangement_.subdivisions[face.patch], angle, algebra_);
+      if (!slab) throw std::logic_error("FreeCells: a shell's angle is an event of one of its patches");
+      for (std::size_t gap = 0; gap < slab->faces.size(); ++gap) {
+        if (slab->faces[gap] == face.face) leftmost.offer(face.patch, *slab, gap);
       }
     }
-    std::optional<Point> best;
-    const auto [cosine, sine] = exactCosSin(angle);
-    for (const PieceEnd& end : ends) {
-      if (end.lowestX > leftmostX) continue;
-      const slices::ExactSegment segment = slices::segmentAt(arrangement_.patches[end.face.patch], cosine, sine);
-      const auto [low, high] =
-          slices::pieceOf(arrangement_, end.face.patch, *end.slab, end.gap, segment, cosine, sine).value();
-      for (const Rational& lambda : {low, high}) {
-        const Point point = segment.at(lambda);
-        if (!best || leftOf(point, *best)) best = point;
-      }
-    }
-    return best;
+    return leftmost.exact();
   }
 
   /// The leftmost point over the shell's angles; each angle is looked at once, the
@@ -146,59 +106,38 @@ class Nesting {
     return *known.best;
   }
 
-  /// Which side of a shell a point just outside it near its leftmost point lies on,
-  /// by the first sub-face a ray from it toward +x meets: the shell itself from its
-  /// free side (the point is in the shell's cell: the shell is a hole in it), or a
-  /// blocked side (the point is blocked: the shell is its cell's outer shell).
-  enum class Outside { Hole, Outer, Unknown };
-
-  Outside outsideAt(std::uint32_t shell, const AlgebraicAngle& angle, const Point& start) const {
-    const RayHit back = rays_.cast(angle, start, +1);
-    if (back.kind != RayHit::Kind::SubFace) return Outside::Unknown;
-    const std::uint32_t seen = arrangement_.shells.shellOf(back.face);
-    if (!back.fromPositiveSide || sides_[seen] != ShellSide::Free) return Outside::Outer;
-    return seen == shell ? Outside::Hole : Outside::Unknown;
+  /// What a ray toward +x from just left of a shell's leftmost point meets: the
+  /// shell itself from its free side (the shell is a hole in its cell), or a blocked
+  /// side (the shell is its cell's outer shell).
+  slices::Outside outsideSeen(std::uint32_t shell, const RayHit& hit) const {
+    if (hit.kind != RayHit::Kind::SubFace) return slices::Outside::Unknown;
+    const std::uint32_t seen = arrangement_.shells.shellOf(hit.face);
+    if (!hit.fromPositiveSide || sides_[seen] != ShellSide::Free) return slices::Outside::Outer;
+    return seen == shell ? slices::Outside::Hole : slices::Outside::Unknown;
   }
 
-  /// The ray of one shell from a point q up-left (or down-left) of its leftmost point
-  /// p, outside the shell (left of its whole slice): near p the outside is the free
-  /// cell when the shell is a hole in it and blocked when it is its cell's outer
-  /// shell. The answer is taken once two points at distances d and d / 2^16 from p
-  /// agree (far points may see other obstacles), d shrinking from 2^-24 of the
-  /// shell's size. A hole's ray toward -x from the nearer point joins it to the shell
-  /// it meets, whose angle set grows by the ray's angle if it did not hold it (that
-  /// shell is returned, to shoot again).
+  /// The ray of one shell from just left of its leftmost point (slices::lookLeftOf):
+  /// a hole's ray toward -x joins it to the shell it meets, whose angle set grows by
+  /// the ray's angle if it did not hold it (that shell is returned, to shoot again).
   std::optional<std::uint32_t> shoot(std::uint32_t shell) {
     const Leftmost from = leftmost(shell);
-    const Rational scale = 1 + abs(from.point[0]) + abs(from.point[1]);
-    const auto near = [&](const Rational& distance, int up) {
-      return Point{from.point[0] - distance, from.point[1] + up * distance};
-    };
-    for (Rational distance = scale * kLargest; distance > scale * kSmallest; distance /= 256) {
-      for (int up : {1, -1}) {
-        const Outside far = outsideAt(shell, from.angle, near(distance, up));
-        const Point start = near(distance / 65536, up);
-        if (far == Outside::Unknown || outsideAt(shell, from.angle, start) != far) continue;
-        if (far == Outside::Outer) return std::nullopt;
-        const RayHit hit = rays_.cast(from.angle, start, -1);
-        if (hit.kind == RayHit::Kind::Nothing) {
-          sets_.union_set(std::size_t{shell}, sides_.size());
-          return std::nullopt;
-        }
-        if (hit.kind != RayHit::Kind::SubFace) continue;
-        const std::uint32_t other = arrangement_.shells.shellOf(hit.face);
-        if (!hit.fromPositiveSide || sides_[other] != ShellSide::Free) {
-          throw std::logic_error("FreeCells: a ray in free space meets a shell that bounds no free cell");
-        }
-        sets_.union_set(std::size_t{shell}, std::size_t{other});
-        const bool known = std::any_of(angles_[other].begin(), angles_[other].end(),
-                                       [&](const AlgebraicAngle& a) { return algebra_.compare(a, from.angle) == 0; });
-        if (known) return std::nullopt;
-        angles_[other].push_back(from.angle);
-        return other;
-      }
+    const slices::LeftOfLeftmost look = slices::lookLeftOf(
+        rays_, from.angle, from.point, [&](const RayHit& hit) { return outsideSeen(shell, hit); });
+    if (!look.hole) return std::nullopt;
+    if (look.leftward.kind == RayHit::Kind::Nothing) {
+      sets_.union_set(std::size_t{shell}, sides_.size());
+      return std::nullopt;
     }
-    throw std::runtime_error("FreeCells: no ray could be shot from a shell's leftmost point");
+    const std::uint32_t other = arrangement_.shells.shellOf(look.leftward.face);
+    if (!look.leftward.fromPositiveSide || sides_[other] != ShellSide::Free) {
+      throw std::logic_error("FreeCells: a ray in free space meets a shell that bounds no free cell");
+    }
+    sets_.union_set(std::size_t{shell}, std::size_t{other});
+    const bool known = std::any_of(angles_[other].begin(), angles_[other].end(),
+                                   [&](const AlgebraicAngle& a) { return algebra_.compare(a, from.angle) == 0; });
+    if (known) return std::nullopt;
+    angles_[other].push_back(from.angle);
+    return other;
   }
 
   const Arrangement& arrangement_;

@@ -270,6 +270,8 @@ std::optional<RayHit> SliceRays::Impl::castInIntervals(const AlgebraicAngle& ang
   RayHit hit;
   hit.kind = RayHit::Kind::SubFace;
   hit.face = {nearest->patch, slab->faces[gap]};
+  hit.slab = static_cast<std::uint32_t>(slab - arrangement.subdivisions[nearest->patch].slabs.data());
+  hit.gap = static_cast<std::uint32_t>(gap);
   hit.fromPositiveSide = *side == Sign::Positive;
   hit.along = nearest->distance.midpoint();
   return hit;
@@ -318,6 +320,8 @@ RayHit SliceRays::Impl::castExactly(const AlgebraicAngle& angle, const Point& fr
   }
   hit.kind = RayHit::Kind::SubFace;
   hit.face = {first->patch, slab->faces[gap]};
+  hit.slab = static_cast<std::uint32_t>(slab - arrangement.subdivisions[first->patch].slabs.data());
+  hit.gap = static_cast<std::uint32_t>(gap);
   // The ray arrives from the side of the start.
   hit.fromPositiveSide = own.valueAt(from) > 0;
   return hit;

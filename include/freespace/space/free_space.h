@@ -14,6 +14,7 @@
 #include "freespace/numbers/predicate_statistics.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/topology/arrangement.h"
+#include "freespace/topology/cell_graph.h"
 
 namespace freespace {
 
@@ -98,6 +99,13 @@ class FreeSpace {
   /// boundary in its slice (pieces of sub-faces that bound free cells), certified to
   /// about 1e-13 relative (exact arithmetic where double intervals are wider).
   Clearance clearance(const Pose2& pose) const;
+
+  /// The free cell graph (docs/design.md section 7), built on first use, in the
+  /// construction's coordinates (as arrangement()).
+  const CellGraph& cellGraph() const;
+  /// The node of the cell graph whose face holds a configuration; none when it is
+  /// blocked.
+  std::optional<std::uint32_t> nodeOf(const Pose2& pose) const;
 
   /// The number of free cells, the unbounded one included.
   std::size_t cellCount() const;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -25,6 +26,10 @@ struct RayHit {
   };
   Kind kind = Kind::Nothing;
   SubFaceId face;
+  /// The piece met (a SubFace hit): the index of face.patch's slab whose open angles
+  /// hold the ray's angle, and the gap of that slab.
+  std::uint32_t slab = 0;
+  std::uint32_t gap = 0;
   /// Whether the ray arrives from the sub-face's positive (free) side.
   bool fromPositiveSide = false;
   /// Where it meets the first segment, as s in start + s * direction (rounded to a

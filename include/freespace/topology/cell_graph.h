@@ -1,0 +1,105 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "freespace/topology/slice_ray.h"
+
+namespace freespace {
+
+/// A node of the free cell graph (docs/design.md section 7): one connected face of
+/// the slice of a free cell over a run of consecutive open intervals between
+/// critical angles, along which the slice's boundary loops neither appear, vanish,
+/// split nor merge (so the face keeps its loops and its holes).
+struct CellGraphNode {
+  std::uint32_t cell = 0;
+  /// Its angles: the intervals firstInterval .. lastInterval, i.e. the open arc from
+  /// CellGraph::criticalAngles()[firstInterval] to the critical angle after
+  /// lastInterval (counterclockwise; the last interval wraps around to the first
+  /// critical angle).
+  std::uint32_t firstInterval = 0;
+  std::uint32_t lastInterval = 0;
+  /// A rational angle inside its first interval, and a point of the face at that
+  /// angle (rounded to doubles from an exact point between two boundary pieces).
+  AlgebraicAngle sample = AlgebraicAngle::rational(0, 0.0);
+  std::array<double, 2> point{};
+  /// The (x, y) box of the face's outer loop at `sample` (low x, low y, high x,
+  /// high y; rounded outward); infinite for the unbounded face.
+  std::array<double, 4> box{};
+};
+
+/// Faces that overlap at the critical angle between the last interval of `from` and
+/// the first interval of `to`.
+struct CellGraphEdge {
+  std::uint32_t from = 0;
+  std::uint32_t to = 0;
+  /// Index of that critical angle in CellGraph::criticalAngles().
+  std::uint32_t angle = 0;
+};
+
+/// The free cell graph: the free cells cut into faces of their slices over angle
+/// intervals (nodes), joined where faces of neighbouring intervals overlap (edges).
+///
+/// Critical angles are the ends of the slabs of the patches that bound free cells
+/// (where a piece of the slices' boundary appears, vanishes or changes its
+/// neighbours). Over each open interval between consecutive critical angles the
+/// boundary pieces are fixed, each joined to the next across a curve or a spiral;
+/// the loops they form are nested at a rational angle inside by rays
+/// (slices::lookLeftOf), which gives the faces. Where every loop continues (through
+/// pieces of the same sub-faces) into exactly one loop of the next interval and
+/// back, the faces continue too and their nodes grow; elsewhere the next interval's
+/// faces are new nodes, joined to the previous ones by the loops they share pieces
+/// with (or sub-faces glued across a horizontal edge at that angle). Unbounded faces
+/// of neighbouring intervals always overlap. Start and goal of a problem are in one
+/// cell iff their nodes are joined by a path of edges.
+class CellGraph {
+ public:
+  /// The cell a sub-face bounds (its positive side), if it bounds one.
+  using CellOfFace = std::function<std::optional<std::uint32_t>(SubFaceId)>;
+
+  CellGraph(const Arrangement& arrangement, const SliceRays& rays, const CellOfFace& cellOf, AngleAlgebra& algebra,
+            const Cancellation& cancellation = {});
+
+  /// Increasing in AngleAlgebra::compare; none when no free cell's slice ever
+  /// changes (then one interval holds every angle).
+  const std::vector<AlgebraicAngle>& criticalAngles() const { return criticalAngles_; }
+  std::size_t intervalCount() const { return std::max<std::size_t>(1, criticalAngles_.size()); }
+  const std::vector<CellGraphNode>& nodes() const { return nodes_; }
+  const std::vector<CellGraphEdge>& edges() const { return edges_; }
+
+  /// The interval whose open arc holds an angle; a critical angle gets the interval
+  /// it starts.
+  std::uint32_t intervalOf(const AlgebraicAngle& angle, AngleAlgebra& algebra) const;
+
+  /// The node of a free configuration at a rational angle, from the first piece a ray
+  /// from it meets (a SubFace hit from the free side) or from meeting nothing (the
+  /// unbounded face); none for other hits.
+  std::optional<std::uint32_t> nodeOf(const RayHit& hit, const AlgebraicAngle& rationalAngle,
+                                      AngleAlgebra& algebra) const;
+
+ private:
+  friend class CellGraphSweep;
+
+  /// The node of a piece (a gap of a slab) from each interval on where it changed.
+  struct NodeRun {
+    std::uint32_t interval;
+    std::uint32_t node;
+  };
+  std::optional<std::uint32_t> nodeAtRun(const std::vector<NodeRun>& runs, std::uint32_t interval) const;
+  std::size_t pieceIndex(std::uint32_t patch, std::uint32_t slab, std::uint32_t gap) const {
+    return firstGapOfSlab_[firstSlabOfPatch_[patch] + slab] + gap;
+  }
+
+  std::vector<AlgebraicAngle> criticalAngles_;
+  std::vector<CellGraphNode> nodes_;
+  std::vector<CellGraphEdge> edges_;
+  std::vector<std::uint32_t> firstSlabOfPatch_;
+  std::vector<std::uint32_t> firstGapOfSlab_;
+  std::vector<std::vector<NodeRun>> runsOfPiece_;
+  std::vector<NodeRun> unboundedRuns_;
+};
+
+}  // namespace freespace

@@ -1,0 +1,631 @@
+#include "freespace/topology/cell_graph.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <set>
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "../geometry/disjoint_sets.h"
+#include "slice_nesting.h"
+
+namespace freespace {
+
+namespace {
+
+using slices::Point;
+
+std::uint64_t codeOf(SubFaceId face) { return (std::uint64_t(face.patch) << 32) | face.face; }
+
+/// A segment end (a spiral) as one number: vertex, edge and which body the vertex is of.
+struct SpiralHash {
+  std::size_t operator()(const SegmentEnd& end) const {
+    std::size_t hash = std::hash<std::uint64_t>()((std::uint64_t(end.vertex) << 1) | end.robotVertex);
+    hash ^= std::hash<std::uint64_t>()((std::uint64_t(end.edge[0]) << 32) | end.edge[1]) + 0x9e3779b97f4a7c15ULL +
+            (hash << 6) + (hash >> 2);
+    return hash;
+  }
+};
+
+/// A free piece of the slices' boundary over an interval: a gap of a slab.
+struct Piece {
+  std::uint32_t patch;
+  std::uint32_t slab;
+  std::uint32_t gap;
+};
+
+/// The boundary of the free slices over one interval: its pieces, the loops they
+/// form, and (once known) the node of each loop's face.
+struct IntervalLoops {
+  std::uint32_t interval = 0;
+  AlgebraicAngle sample = AlgebraicAngle::rational(0, 0.0);
+  std::vector<Piece> pieces;
+  std::vector<std::uint32_t> loopOf;
+  std::uint32_t loopCount = 0;
+  /// The slab of each patch with free pieces here.
+  std::unordered_map<std::uint32_t, std::uint32_t> slabOfPatch;
+  /// Index in `pieces` by CellGraph::pieceIndex.
+  std::unordered_map<std::size_t, std::uint32_t> pieceAt;
+  std::vector<std::uint32_t> nodeOfLoop;
+  std::uint32_t unboundedNode = 0;
+};
+
+/// Pairs (loop before, loop after) that share boundary across a critical angle.
+using LoopLinks = std::set<std::pair<std::uint32_t, std::uint32_t>>;
+
+}  // namespace
+
+/// Builds a CellGraph interval after interval (see CellGraph).
+class CellGraphSweep {
+ public:
+  CellGraphSweep(CellGraph& graph, const Arrangement& arrangement, const SliceRays& rays,
+                 const CellGraph::CellOfFace& cellOf, AngleAlgebra& algebra)
+      : graph_(graph), arrangement_(arrangement), rays_(rays), cellOf_(cellOf), algebra_(algebra) {
+    numberPieces();
+    findCriticalAngles();
+    indexHorizontalGlues();
+    for (const SubFaceGlue& glue : arrangement.aroundSpirals.glues) {
+      spiralGlues_.insert({codeOf(glue.first), codeOf(glue.second)});
+    }
+  }
+
+  void run(const Cancellation& cancellation) {
+    const std::uint32_t count = static_cast<std::uint32_t>(graph_.intervalCount());
+    std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> starting(count), ending(count);
+    std::unordered_map<std::uint32_t, std::uint32_t> active = slabsCovering(starting, ending);
+    IntervalLoops first, previous;
+    for (std::uint32_t interval = 0; interval < count; ++interval) {
+      cancellation.check();
+      for (const auto& [patch, slab] : ending[interval]) {
+        const auto found = active.find(patch);
+        if (found != active.end() && found->second == slab) active.erase(found);
+      }
+      for (const auto& [patch, slab] : starting[interval]) active[patch] = slab;
+      IntervalLoops current = loopsOver(interval, active);
+      if (interval == 0) {
+        findFaces(current);
+      } else {
+        continueFaces(previous, current);
+      }
+      recordRuns(current);
+      if (interval == 0) first = current;
+      previous = std::move(current);
+    }
+    if (!graph_.criticalAngles_.empty()) {
+      LoopLinks links = continuingLoops(previous, first);
+      addGluedLoops(previous, first, links);
+      addEdges(previous, first, links);
+    }
+  }
+
+ private:
+  // --- Pieces and critical angles -------------------------------------------------
+
+  void numberPieces() {
+    std::uint32_t slabs = 0, gaps = 0;
+    for (const PatchSubdivision& subdivision : arrangement_.subdivisions) {
+      graph_.firstSlabOfPatch_.push_back(slabs);
+      for (const PatchSlab& slab : subdivision.slabs) {
+        graph_.firstGapOfSlab_.push_back(gaps);
+        gaps += static_cast<std::uint32_t>(slab.faces.size());
+      }
+      slabs += static_cast<std::uint32_t>(subdivision.slabs.size());
+    }
+    graph_.runsOfPiece_.resize(gaps);
+    cellOfPiece_.assign(gaps, kNotFree);
+    for (std::uint32_t patch = 0; patch < arrangement_.subdivisions.size(); ++patch) {
+      const auto& slabsOfPatch = arrangement_.subdivisions[patch].slabs;
+      for (std::uint32_t slab = 0; slab < slabsOfPatch.size(); ++slab) {
+        for (std::uint32_t gap = 0; gap < slabsOfPatch[slab].faces.size(); ++gap) {
+          if (const auto cell = cellOf_({patch, slabsOfPatch[slab].faces[gap]})) {
+            cellOfPiece_[graph_.pieceIndex(patch, slab, gap)] = *cell;
+          }
+        }
+      }
+    }
+  }
+
+  bool hasFreePiece(std::uint32_t patch, std::uint32_t slab) const {
+    const std::size_t first = graph_.pieceIndex(patch, slab, 0);
+    const std::size_t gaps = arrangement_.subdivisions[patch].slabs[slab].faces.size();
+    return std::any_of(cellOfPiece_.begin() + first, cellOfPiece_.begin() + first + gaps,
+                       [](std::uint32_t cell) { return cell != kNotFree; });
+  }
+
+  /// A slab over the whole circle: from an event back to it, or without events.
+  bool wholeCircle(const PatchSlab& slab) { return algebra_.compare(slab.from, slab.to) == 0; }
+
+  void findCriticalAngles() {
+    std::vector<AlgebraicAngle>& angles = graph_.criticalAngles_;
+    forEachFreeSlab([&](std::uint32_t, std::uint32_t, const PatchSlab& slab) {
+      if (algebra_.compare(slab.from, slab.sample) == 0) return;  // a whole circle without events
+      angles.push_back(slab.from);
+      angles.push_back(slab.to);
+    });
+    std::sort(angles.begin(), angles.end(),
+              [&](const AlgebraicAngle& a, const AlgebraicAngle& b) { return algebra_.compare(a, b) < 0; });
+    angles.erase(std::unique(angles.begin(), angles.end(),
+                             [&](const AlgebraicAngle& a, const AlgebraicAngle& b) {
+                               return algebra_.compare(a, b) == 0;
+                             }),
+                 angles.end());
+    samples_.clear();
+    const std::size_t count = angles.size();
+    for (std::size_t i = 0; i < graph_.intervalCount(); ++i) {
+      if (count == 0) {
+        samples_.push_back(AlgebraicAngle::rational(0, 0.0));
+      } else if (count == 1) {
+        samples_.push_back(AlgebraicAngle::rational(1 - angles[0].chart(), 0.0));
+      } else {
+        samples_.push_back(algebra_.rationalBetween(angles[i], angles[(i + 1) % count]));
+      }
+    }
+  }
+
+  template <class Visit>
+  void forEachFreeSlab(const Visit& visit) {
+    for (std::uint32_t patch = 0; patch < arrangement_.subdivisions.size(); ++patch) {
+      const auto& slabs = arrangement_.subdivisions[patch].slabs;
+      for (std::uint32_t slab = 0; slab < slabs.size(); ++slab) {
+        if (hasFreePiece(patch, slab)) visit(patch, slab, slabs[slab]);
+      }
+    }
+  }
+
+  /// The index of a critical angle (which `angle` must be).
+  std::uint32_t criticalIndex(const AlgebraicAngle& angle) {
+    const std::vector<AlgebraicAngle>& angles = graph_.criticalAngles_;
+    const auto found = std::lower_bound(angles.begin(), angles.end(), angle, [&](const auto& a, const auto& b) {
+      return algebra_.compare(a, b) < 0;
+    });
+    if (found == angles.end() || algebra_.compare(*found, angle) != 0) {
+      throw std::logic_error("CellGraph: a slab's end is not a critical angle");
+    }
+    return static_cast<std::uint32_t>(found - angles.begin());
+  }
+
+  /// The slabs with free pieces starting and ending at each interval (by the index of
+  /// their first interval and of the first interval after them); returns those
+  /// covering interval 0 (whole circles and slabs across the last critical angle).
+  std::unordered_map<std::uint32_t, std::uint32_t> slabsCovering(
+      std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>>& starting,
+      std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>>& ending) {
+    std::unordered_map<std::uint32_t, std::uint32_t> covering;
+    forEachFreeSlab([&](std::uint32_t patch, std::uint32_t slab, const PatchSlab& geometry) {
+      if (wholeCircle(geometry)) {
+        covering[patch] = slab;
+        return;
+      }
+      const std::uint32_t from = criticalIndex(geometry.from), to = criticalIndex(geometry.to);
+      starting[from].push_back({patch, slab});
+      if (to != 0) ending[to].push_back({patch, slab});
+      if (from > to && to != 0) covering[patch] = slab;
+    });
+    return covering;
+  }
+
+  void indexHorizontalGlues() {
+    horizontalGluesAt_.resize(graph_.criticalAngles_.size());
+    for (const SubFaceGlue& glue : arrangement_.acrossHorizontalEdges.glues) {
+      if (!cellOf_(glue.first) || !cellOf_(glue.second)) continue;
+      horizontalGluesAt_[criticalIndex(glue.at)].push_back(glue);
+    }
+  }
+
+  // --- Loops over one interval ------------------------------------------------------
+
+  IntervalLoops loopsOver(std::uint32_t interval, const std::unordered_map<std::uint32_t, std::uint32_t>& active) {
+    IntervalLoops loops;
+    loops.interval = interval;
+    loops.sample = samples_[interval];
+    loops.slabOfPatch = active;
+    for (const auto& [patch, slab] : active) {
+      const std::size_t gaps = arrangement_.subdivisions[patch].slabs[slab].faces.size();
+      for (std::uint32_t gap = 0; gap < gaps; ++gap) {
+        const std::size_t index = graph_.pieceIndex(patch, slab, gap);
+        if (cellOfPiece_[index] == kNotFree) continue;
+        loops.pieceAt.emplace(index, static_cast<std::uint32_t>(loops.pieces.size()));
+        loops.pieces.push_back({patch, slab, gap});
+      }
+    }
+    detail::DisjointSets sets(loops.pieces.size());
+    joinAcrossCurves(loops, sets);
+    joinAroundSpirals(loops, sets);
+    std::unordered_map<std::uint32_t, std::uint32_t> numberOfRoot;
+    for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
+      const auto found = numberOfRoot.emplace(sets.find(piece), static_cast<std::uint32_t>(numberOfRoot.size()));
+      loops.loopOf.push_back(found.first->second);
+    }
+    loops.loopCount = static_cast<std::uint32_t>(numberOfRoot.size());
+    return loops;
+  }
+
+  const PatchSlab& slabOf(const Piece& piece) const {
+    return arrangement_.subdivisions[piece.patch].slabs[piece.slab];
+  }
+
+  /// A piece ending at a curve continues on the curve's other patch, on the one side
+  /// of the curve there that bounds free space (the other side lies inside this
+  /// patch's obstacle).
+  void joinAcrossCurves(const IntervalLoops& loops, detail::DisjointSets& sets) const {
+    for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
+      const Piece& piece = loops.pieces[index];
+      const PatchSlab& slab = slabOf(piece);
+      for (const std::size_t end : {std::size_t{piece.gap}, std::size_t{piece.gap} + 1}) {
+        if (end == 0 || end > slab.curves.size()) continue;
+        const std::uint32_t curve = slab.curves[end - 1];
+        const std::uint32_t other = arrangement_.curves[curve].other(piece.patch);
+        const auto otherSlab = loops.slabOfPatch.find(other);
+        if (otherSlab == loops.slabOfPatch.end()) throw std::logic_error("CellGraph: a free piece's curve ends nowhere");
+        const auto& curves = arrangement_.subdivisions[other].slabs[otherSlab->second].curves;
+        const std::size_t at = std::find(curves.begin(), curves.end(), curve) - curves.begin();
+        std::optional<std::uint32_t> next;
+        for (const std::size_t gap : {at, at + 1}) {
+          const auto found = loops.pieceAt.find(graph_.pieceIndex(other, otherSlab->second, gap));
+          if (found == loops.pieceAt.end()) continue;
+          if (next) throw std::logic_error("CellGraph: both sides of a curve bound free space");
+          next = found->second;
+        }
+        if (!next) throw std::logic_error("CellGraph: a free piece continues into no free piece across a curve");
+        sets.unite(index, *next);
+      }
+    }
+  }
+
+  /// Pieces ending at one spiral point are joined in pairs, by the gluing around
+  /// spirals when more than two end there.
+  void joinAroundSpirals(const IntervalLoops& loops, detail::DisjointSets& sets) const {
+    std::unordered_map<SegmentEnd, std::vector<std::uint32_t>, SpiralHash> atSpiral;
+    for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
+      const Piece& piece = loops.pieces[index];
+      const PatchSegment& segment = arrangement_.patches[piece.patch].segment;
+      if (piece.gap == 0) atSpiral[segment.ends[0]].push_back(index);
+      if (piece.gap + 1 == slabOf(piece).faces.size()) atSpiral[segment.ends[1]].push_back(index);
+    }
+    for (const auto& [spiral, ending] : atSpiral) {
+      if (ending.size() == 1) throw std::logic_error("CellGraph: a free piece ends alone at a spiral");
+      if (ending.size() == 2) {
+        sets.unite(ending[0], ending[1]);
+        continue;
+      }
+      for (std::size_t i = 0; i < ending.size(); ++i) {
+        for (std::size_t j = i + 1; j < ending.size(); ++j) {
+          if (gluedAroundSpiral(faceOf(loops.pieces[ending[i]]), faceOf(loops.pieces[ending[j]]))) {
+            sets.unite(ending[i], ending[j]);
+          }
+        }
+      }
+    }
+  }
+
+  SubFaceId faceOf(const Piece& piece) const { return {piece.patch, slabOf(piece).faces[piece.gap]}; }
+
+  bool gluedAroundSpiral(SubFaceId a, SubFaceId b) const {
+    return spiralGlues_.count({codeOf(a), codeOf(b)}) != 0 || spiralGlues_.count({codeOf(b), codeOf(a)}) != 0;
+  }
+
+  // --- Faces --------------------------------------------------------------------------
+
+  /// Faces continue when the loops continue one to one through pieces of the same
+  /// sub-faces; new nodes otherwise, joined to the previous ones by those pieces and
+  /// by the sub-faces glued across horizontal edges at the angle between.
+  void continueFaces(const IntervalLoops& previous, IntervalLoops& current) {
+    LoopLinks links = continuingLoops(previous, current);
+    if (oneToOne(links, previous.loopCount, current.loopCount)) {
+      current.nodeOfLoop.resize(current.loopCount);
+      for (const auto& [before, after] : links) current.nodeOfLoop[after] = previous.nodeOfLoop[before];
+      current.unboundedNode = previous.unboundedNode;
+      for (std::uint32_t node : current.nodeOfLoop) graph_.nodes_[node].lastInterval = current.interval;
+      graph_.nodes_[current.unboundedNode].lastInterval = current.interval;
+      return;
+    }
+    findFaces(current);
+    addGluedLoops(previous, current, links);
+    addEdges(previous, current, links);
+  }
+
+  static bool oneToOne(const LoopLinks& links, std::uint32_t before, std::uint32_t after) {
+    if (before != after || links.size() != before) return false;
+    std::vector<bool> seenBefore(before), seenAfter(after);
+    for (const auto& [from, to] : links) {
+      if (seenBefore[from] || seenAfter[to]) return false;
+      seenBefore[from] = seenAfter[to] = true;
+    }
+    return true;
+  }
+
+  /// Loops of neighbouring intervals that share a piece (a slab across the critical
+  /// angle between them) or pieces of one sub-face (a patch's slabs on both sides).
+  LoopLinks continuingLoops(const IntervalLoops& before, const IntervalLoops& after) const {
+    LoopLinks links;
+    for (const auto& [patch, slab] : after.slabOfPatch) {
+      const auto earlier = before.slabOfPatch.find(patch);
+      if (earlier == before.slabOfPatch.end()) continue;
+      for (const auto& [from, to] : continuingPieces(before, earlier->second, after, patch, slab)) {
+        links.insert({before.loopOf[from], after.loopOf[to]});
+      }
+    }
+    return links;
+  }
+
+  /// Adds the loops whose sub-faces are glued across a horizontal edge at the
+  /// critical angle where `after` starts.
+  void addGluedLoops(const IntervalLoops& before, const IntervalLoops& after, LoopLinks& links) const {
+    if (after.interval >= horizontalGluesAt_.size()) return;
+    for (const SubFaceGlue& glue : horizontalGluesAt_[after.interval]) {
+      for (const auto& [below, above] : {std::pair(glue.first, glue.second), std::pair(glue.second, glue.first)}) {
+        for (std::uint32_t from : piecesOf(before, below)) {
+          for (std::uint32_t to : piecesOf(after, above)) links.insert({before.loopOf[from], after.loopOf[to]});
+        }
+      }
+    }
+  }
+
+  /// Pairs (piece before, piece after) of one patch that continue each other: the
+  /// same piece when the slab goes on; else the pieces of each sub-face in their
+  /// order along the segment (every pair when the sub-face has more pieces on one
+  /// side).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> continuingPieces(const IntervalLoops& before,
+                                                                       std::uint32_t slabBefore,
+                                                                       const IntervalLoops& after, std::uint32_t patch,
+                                                                       std::uint32_t slabAfter) const {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    const auto& faces = arrangement_.subdivisions[patch].slabs[slabAfter].faces;
+    for (std::uint32_t gap = 0; gap < faces.size(); ++gap) {
+      const auto to = after.pieceAt.find(graph_.pieceIndex(patch, slabAfter, gap));
+      if (to == after.pieceAt.end()) continue;
+      if (slabBefore == slabAfter) {
+        pairs.push_back({before.pieceAt.at(graph_.pieceIndex(patch, slabBefore, gap)), to->second});
+        continue;
+      }
+      const std::vector<std::uint32_t> earlier = piecesOf(before, {patch, faces[gap]});
+      const std::vector<std::uint32_t> later = piecesOf(after, {patch, faces[gap]});
+      if (earlier.size() == later.size()) {
+        const std::size_t rank = std::find(later.begin(), later.end(), to->second) - later.begin();
+        pairs.push_back({earlier[rank], to->second});
+      } else {
+        for (std::uint32_t from : earlier) pairs.push_back({from, to->second});
+      }
+    }
+    return pairs;
+  }
+
+  /// The pieces of a sub-face over an interval.
+  std::vector<std::uint32_t> piecesOf(const IntervalLoops& loops, SubFaceId face) const {
+    std::vector<std::uint32_t> found;
+    const auto slab = loops.slabOfPatch.find(face.patch);
+    if (slab == loops.slabOfPatch.end()) return found;
+    const auto& faces = arrangement_.subdivisions[face.patch].slabs[slab->second].faces;
+    for (std::uint32_t gap = 0; gap < faces.size(); ++gap) {
+      if (faces[gap] != face.face) continue;
+      const auto piece = loops.pieceAt.find(graph_.pieceIndex(face.patch, slab->second, gap));
+      if (piece != loops.pieceAt.end()) found.push_back(piece->second);
+    }
+    return found;
+  }
+
+  void addEdges(const IntervalLoops& before, const IntervalLoops& after, const LoopLinks& links) {
+    std::set<std::pair<std::uint32_t, std::uint32_t>> joined{{before.unboundedNode, after.unboundedNode}};
+    for (const auto& [from, to] : links) joined.insert({before.nodeOfLoop[from], after.nodeOfLoop[to]});
+    for (const auto& [from, to] : joined) {
+      if (from != to) graph_.edges_.push_back({from, to, after.interval});
+    }
+  }
+
+  /// Nests the loops by rays at the interval's sample angle: a loop that is a hole
+  /// joins the loop its leftward ray meets (or the unbounded face); each group is a
+  /// face, a new node.
+  void findFaces(IntervalLoops& loops) {
+    const std::uint32_t unbounded = loops.loopCount;
+    detail::DisjointSets faces(loops.loopCount + 1);
+    std::vector<std::optional<std::uint32_t>> outerLoop(loops.loopCount + 1);
+    const std::vector<std::vector<std::uint32_t>> piecesOfLoop = loopMembers(loops);
+    for (std::uint32_t loop = 0; loop < loops.loopCount; ++loop) {
+      const std::optional<std::uint32_t> joined = holeJoinedTo(loops, loop, piecesOfLoop[loop]);
+      if (joined) {
+        faces.unite(loop, *joined);
+      } else {
+        outerLoop[loop] = loop;
+      }
+    }
+    loops.nodeOfLoop.assign(loops.loopCount, 0);
+    std::unordered_map<std::uint32_t, std::uint32_t> nodeOfFace;
+    for (std::uint32_t loop = 0; loop <= loops.loopCount; ++loop) {
+      const std::uint32_t face = faces.find(loop);
+      auto found = nodeOfFace.find(face);
+      if (found == nodeOfFace.end()) {
+        found = nodeOfFace.emplace(face, static_cast<std::uint32_t>(graph_.nodes_.size())).first;
+        graph_.nodes_.push_back(newNode(loops, loop == unbounded ? std::nullopt : std::optional(loop), piecesOfLoop));
+      }
+      if (loop == unbounded) {
+        loops.unboundedNode = found->second;
+      } else {
+        loops.nodeOfLoop[loop] = found->second;
+      }
+      if (outerLoop[loop]) graph_.nodes_[found->second].box = boxOf(loops, piecesOfLoop[loop]);
+    }
+    checkCells(loops);
+  }
+
+  std::vector<std::vector<std::uint32_t>> loopMembers(const IntervalLoops& loops) const {
+    std::vector<std::vector<std::uint32_t>> members(loops.loopCount);
+    for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) members[loops.loopOf[piece]].push_back(piece);
+    return members;
+  }
+
+  /// For a hole, the loop (or the unbounded face, numbered loopCount) its face is
+  /// bounded by next; nothing for an outer loop.
+  std::optional<std::uint32_t> holeJoinedTo(const IntervalLoops& loops, std::uint32_t loop,
+                                            const std::vector<std::uint32_t>& members) const {
+    slices::LeftmostEnd leftmost(arrangement_, loops.sample);
+    for (std::uint32_t piece : members) {
+      const Piece& p = loops.pieces[piece];
+      leftmost.offer(p.patch, slabOf(p), p.gap);
+    }
+    const slices::LeftOfLeftmost look =
+        slices::lookLeftOf(rays_, loops.sample, leftmost.exact().value(), [&](const RayHit& hit) {
+          if (hit.kind != RayHit::Kind::SubFace) return slices::Outside::Unknown;
+          const std::optional<std::uint32_t> seen = freeLoopOf(loops, hit);
+          if (!seen) return slices::Outside::Outer;
+          return *seen == loop ? slices::Outside::Hole : slices::Outside::Unknown;
+        });
+    if (!look.hole) return std::nullopt;
+    if (look.leftward.kind == RayHit::Kind::Nothing) return loops.loopCount;
+    const std::optional<std::uint32_t> met = freeLoopOf(loops, look.leftward);
+    if (!met) throw std::logic_error("CellGraph: a ray in free space meets a blocked side");
+    return met;
+  }
+
+  /// The loop of the piece a ray hit, when the ray arrives from its free side.
+  std::optional<std::uint32_t> freeLoopOf(const IntervalLoops& loops, const RayHit& hit) const {
+    if (!hit.fromPositiveSide) return std::nullopt;
+    const auto found = loops.pieceAt.find(graph_.pieceIndex(hit.face.patch, hit.slab, hit.gap));
+    if (found == loops.pieceAt.end()) return std::nullopt;
+    return loops.loopOf[found->second];
+  }
+
+  CellGraphNode newNode(const IntervalLoops& loops, std::optional<std::uint32_t> loop,
+                        const std::vector<std::vector<std::uint32_t>>& piecesOfLoop) {
+    CellGraphNode node;
+    node.firstInterval = node.lastInterval = loops.interval;
+    node.sample = loops.sample;
+    node.box = {-HUGE_VAL, -HUGE_VAL, HUGE_VAL, HUGE_VAL};
+    if (!loop) {
+      node.cell = 0;
+      node.point = farPoint();
+      return node;
+    }
+    const Piece& piece = loops.pieces[piecesOfLoop[*loop].front()];
+    node.cell = cellOfPiece_[graph_.pieceIndex(piece.patch, piece.slab, piece.gap)];
+    node.point = pointOff(loops, piecesOfLoop[*loop]);
+    return node;
+  }
+
+  /// A point left of every patch: in the unbounded face of every slice.
+  std::array<double, 2> farPoint() const {
+    double lowest = 0, highest = 0;
+    for (const auto& [box, patch] : arrangement_.boxIndex->boxes()) {
+      lowest = std::min({lowest, box.low[0], box.low[1]});
+      highest = std::max({highest, box.high[0], box.high[1]});
+    }
+    return {lowest - (highest - lowest) - 1, 0.0};
+  }
+
+  /// A point of the face a loop bounds: from the middle of one of its pieces, half
+  /// way along x to whatever lies next on the piece's free side.
+  std::array<double, 2> pointOff(const IntervalLoops& loops, const std::vector<std::uint32_t>& members) const {
+    const auto [cosine, sine] = exactCosSin(loops.sample);
+    for (std::uint32_t index : members) {
+      const Piece& piece = loops.pieces[index];
+      const slices::ExactSegment segment = slices::segmentAt(arrangement_.patches[piece.patch], cosine, sine);
+      if (segment.nx == 0) continue;
+      const auto lambdas =
+          slices::pieceOf(arrangement_, piece.patch, slabOf(piece), piece.gap, segment, cosine, sine);
+      if (!lambdas) continue;
+      const Point middle = segment.at((lambdas->first + lambdas->second) / 2);
+      const int direction = segment.nx > 0 ? 1 : -1;
+      const Rational scale = 1 + abs(middle[0]) + abs(middle[1]);
+      for (Rational step = scale * powerOfHalf(20); step > scale * powerOfHalf(120); step /= 1024) {
+        const Point off{middle[0] + direction * step, middle[1]};
+        const RayHit back = rays_.castTo(loops.sample, off, middle);
+        if (back.kind != RayHit::Kind::SubFace || !back.fromPositiveSide || back.face.patch != piece.patch ||
+            back.slab != piece.slab || back.gap != piece.gap) {
+          continue;
+        }
+        const RayHit ahead = rays_.cast(loops.sample, off, direction);
+        const Rational room = ahead.kind == RayHit::Kind::Nothing ? scale : Rational(ahead.along) / 2;
+        return {(off[0] + direction * room).convert_to<double>(), off[1].convert_to<double>()};
+      }
+    }
+    throw std::runtime_error("CellGraph: no point could be placed inside a face");
+  }
+
+  std::array<double, 4> boxOf(const IntervalLoops& loops, const std::vector<std::uint32_t>& members) const {
+    const RoundingScope rounding;
+    const slices::IntervalSlice slice(loops.sample);
+    std::array<double, 4> box{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (std::uint32_t index : members) {
+      const Piece& piece = loops.pieces[index];
+      const PatchGeometry& patch = arrangement_.patches[piece.patch];
+      const std::array<Interval, 2> end0 = slice.end(patch, 0), end1 = slice.end(patch, 1);
+      const auto lambdas = slice.pieceOf(arrangement_, piece.patch, slabOf(piece), piece.gap);
+      const Interval low = lambdas ? lambdas->first : Interval(0), high = lambdas ? lambdas->second : Interval(1);
+      for (const Interval& lambda : {low, high}) {
+        for (int axis : {0, 1}) {
+          const Interval value = end0[axis] + lambda * (end1[axis] - end0[axis]);
+          box[axis] = std::min(box[axis], value.lower());
+          box[axis + 2] = std::max(box[axis + 2], value.upper());
+        }
+      }
+    }
+    return box;
+  }
+
+  /// Every loop of a face bounds the same cell.
+  void checkCells(const IntervalLoops& loops) const {
+    for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
+      const Piece& piece = loops.pieces[index];
+      const std::uint32_t node = loops.nodeOfLoop[loops.loopOf[index]];
+      if (cellOfPiece_[graph_.pieceIndex(piece.patch, piece.slab, piece.gap)] != graph_.nodes_[node].cell) {
+        throw std::logic_error("CellGraph: a face's loops bound different cells");
+      }
+    }
+  }
+
+  void recordRuns(const IntervalLoops& loops) {
+    for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
+      const Piece& piece = loops.pieces[index];
+      addRun(graph_.runsOfPiece_[graph_.pieceIndex(piece.patch, piece.slab, piece.gap)], loops.interval,
+             loops.nodeOfLoop[loops.loopOf[index]]);
+    }
+    addRun(graph_.unboundedRuns_, loops.interval, loops.unboundedNode);
+  }
+
+  static void addRun(std::vector<CellGraph::NodeRun>& runs, std::uint32_t interval, std::uint32_t node) {
+    if (runs.empty() || runs.back().node != node) runs.push_back({interval, node});
+  }
+
+  static constexpr std::uint32_t kNotFree = ~std::uint32_t{0};
+
+  CellGraph& graph_;
+  const Arrangement& arrangement_;
+  const SliceRays& rays_;
+  const CellGraph::CellOfFace& cellOf_;
+  AngleAlgebra& algebra_;
+  std::vector<std::uint32_t> cellOfPiece_;
+  std::vector<AlgebraicAngle> samples_;
+  std::vector<std::vector<SubFaceGlue>> horizontalGluesAt_;
+  std::set<std::pair<std::uint64_t, std::uint64_t>> spiralGlues_;
+};
+
+CellGraph::CellGraph(const Arrangement& arrangement, const SliceRays& rays, const CellOfFace& cellOf,
+                     AngleAlgebra& algebra, const Cancellation& cancellation) {
+  CellGraphSweep(*this, arrangement, rays, cellOf, algebra).run(cancellation);
+}
+
+std::uint32_t CellGraph::intervalOf(const AlgebraicAngle& angle, AngleAlgebra& algebra) const {
+  if (criticalAngles_.empty()) return 0;
+  const auto after = std::upper_bound(criticalAngles_.begin(), criticalAngles_.end(), angle,
+                                      [&](const auto& a, const auto& b) { return algebra.compare(a, b) < 0; });
+  if (after == criticalAngles_.begin()) return static_cast<std::uint32_t>(criticalAngles_.size() - 1);
+  return static_cast<std::uint32_t>(after - criticalAngles_.begin() - 1);
+}
+
+std::optional<std::uint32_t> CellGraph::nodeAtRun(const std::vector<NodeRun>& runs, std::uint32_t interval) const {
+  const auto after = std::upper_bound(runs.begin(), runs.end(), interval,
+                                      [](std::uint32_t i, const NodeRun& run) { return i < run.interval; });
+  if (after == runs.begin()) return std::nullopt;
+  return std::prev(after)->node;
+}
+
+std::optional<std::uint32_t> CellGraph::nodeOf(const RayHit& hit, const AlgebraicAngle& rationalAngle,
+                                               AngleAlgebra& algebra) const {
+  const std::uint32_t interval = intervalOf(rationalAngle, algebra);
+  if (hit.kind == RayHit::Kind::Nothing) return nodeAtRun(unboundedRuns_, interval);
+  if (hit.kind != RayHit::Kind::SubFace || !hit.fromPositiveSide) return std::nullopt;
+  return nodeAtRun(runsOfPiece_[pieceIndex(hit.face.patch, hit.slab, hit.gap)], interval);
+}
+
+}  // namespace freespace

@@ -1,0 +1,131 @@
+// The free cell graph (docs/design.md section 7) on the bundled scenes: its nodes
+// and edges against the free cells, the exact locate and the clearance.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <iostream>
+#include <string>
+
+#include "geometry/disjoint_sets.h"
+#include "freespace/problem/planar_problem.h"
+#include "freespace/space/free_space.h"
+#include "random_configurations.h"
+
+using namespace freespace;
+using namespace freespace::testing;
+
+namespace {
+
+class BundledCellGraph : public ::testing::TestWithParam<std::string> {
+ protected:
+  static LoadedProblem problem() {
+    return loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + GetParam() + ".cfg");
+  }
+};
+
+/// Components of the graph: the nodes of one cell form one component, and no edge
+/// joins two cells.
+TEST_P(BundledCellGraph, ComponentsAreTheCells) {
+  const LoadedProblem loaded = problem();
+  const FreeSpace space(loaded.robot, loaded.world);
+  const auto start = std::chrono::steady_clock::now();
+  const CellGraph& graph = space.cellGraph();
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::cout << GetParam() << ": " << graph.criticalAngles().size() << " critical angles, " << graph.nodes().size()
+            << " nodes, " << graph.edges().size() << " edges, " << seconds << " s\n";
+  detail::DisjointSets components(graph.nodes().size());
+  for (const CellGraphEdge& edge : graph.edges()) {
+    EXPECT_EQ(graph.nodes()[edge.from].cell, graph.nodes()[edge.to].cell);
+    components.unite(edge.from, edge.to);
+  }
+  std::vector<std::optional<std::uint32_t>> componentOfCell(space.cellCount());
+  for (std::uint32_t node = 0; node < graph.nodes().size(); ++node) {
+    auto& component = componentOfCell[graph.nodes()[node].cell];
+    if (!component) component = components.find(node);
+    EXPECT_EQ(*component, components.find(node)) << "node " << node << " of cell " << graph.nodes()[node].cell;
+  }
+  for (std::size_t cell = 0; cell < componentOfCell.size(); ++cell) EXPECT_TRUE(componentOfCell[cell]) << cell;
+}
+
+/// Edges join the last interval of one node to the first of the next, at the
+/// critical angle between them.
+TEST_P(BundledCellGraph, EdgesJoinNeighbouringIntervals) {
+  const LoadedProblem loaded = problem();
+  const FreeSpace space(loaded.robot, loaded.world);
+  const CellGraph& graph = space.cellGraph();
+  const std::size_t intervals = graph.intervalCount();
+  for (const CellGraphEdge& edge : graph.edges()) {
+    const CellGraphNode& from = graph.nodes()[edge.from];
+    const CellGraphNode& to = graph.nodes()[edge.to];
+    EXPECT_EQ((from.lastInterval + 1) % intervals, to.firstInterval);
+    EXPECT_EQ(edge.angle, to.firstInterval);
+  }
+  for (const CellGraphNode& node : graph.nodes()) EXPECT_LE(node.firstInterval, node.lastInterval);
+}
+
+/// Every node's point lies in its face: free in the node's cell by the exact
+/// collision test and locate, and nodeOf gives the node back.
+TEST_P(BundledCellGraph, NodePointsLieInTheirFaces) {
+  const LoadedProblem loaded = problem();
+  const FreeSpace space(loaded.robot, loaded.world);
+  const CellGraph& graph = space.cellGraph();
+  const double scale = space.meshes().scale;
+  for (std::uint32_t index = 0; index < graph.nodes().size(); ++index) {
+    const CellGraphNode& node = graph.nodes()[index];
+    const Pose2 pose{node.point[0] / scale, node.point[1] / scale, node.sample.radians()};
+    const Location location = space.locate(pose);
+    ASSERT_TRUE(location.free) << "node " << index;
+    EXPECT_EQ(location.cell, node.cell) << "node " << index;
+    EXPECT_EQ(space.nodeOf(pose), index);
+    if (std::isfinite(node.box[0])) {
+      EXPECT_LE(node.box[0], node.point[0]);
+      EXPECT_LE(node.point[0], node.box[2]);
+      EXPECT_LE(node.box[1], node.point[1]);
+      EXPECT_LE(node.point[1], node.box[3]);
+    }
+  }
+}
+
+/// Random configurations: a node exactly for the free ones, of their cell, over an
+/// interval holding their angle; and a configuration moved by less than its
+/// clearance at the same angle (inside a disc of free configurations) stays in
+/// the same node.
+TEST_P(BundledCellGraph, ConfigurationsFindTheirNodes) {
+  const LoadedProblem loaded = problem();
+  const FreeSpace space(loaded.robot, loaded.world);
+  const CellGraph& graph = space.cellGraph();
+  RandomConfigurations random(space, 2026);
+  std::mt19937 turn(7);
+  int free = 0, moved = 0;
+  for (int sample = 0; sample < 1000; ++sample) {
+    const Pose2 pose = random.next();
+    const Location location = space.locate(pose);
+    const std::optional<std::uint32_t> node = space.nodeOf(pose);
+    ASSERT_EQ(node.has_value(), location.free);
+    if (!node) continue;
+    ++free;
+    EXPECT_EQ(graph.nodes()[*node].cell, location.cell);
+    const std::uint32_t interval =
+        graph.intervalOf(AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta)), space.algebra());
+    EXPECT_LE(graph.nodes()[*node].firstInterval, interval);
+    EXPECT_GE(graph.nodes()[*node].lastInterval, interval);
+    const Clearance clearance = space.clearance(pose);
+    if (!std::isfinite(clearance.lower) || clearance.lower <= 0) continue;
+    const double direction = std::uniform_real_distribution<double>(-M_PI, M_PI)(turn);
+    const double distance = 0.9 * clearance.lower;
+    const Pose2 near{pose.x + distance * std::cos(direction), pose.y + distance * std::sin(direction), pose.theta};
+    EXPECT_EQ(space.nodeOf(near), node);
+    ++moved;
+  }
+  std::cout << GetParam() << ": " << free << " free of 1000, " << moved << " moved within their clearance\n";
+  EXPECT_GT(free, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, BundledCellGraph,
+                         ::testing::Values("keyhole", "keyhole_narrow", "cage", "maze", "overhang", "table",
+                                           "table_tall", "turn_around", "room_door", "random_polyhedra",
+                                           "tetra_floorplan"));
+
+}  // namespace
