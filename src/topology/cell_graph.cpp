@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <unordered_map>
@@ -84,11 +85,7 @@ class CellGraphSweep {
       }
       for (const auto& [patch, slab] : starting[interval]) active[patch] = slab;
       IntervalLoops current = loopsOver(interval, active);
-      if (interval == 0) {
-        findFaces(current);
-      } else {
-        continueFaces(previous, current);
-      }
+      assignFaces(interval == 0 ? nullptr : &previous, current);
       recordRuns(current);
       if (interval == 0) first = current;
       previous = std::move(current);
@@ -308,34 +305,6 @@ class CellGraphSweep {
 
   // --- Faces --------------------------------------------------------------------------
 
-  /// Faces continue when the loops continue one to one through pieces of the same
-  /// sub-faces; new nodes otherwise, joined to the previous ones by those pieces and
-  /// by the sub-faces glued across horizontal edges at the angle between.
-  void continueFaces(const IntervalLoops& previous, IntervalLoops& current) {
-    LoopLinks links = continuingLoops(previous, current);
-    if (oneToOne(links, previous.loopCount, current.loopCount)) {
-      current.nodeOfLoop.resize(current.loopCount);
-      for (const auto& [before, after] : links) current.nodeOfLoop[after] = previous.nodeOfLoop[before];
-      current.unboundedNode = previous.unboundedNode;
-      for (std::uint32_t node : current.nodeOfLoop) graph_.nodes_[node].lastInterval = current.interval;
-      graph_.nodes_[current.unboundedNode].lastInterval = current.interval;
-      return;
-    }
-    findFaces(current);
-    addGluedLoops(previous, current, links);
-    addEdges(previous, current, links);
-  }
-
-  static bool oneToOne(const LoopLinks& links, std::uint32_t before, std::uint32_t after) {
-    if (before != after || links.size() != before) return false;
-    std::vector<bool> seenBefore(before), seenAfter(after);
-    for (const auto& [from, to] : links) {
-      if (seenBefore[from] || seenAfter[to]) return false;
-      seenBefore[from] = seenAfter[to] = true;
-    }
-    return true;
-  }
-
   /// Loops of neighbouring intervals that share a piece (a slab across the critical
   /// angle between them) or pieces of one sub-face (a patch's slabs on both sides).
   LoopLinks continuingLoops(const IntervalLoops& before, const IntervalLoops& after) const {
@@ -414,39 +383,125 @@ class CellGraphSweep {
     }
   }
 
-  /// Nests the loops by rays at the interval's sample angle: a loop that is a hole
-  /// joins the loop its leftward ray meets (or the unbounded face); each group is a
-  /// face, a new node.
-  void findFaces(IntervalLoops& loops) {
-    const std::uint32_t unbounded = loops.loopCount;
-    detail::DisjointSets faces(loops.loopCount + 1);
-    std::vector<std::optional<std::uint32_t>> outerLoop(loops.loopCount + 1);
-    const std::vector<std::vector<std::uint32_t>> piecesOfLoop = loopMembers(loops);
-    for (std::uint32_t loop = 0; loop < loops.loopCount; ++loop) {
-      const std::optional<std::uint32_t> joined = holeJoinedTo(loops, loop, piecesOfLoop[loop]);
-      if (joined) {
-        faces.unite(loop, *joined);
-      } else {
-        outerLoop[loop] = loop;
+  /// The faces over an interval, as nodes (see CellGraph). Loops that continue one
+  /// to one from the previous interval keep their face's nesting; the others are
+  /// nested by rays, and so are the loops of every face one of them is an outer loop
+  /// for (a face split or merged or born: its holes may have moved). A face whose
+  /// loops are exactly the continuations of one previous face's loops continues its
+  /// node; any other face is a new node, joined to every previous face it shares
+  /// loops with (or sub-faces glued across a horizontal edge).
+  void assignFaces(const IntervalLoops* previous, IntervalLoops& current) {
+    LoopLinks links;
+    if (previous) links = continuingLoops(*previous, current);
+    const std::vector<std::optional<std::uint32_t>> continues =
+        previous ? continuations(links, previous->loopCount, current.loopCount)
+                 : std::vector<std::optional<std::uint32_t>>(current.loopCount);
+    if (previous) addGluedLoops(*previous, current, links);
+    const std::vector<std::vector<std::uint32_t>> members = loopMembers(current);
+    FaceNesting nesting(current.loopCount);
+    std::set<std::uint32_t> renested;
+    for (std::uint32_t loop = 0; loop < current.loopCount; ++loop) {
+      if (continues[loop]) continue;
+      if (nest(current, loop, members[loop], nesting)) {
+        for (const auto& [before, after] : links) {
+          if (after == loop) renested.insert(previous->nodeOfLoop[before]);
+        }
       }
     }
-    loops.nodeOfLoop.assign(loops.loopCount, 0);
-    std::unordered_map<std::uint32_t, std::uint32_t> nodeOfFace;
-    for (std::uint32_t loop = 0; loop <= loops.loopCount; ++loop) {
-      const std::uint32_t face = faces.find(loop);
-      auto found = nodeOfFace.find(face);
-      if (found == nodeOfFace.end()) {
-        found = nodeOfFace.emplace(face, static_cast<std::uint32_t>(graph_.nodes_.size())).first;
-        graph_.nodes_.push_back(newNode(loops, loop == unbounded ? std::nullopt : std::optional(loop), piecesOfLoop));
+    std::unordered_map<std::uint32_t, std::uint32_t> representative;
+    if (previous) representative[previous->unboundedNode] = nesting.unbounded;
+    for (std::uint32_t loop = 0; loop < current.loopCount; ++loop) {
+      if (!continues[loop]) continue;
+      const std::uint32_t node = previous->nodeOfLoop[*continues[loop]];
+      if (renested.count(node)) {
+        nest(current, loop, members[loop], nesting);
+        continue;
       }
-      if (loop == unbounded) {
-        loops.unboundedNode = found->second;
-      } else {
-        loops.nodeOfLoop[loop] = found->second;
-      }
-      if (outerLoop[loop]) graph_.nodes_[found->second].box = boxOf(loops, piecesOfLoop[loop]);
+      const auto found = representative.emplace(node, loop);
+      if (!found.second) nesting.faces.unite(loop, found.first->second);
     }
-    checkCells(loops);
+    numberFaces(previous, current, links, continues, members, nesting);
+    checkCells(current);
+  }
+
+  /// The loops of the faces over an interval, the unbounded face as one more.
+  struct FaceNesting {
+    explicit FaceNesting(std::uint32_t loops) : unbounded(loops), faces(loops + 1), outer(loops) {}
+    std::uint32_t unbounded;
+    detail::DisjointSets faces;
+    std::vector<bool> outer;
+  };
+
+  /// Nests one loop by rays: joins a hole to the face around it; returns whether it
+  /// is an outer loop.
+  bool nest(const IntervalLoops& loops, std::uint32_t loop, const std::vector<std::uint32_t>& members,
+            FaceNesting& nesting) const {
+    const std::optional<std::uint32_t> joined = holeJoinedTo(loops, loop, members);
+    if (joined) {
+      nesting.faces.unite(loop, *joined);
+      return false;
+    }
+    nesting.outer[loop] = true;
+    return true;
+  }
+
+  /// For each loop after, the loop before it continues one to one, if any.
+  static std::vector<std::optional<std::uint32_t>> continuations(const LoopLinks& links, std::uint32_t before,
+                                                                 std::uint32_t after) {
+    std::vector<std::uint32_t> forward(before), backward(after);
+    for (const auto& [from, to] : links) {
+      ++forward[from];
+      ++backward[to];
+    }
+    std::vector<std::optional<std::uint32_t>> continues(after);
+    for (const auto& [from, to] : links) {
+      if (forward[from] == 1 && backward[to] == 1) continues[to] = from;
+    }
+    return continues;
+  }
+
+  /// Gives each face its node: the previous one when the face continues it, else a
+  /// new node with edges from the previous faces it is linked to.
+  void numberFaces(const IntervalLoops* previous, IntervalLoops& current, const LoopLinks& links,
+                   const std::vector<std::optional<std::uint32_t>>& continues,
+                   const std::vector<std::vector<std::uint32_t>>& members, FaceNesting& nesting) {
+    struct Face {
+      std::vector<std::uint32_t> loops;
+      bool changed = false;
+      std::set<std::uint32_t> previousNodes;
+    };
+    std::map<std::uint32_t, Face> faces;
+    faces[nesting.faces.find(nesting.unbounded)];
+    if (previous) faces[nesting.faces.find(nesting.unbounded)].previousNodes.insert(previous->unboundedNode);
+    for (std::uint32_t loop = 0; loop < current.loopCount; ++loop) {
+      Face& face = faces[nesting.faces.find(loop)];
+      face.loops.push_back(loop);
+      face.changed = face.changed || !continues[loop];
+    }
+    for (const auto& [before, after] : links) {
+      faces[nesting.faces.find(after)].previousNodes.insert(previous->nodeOfLoop[before]);
+    }
+    std::unordered_map<std::uint32_t, std::uint32_t> loopsOfPreviousNode;
+    if (previous) {
+      for (std::uint32_t loop = 0; loop < previous->loopCount; ++loop) ++loopsOfPreviousNode[previous->nodeOfLoop[loop]];
+    }
+    current.nodeOfLoop.assign(current.loopCount, 0);
+    const std::uint32_t unboundedRoot = nesting.faces.find(nesting.unbounded);
+    for (const auto& [root, face] : faces) {
+      const bool unbounded = root == unboundedRoot;
+      std::uint32_t node;
+      if (!face.changed && face.previousNodes.size() == 1 &&
+          loopsOfPreviousNode[*face.previousNodes.begin()] == face.loops.size()) {
+        node = *face.previousNodes.begin();
+        graph_.nodes_[node].lastInterval = current.interval;
+      } else {
+        node = static_cast<std::uint32_t>(graph_.nodes_.size());
+        graph_.nodes_.push_back(newNode(current, face.loops, members, nesting.outer, face.previousNodes, unbounded));
+        for (std::uint32_t from : face.previousNodes) graph_.edges_.push_back({from, node, current.interval});
+      }
+      for (std::uint32_t loop : face.loops) current.nodeOfLoop[loop] = node;
+      if (unbounded) current.unboundedNode = node;
+    }
   }
 
   std::vector<std::vector<std::uint32_t>> loopMembers(const IntervalLoops& loops) const {
@@ -486,20 +541,34 @@ class CellGraphSweep {
     return loops.loopOf[found->second];
   }
 
-  CellGraphNode newNode(const IntervalLoops& loops, std::optional<std::uint32_t> loop,
-                        const std::vector<std::vector<std::uint32_t>>& piecesOfLoop) {
+  /// A node for a face over the current interval: its cell, a point and a box.
+  CellGraphNode newNode(const IntervalLoops& loops, const std::vector<std::uint32_t>& faceLoops,
+                        const std::vector<std::vector<std::uint32_t>>& members, const std::vector<bool>& outerLoops,
+                        const std::set<std::uint32_t>& previousNodes, bool unbounded) const {
     CellGraphNode node;
     node.firstInterval = node.lastInterval = loops.interval;
     node.sample = loops.sample;
     node.box = {-HUGE_VAL, -HUGE_VAL, HUGE_VAL, HUGE_VAL};
-    if (!loop) {
+    if (unbounded) {
       node.cell = 0;
       node.point = farPoint();
       return node;
     }
-    const Piece& piece = loops.pieces[piecesOfLoop[*loop].front()];
+    const Piece& piece = loops.pieces[members[faceLoops.front()].front()];
     node.cell = cellOfPiece_[graph_.pieceIndex(piece.patch, piece.slab, piece.gap)];
-    node.point = pointOff(loops, piecesOfLoop[*loop]);
+    node.point = pointOff(loops, members[faceLoops.front()]);
+    const auto outer = std::find_if(faceLoops.begin(), faceLoops.end(), [&](std::uint32_t l) { return outerLoops[l]; });
+    if (outer != faceLoops.end()) {
+      node.box = boxOf(loops, members[*outer]);
+    } else {
+      // The outer loop continues from one of the previous faces: their boxes hold it.
+      node.box = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+      for (std::uint32_t from : previousNodes) {
+        const std::array<double, 4>& box = graph_.nodes_[from].box;
+        node.box = {std::min(node.box[0], box[0]), std::min(node.box[1], box[1]), std::max(node.box[2], box[2]),
+                    std::max(node.box[3], box[3])};
+      }
+    }
     return node;
   }
 
