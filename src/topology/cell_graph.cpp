@@ -45,10 +45,22 @@ struct IntervalLoops {
   std::vector<Piece> pieces;
   std::vector<std::uint32_t> loopOf;
   std::uint32_t loopCount = 0;
-  /// The slab of each patch with free pieces here.
-  std::unordered_map<std::uint32_t, std::uint32_t> slabOfPatch;
-  /// Index in `pieces` by CellGraph::pieceIndex.
-  std::unordered_map<std::size_t, std::uint32_t> pieceAt;
+  /// (patch, slab) for each patch with free pieces here, by patch.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> slabs;
+  /// CellGraph::pieceIndex of each piece, increasing.
+  std::vector<std::size_t> pieceIndices;
+
+  std::optional<std::uint32_t> slabOf(std::uint32_t patch) const {
+    const auto found = std::lower_bound(slabs.begin(), slabs.end(), std::pair(patch, std::uint32_t{0}));
+    if (found == slabs.end() || found->first != patch) return std::nullopt;
+    return found->second;
+  }
+  /// The piece with a CellGraph::pieceIndex, if it is one here.
+  std::optional<std::uint32_t> pieceAt(std::size_t index) const {
+    const auto found = std::lower_bound(pieceIndices.begin(), pieceIndices.end(), index);
+    if (found == pieceIndices.end() || *found != index) return std::nullopt;
+    return static_cast<std::uint32_t>(found - pieceIndices.begin());
+  }
   std::vector<std::uint32_t> nodeOfLoop;
   std::uint32_t unboundedNode = 0;
 };
@@ -70,12 +82,13 @@ class CellGraphSweep {
     for (const SubFaceGlue& glue : arrangement.aroundSpirals.glues) {
       spiralGlues_.insert({codeOf(glue.first), codeOf(glue.second)});
     }
+    numberSpirals();
   }
 
   void run(const Cancellation& cancellation) {
     const std::uint32_t count = static_cast<std::uint32_t>(graph_.intervalCount());
     std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> starting(count), ending(count);
-    std::unordered_map<std::uint32_t, std::uint32_t> active = slabsCovering(starting, ending);
+    std::map<std::uint32_t, std::uint32_t> active = slabsCovering(starting, ending);
     IntervalLoops first, previous;
     for (std::uint32_t interval = 0; interval < count; ++interval) {
       cancellation.check();
@@ -121,6 +134,18 @@ class CellGraphSweep {
           }
         }
       }
+    }
+  }
+
+  /// Numbers the spirals (segment ends shared by patches) once.
+  void numberSpirals() {
+    std::unordered_map<SegmentEnd, std::uint32_t, SpiralHash> numbers;
+    for (const PatchGeometry& patch : arrangement_.patches) {
+      std::array<std::uint32_t, 2> ends{};
+      for (int end : {0, 1}) {
+        ends[end] = numbers.emplace(patch.segment.ends[end], static_cast<std::uint32_t>(numbers.size())).first->second;
+      }
+      spiralOfEnd_.push_back(ends);
     }
   }
 
@@ -186,10 +211,10 @@ class CellGraphSweep {
   /// The slabs with free pieces starting and ending at each interval (by the index of
   /// their first interval and of the first interval after them); returns those
   /// covering interval 0 (whole circles and slabs across the last critical angle).
-  std::unordered_map<std::uint32_t, std::uint32_t> slabsCovering(
+  std::map<std::uint32_t, std::uint32_t> slabsCovering(
       std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>>& starting,
       std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>>& ending) {
-    std::unordered_map<std::uint32_t, std::uint32_t> covering;
+    std::map<std::uint32_t, std::uint32_t> covering;
     forEachFreeSlab([&](std::uint32_t patch, std::uint32_t slab, const PatchSlab& geometry) {
       if (wholeCircle(geometry)) {
         covering[patch] = slab;
@@ -213,17 +238,17 @@ class CellGraphSweep {
 
   // --- Loops over one interval ------------------------------------------------------
 
-  IntervalLoops loopsOver(std::uint32_t interval, const std::unordered_map<std::uint32_t, std::uint32_t>& active) {
+  IntervalLoops loopsOver(std::uint32_t interval, const std::map<std::uint32_t, std::uint32_t>& active) {
     IntervalLoops loops;
     loops.interval = interval;
     loops.sample = samples_[interval];
-    loops.slabOfPatch = active;
-    for (const auto& [patch, slab] : active) {
+    loops.slabs.assign(active.begin(), active.end());
+    for (const auto& [patch, slab] : loops.slabs) {
       const std::size_t gaps = arrangement_.subdivisions[patch].slabs[slab].faces.size();
       for (std::uint32_t gap = 0; gap < gaps; ++gap) {
         const std::size_t index = graph_.pieceIndex(patch, slab, gap);
         if (cellOfPiece_[index] == kNotFree) continue;
-        loops.pieceAt.emplace(index, static_cast<std::uint32_t>(loops.pieces.size()));
+        loops.pieceIndices.push_back(index);
         loops.pieces.push_back({patch, slab, gap});
       }
     }
@@ -254,16 +279,16 @@ class CellGraphSweep {
         if (end == 0 || end > slab.curves.size()) continue;
         const std::uint32_t curve = slab.curves[end - 1];
         const std::uint32_t other = arrangement_.curves[curve].other(piece.patch);
-        const auto otherSlab = loops.slabOfPatch.find(other);
-        if (otherSlab == loops.slabOfPatch.end()) throw std::logic_error("CellGraph: a free piece's curve ends nowhere");
-        const auto& curves = arrangement_.subdivisions[other].slabs[otherSlab->second].curves;
+        const std::optional<std::uint32_t> otherSlab = loops.slabOf(other);
+        if (!otherSlab) throw std::logic_error("CellGraph: a free piece's curve ends nowhere");
+        const auto& curves = arrangement_.subdivisions[other].slabs[*otherSlab].curves;
         const std::size_t at = std::find(curves.begin(), curves.end(), curve) - curves.begin();
         std::optional<std::uint32_t> next;
         for (const std::size_t gap : {at, at + 1}) {
-          const auto found = loops.pieceAt.find(graph_.pieceIndex(other, otherSlab->second, gap));
-          if (found == loops.pieceAt.end()) continue;
+          const std::optional<std::uint32_t> found = loops.pieceAt(graph_.pieceIndex(other, *otherSlab, gap));
+          if (!found) continue;
           if (next) throw std::logic_error("CellGraph: both sides of a curve bound free space");
-          next = found->second;
+          next = found;
         }
         if (!next) throw std::logic_error("CellGraph: a free piece continues into no free piece across a curve");
         sets.unite(index, *next);
@@ -274,14 +299,21 @@ class CellGraphSweep {
   /// Pieces ending at one spiral point are joined in pairs, by the gluing around
   /// spirals when more than two end there.
   void joinAroundSpirals(const IntervalLoops& loops, detail::DisjointSets& sets) const {
-    std::unordered_map<SegmentEnd, std::vector<std::uint32_t>, SpiralHash> atSpiral;
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> spiralEnds;  // (spiral, piece)
     for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
       const Piece& piece = loops.pieces[index];
-      const PatchSegment& segment = arrangement_.patches[piece.patch].segment;
-      if (piece.gap == 0) atSpiral[segment.ends[0]].push_back(index);
-      if (piece.gap + 1 == slabOf(piece).faces.size()) atSpiral[segment.ends[1]].push_back(index);
+      if (piece.gap == 0) spiralEnds.push_back({spiralOfEnd_[piece.patch][0], index});
+      if (piece.gap + 1 == slabOf(piece).faces.size()) spiralEnds.push_back({spiralOfEnd_[piece.patch][1], index});
     }
-    for (const auto& [spiral, ending] : atSpiral) {
+    std::sort(spiralEnds.begin(), spiralEnds.end());
+    std::vector<std::uint32_t> ending;
+    for (std::size_t first = 0; first < spiralEnds.size();) {
+      ending.clear();
+      std::size_t last = first;
+      for (; last < spiralEnds.size() && spiralEnds[last].first == spiralEnds[first].first; ++last) {
+        ending.push_back(spiralEnds[last].second);
+      }
+      first = last;
       if (ending.size() == 1) throw std::logic_error("CellGraph: a free piece ends alone at a spiral");
       if (ending.size() == 2) {
         sets.unite(ending[0], ending[1]);
@@ -309,12 +341,30 @@ class CellGraphSweep {
   /// angle between them) or pieces of one sub-face (a patch's slabs on both sides).
   LoopLinks continuingLoops(const IntervalLoops& before, const IntervalLoops& after) const {
     LoopLinks links;
-    for (const auto& [patch, slab] : after.slabOfPatch) {
-      const auto earlier = before.slabOfPatch.find(patch);
-      if (earlier == before.slabOfPatch.end()) continue;
-      for (const auto& [from, to] : continuingPieces(before, earlier->second, after, patch, slab)) {
-        links.insert({before.loopOf[from], after.loopOf[to]});
+    // Both lists are increasing: one walk finds the pieces they share.
+    for (std::size_t i = 0, j = 0; i < before.pieceIndices.size() && j < after.pieceIndices.size();) {
+      if (before.pieceIndices[i] < after.pieceIndices[j]) {
+        ++i;
+      } else if (after.pieceIndices[j] < before.pieceIndices[i]) {
+        ++j;
+      } else {
+        links.insert({before.loopOf[i++], after.loopOf[j++]});
       }
+    }
+    for (std::size_t i = 0, j = 0; i < before.slabs.size() && j < after.slabs.size();) {
+      const auto& [patchBefore, slabBefore] = before.slabs[i];
+      const auto& [patchAfter, slabAfter] = after.slabs[j];
+      if (patchBefore != patchAfter) {
+        patchBefore < patchAfter ? ++i : ++j;
+        continue;
+      }
+      if (slabBefore != slabAfter) {
+        for (const auto& [from, to] : piecesOfSubFaces(before, after, patchAfter, slabAfter)) {
+          links.insert({before.loopOf[from], after.loopOf[to]});
+        }
+      }
+      ++i;
+      ++j;
     }
     return links;
   }
@@ -332,30 +382,24 @@ class CellGraphSweep {
     }
   }
 
-  /// Pairs (piece before, piece after) of one patch that continue each other: the
-  /// same piece when the slab goes on; else the pieces of each sub-face in their
-  /// order along the segment (every pair when the sub-face has more pieces on one
-  /// side).
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> continuingPieces(const IntervalLoops& before,
-                                                                       std::uint32_t slabBefore,
+  /// Pairs (piece before, piece after) of one patch whose slab changes between the
+  /// intervals: the pieces of each sub-face, in their order along the segment
+  /// (every pair when the sub-face has more pieces on one side).
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> piecesOfSubFaces(const IntervalLoops& before,
                                                                        const IntervalLoops& after, std::uint32_t patch,
                                                                        std::uint32_t slabAfter) const {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     const auto& faces = arrangement_.subdivisions[patch].slabs[slabAfter].faces;
     for (std::uint32_t gap = 0; gap < faces.size(); ++gap) {
-      const auto to = after.pieceAt.find(graph_.pieceIndex(patch, slabAfter, gap));
-      if (to == after.pieceAt.end()) continue;
-      if (slabBefore == slabAfter) {
-        pairs.push_back({before.pieceAt.at(graph_.pieceIndex(patch, slabBefore, gap)), to->second});
-        continue;
-      }
+      const std::optional<std::uint32_t> to = after.pieceAt(graph_.pieceIndex(patch, slabAfter, gap));
+      if (!to) continue;
       const std::vector<std::uint32_t> earlier = piecesOf(before, {patch, faces[gap]});
       const std::vector<std::uint32_t> later = piecesOf(after, {patch, faces[gap]});
       if (earlier.size() == later.size()) {
-        const std::size_t rank = std::find(later.begin(), later.end(), to->second) - later.begin();
-        pairs.push_back({earlier[rank], to->second});
+        const std::size_t rank = std::find(later.begin(), later.end(), *to) - later.begin();
+        pairs.push_back({earlier[rank], *to});
       } else {
-        for (std::uint32_t from : earlier) pairs.push_back({from, to->second});
+        for (std::uint32_t from : earlier) pairs.push_back({from, *to});
       }
     }
     return pairs;
@@ -364,13 +408,12 @@ class CellGraphSweep {
   /// The pieces of a sub-face over an interval.
   std::vector<std::uint32_t> piecesOf(const IntervalLoops& loops, SubFaceId face) const {
     std::vector<std::uint32_t> found;
-    const auto slab = loops.slabOfPatch.find(face.patch);
-    if (slab == loops.slabOfPatch.end()) return found;
-    const auto& faces = arrangement_.subdivisions[face.patch].slabs[slab->second].faces;
+    const std::optional<std::uint32_t> slab = loops.slabOf(face.patch);
+    if (!slab) return found;
+    const auto& faces = arrangement_.subdivisions[face.patch].slabs[*slab].faces;
     for (std::uint32_t gap = 0; gap < faces.size(); ++gap) {
       if (faces[gap] != face.face) continue;
-      const auto piece = loops.pieceAt.find(graph_.pieceIndex(face.patch, slab->second, gap));
-      if (piece != loops.pieceAt.end()) found.push_back(piece->second);
+      if (const auto piece = loops.pieceAt(graph_.pieceIndex(face.patch, *slab, gap))) found.push_back(*piece);
     }
     return found;
   }
@@ -536,9 +579,9 @@ class CellGraphSweep {
   /// The loop of the piece a ray hit, when the ray arrives from its free side.
   std::optional<std::uint32_t> freeLoopOf(const IntervalLoops& loops, const RayHit& hit) const {
     if (!hit.fromPositiveSide) return std::nullopt;
-    const auto found = loops.pieceAt.find(graph_.pieceIndex(hit.face.patch, hit.slab, hit.gap));
-    if (found == loops.pieceAt.end()) return std::nullopt;
-    return loops.loopOf[found->second];
+    const std::optional<std::uint32_t> found = loops.pieceAt(graph_.pieceIndex(hit.face.patch, hit.slab, hit.gap));
+    if (!found) return std::nullopt;
+    return loops.loopOf[*found];
   }
 
   /// A node for a face over the current interval: its cell, a point and a box.
@@ -667,6 +710,7 @@ class CellGraphSweep {
   std::vector<AlgebraicAngle> samples_;
   std::vector<std::vector<SubFaceGlue>> horizontalGluesAt_;
   std::set<std::pair<std::uint64_t, std::uint64_t>> spiralGlues_;
+  std::vector<std::array<std::uint32_t, 2>> spiralOfEnd_;
 };
 
 CellGraph::CellGraph(const Arrangement& arrangement, const SliceRays& rays, const CellOfFace& cellOf,

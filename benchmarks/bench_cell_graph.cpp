@@ -1,0 +1,54 @@
+// The free cell graph (docs/design.md section 7) on the bundled scenes: its size and
+// the time it takes against the construction's (target: at most half).
+//
+// Usage: bench_cell_graph [PROBLEM.cfg ...]   (default: every benchmarks/problems/*.cfg)
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include "benchmark_arguments.h"
+#include "freespace/problem/planar_problem.h"
+#include "freespace/space/free_space.h"
+
+using namespace freespace;
+
+namespace {
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void measure(const std::string& cfg) {
+  const LoadedProblem loaded = loadProblem(cfg);
+  auto start = std::chrono::steady_clock::now();
+  const FreeSpace space(loaded.robot, loaded.world);
+  const double build = secondsSince(start);
+  start = std::chrono::steady_clock::now();
+  const CellGraph& graph = space.cellGraph();
+  const double graphSeconds = secondsSince(start);
+  std::cout << "| " << std::filesystem::path(cfg).stem().string() << " | " << space.cellCount() << " | "
+            << graph.criticalAngles().size() << " | " << graph.nodes().size() << " | " << graph.edges().size() << " | "
+            << build << " | " << graphSeconds << " | " << graphSeconds / build << " |" << std::endl;
+}
+
+int run(int argc, char** argv) {
+  std::vector<std::string> problems;
+  for (int i = 1; i < argc; ++i) {
+    benchmarks::rejectOption(argv[i], "bench_cell_graph [PROBLEM.cfg ...]");
+    problems.push_back(argv[i]);
+  }
+  if (problems.empty()) problems = benchmarks::bundledProblems();
+  benchmarks::requireFiles(problems);
+  std::cout << "| problem | free cells | critical angles | nodes | edges | build s | graph s | graph / build |\n"
+               "| --- | --- | --- | --- | --- | --- | --- | --- |"
+            << std::endl;
+  for (const std::string& problem : problems) measure(problem);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return benchmarks::reportingErrors("bench_cell_graph", [&] { return run(argc, argv); });
+}
