@@ -7,11 +7,13 @@
 #include <random>
 #include <iostream>
 #include <string>
+#include <tuple>
 
 #include "geometry/disjoint_sets.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/space/free_space.h"
 #include "random_configurations.h"
+#include "temp_dir.h"
 
 using namespace freespace;
 using namespace freespace::testing;
@@ -127,5 +129,39 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BundledCellGraph,
                          ::testing::Values("keyhole", "keyhole_narrow", "cage", "maze", "overhang", "table",
                                            "table_tall", "turn_around", "room_door", "random_polyhedra",
                                            "tetra_floorplan"));
+
+/// A saved free space holds its graph: read back, it has the same nodes and edges,
+/// and configurations find the same nodes.
+TEST(CellGraphFile, TheGraphIsSavedAndReadBack) {
+  const LoadedProblem loaded = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/keyhole.cfg");
+  const FreeSpace built(loaded.robot, loaded.world);
+  TempDir dir;
+  built.save(dir.file("keyhole.fspace"));
+  const std::unique_ptr<FreeSpace> read = FreeSpace::load(dir.file("keyhole.fspace"));
+  const CellGraph& before = built.cellGraph();
+  const CellGraph& after = read->cellGraph();
+  ASSERT_EQ(after.criticalAngles().size(), before.criticalAngles().size());
+  for (std::size_t i = 0; i < before.criticalAngles().size(); ++i) {
+    EXPECT_EQ(built.algebra().compare(before.criticalAngles()[i], after.criticalAngles()[i]), 0);
+  }
+  ASSERT_EQ(after.nodes().size(), before.nodes().size());
+  for (std::size_t i = 0; i < before.nodes().size(); ++i) {
+    const CellGraphNode &a = before.nodes()[i], &b = after.nodes()[i];
+    EXPECT_EQ(std::tie(a.cell, a.firstInterval, a.lastInterval, a.point, a.box),
+              std::tie(b.cell, b.firstInterval, b.lastInterval, b.point, b.box));
+  }
+  ASSERT_EQ(after.edges().size(), before.edges().size());
+  for (std::size_t i = 0; i < before.edges().size(); ++i) {
+    const CellGraphEdge &a = before.edges()[i], &b = after.edges()[i];
+    EXPECT_EQ(std::tie(a.from, a.to, a.angle), std::tie(b.from, b.to, b.angle));
+  }
+  RandomConfigurations random(built, 11);
+  int different = 0;
+  for (int sample = 0; sample < 500; ++sample) {
+    const Pose2 pose = random.next();
+    different += built.nodeOf(pose) != read->nodeOf(pose);
+  }
+  EXPECT_EQ(different, 0);
+}
 
 }  // namespace

@@ -156,7 +156,7 @@ TEST(SavedSpace, BadFilesAreClearErrors) {
   std::string version = bytes;
   version.replace(bytes.find('\n') - 1, 1, "9");
   write(other, version);
-  EXPECT_NE(loadError(other).find("format 9; this build reads format 4"), std::string::npos);
+  EXPECT_NE(loadError(other).find("format 9; this build reads format 5"), std::string::npos);
   write(other, bytes.substr(0, bytes.size() / 2));
   EXPECT_NE(loadError(other).find("damaged"), std::string::npos);
   std::string altered = bytes;

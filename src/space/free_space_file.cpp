@@ -115,7 +115,7 @@ namespace freespace {
 namespace {
 
 const std::string kHeader = "freespace saved free space, format ";
-constexpr int kFormatVersion = 4;
+constexpr int kFormatVersion = 5;
 
 // Rationals as bytes: a sign byte (0 or 1), then the numerator's magnitude and the
 // denominator, each as a 4-byte length (least significant byte first) and its bytes
@@ -407,8 +407,65 @@ SubFaceGluing gluingOf(const saved::Gluing& stored, AngleTable& angles) {
   return gluing;
 }
 
+void appendRuns(std::vector<std::uint32_t>& out, const std::vector<CellGraph::NodeRun>& runs) {
+  for (const CellGraph::NodeRun& run : runs) out.insert(out.end(), {run.interval, run.node});
+}
+
+saved::Graph savedGraph(const CellGraph::Parts& graph, AngleTable& angles) {
+  saved::Graph stored;
+  for (const AlgebraicAngle& angle : graph.criticalAngles) stored.criticalAngles.push_back(angles.add(angle));
+  for (const CellGraphNode& node : graph.nodes) {
+    stored.nodes.insert(stored.nodes.end(), {node.cell, node.firstInterval, node.lastInterval, angles.add(node.sample)});
+    stored.nodeGeometry.insert(stored.nodeGeometry.end(), {node.point[0], node.point[1]});
+    stored.nodeGeometry.insert(stored.nodeGeometry.end(), node.box.begin(), node.box.end());
+  }
+  for (const CellGraphEdge& edge : graph.edges) stored.edges.insert(stored.edges.end(), {edge.from, edge.to, edge.angle});
+  for (const auto& runs : graph.runsOfPiece) {
+    stored.runCounts.push_back(static_cast<std::uint32_t>(runs.size()));
+    appendRuns(stored.runs, runs);
+  }
+  appendRuns(stored.unboundedRuns, graph.unboundedRuns);
+  return stored;
+}
+
+/// Pairs (interval, node) from `at` on (moved past them).
+std::vector<CellGraph::NodeRun> runsAt(const std::vector<std::uint32_t>& stored, std::size_t& at, std::size_t count) {
+  if (count > (stored.size() - at) / 2) throw DamagedPart("the graph's runs");
+  std::vector<CellGraph::NodeRun> runs;
+  for (std::size_t i = 0; i < count; ++i, at += 2) runs.push_back({stored[at], stored[at + 1]});
+  return runs;
+}
+
+CellGraph::Parts graphOf(const saved::Graph& stored, AngleTable& angles) {
+  CellGraph::Parts graph;
+  for (std::uint32_t angle : stored.criticalAngles) graph.criticalAngles.push_back(angles.angle(angle));
+  const std::size_t nodes = stored.nodes.size() / 4;
+  if (stored.nodes.size() != 4 * nodes || stored.nodeGeometry.size() != 6 * nodes) throw DamagedPart("the graph's nodes");
+  for (std::size_t i = 0; i < nodes; ++i) {
+    CellGraphNode node;
+    node.cell = stored.nodes[4 * i];
+    node.firstInterval = stored.nodes[4 * i + 1];
+    node.lastInterval = stored.nodes[4 * i + 2];
+    node.sample = angles.angle(stored.nodes[4 * i + 3]);
+    node.point = {finite(stored.nodeGeometry[6 * i]), finite(stored.nodeGeometry[6 * i + 1])};
+    std::copy_n(stored.nodeGeometry.begin() + 6 * i + 2, 4, node.box.begin());
+    graph.nodes.push_back(node);
+  }
+  if (stored.edges.size() % 3 != 0) throw DamagedPart("the graph's edges");
+  for (std::size_t i = 0; i < stored.edges.size(); i += 3) {
+    graph.edges.push_back({stored.edges[i], stored.edges[i + 1], stored.edges[i + 2]});
+  }
+  std::size_t at = 0;
+  for (std::uint32_t count : stored.runCounts) graph.runsOfPiece.push_back(runsAt(stored.runs, at, count));
+  if (at != stored.runs.size()) throw DamagedPart("the graph's runs");
+  at = 0;
+  graph.unboundedRuns = runsAt(stored.unboundedRuns, at, stored.unboundedRuns.size() / 2);
+  if (at != stored.unboundedRuns.size()) throw DamagedPart("the graph's runs");
+  return graph;
+}
+
 saved::Space savedSpace(const PerturbedMeshes& meshes, const Arrangement& arrangement,
-                        const std::vector<ShellSide>& sides, const FreeCells& cells,
+                        const std::vector<ShellSide>& sides, const FreeCells& cells, const CellGraph& graph,
                         const std::vector<StageTime>& stageTimes) {
   saved::Space space;
   AngleTable angles(space);
@@ -462,6 +519,7 @@ saved::Space savedSpace(const PerturbedMeshes& meshes, const Arrangement& arrang
     space.stageNames.push_back(stage.stage);
     space.stageSeconds.push_back(stage.seconds);
   }
+  space.graph = savedGraph(graph.parts(), angles);
   return space;
 }
 
@@ -576,7 +634,7 @@ void checkConsistency(const Arrangement& arrangement, const std::vector<ShellSid
 
 void FreeSpace::save(const std::string& path, bool overwrite) const {
   const saved::Space space =
-      savedSpace(impl_->meshes, impl_->arrangement, impl_->sides, *impl_->cells, impl_->stageTimes);
+      savedSpace(impl_->meshes, impl_->arrangement, impl_->sides, *impl_->cells, cellGraph(), impl_->stageTimes);
   std::ostringstream payloadStream;
   {
     boost::archive::binary_oarchive archive(payloadStream);
@@ -679,6 +737,12 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
       impl->stageTimes.push_back({space.stageNames[i], space.stageSeconds[i]});
     }
     impl->finish();
+    try {
+      impl->graph =
+          std::make_unique<CellGraph>(arrangement, graphOf(space.graph, angles), space.cellCount, impl->algebra);
+    } catch (const std::invalid_argument& part) {
+      throw DamagedPart(part.what());
+    }
   } catch (const InputError&) {
     throw;
   } catch (const std::bad_alloc&) {

@@ -138,6 +138,22 @@ struct Gluing {
   }
 };
 
+/// The free cell graph (CellGraph::Parts).
+struct Graph {
+  std::vector<std::uint32_t> criticalAngles;  // angle table indices
+  std::vector<std::uint32_t> nodes;           // per node: cell, first interval, last interval, sample angle
+  std::vector<double> nodeGeometry;           // per node: point x, y, box low x, low y, high x, high y
+  std::vector<std::uint32_t> edges;           // from, to, angle
+  std::vector<std::uint32_t> runCounts;       // per piece
+  std::vector<std::uint32_t> runs;            // interval, node: runCounts[i] pairs for piece i
+  std::vector<std::uint32_t> unboundedRuns;   // interval, node
+
+  template <class Archive>
+  void serialize(Archive& archive, unsigned) {
+    archive & criticalAngles & nodes & nodeGeometry & edges & runCounts & runs & unboundedRuns;
+  }
+};
+
 struct Space {
   Mesh robot, world;
   bool perturbed = true;
@@ -157,12 +173,13 @@ struct Space {
   std::uint32_t cellCount = 0;
   std::vector<std::string> stageNames;
   std::vector<double> stageSeconds;
+  Graph graph;
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
     archive & robot & world & perturbed & seed & relativeSize & absoluteSize & scale & functions & angles & patches &
         curves & overlaps & vertices & subdivisions & gluings & shellSides & cellOfShell & cellCount & stageNames &
-        stageSeconds;
+        stageSeconds & graph;
   }
 };
 

@@ -103,7 +103,7 @@ class CellGraphSweep {
       if (interval == 0) first = current;
       previous = std::move(current);
     }
-    if (!graph_.criticalAngles_.empty()) {
+    if (!graph_.parts_.criticalAngles.empty()) {
       LoopLinks links = continuingLoops(previous, first);
       addGluedLoops(previous, first, links);
       addEdges(previous, first, links);
@@ -114,17 +114,9 @@ class CellGraphSweep {
   // --- Pieces and critical angles -------------------------------------------------
 
   void numberPieces() {
-    std::uint32_t slabs = 0, gaps = 0;
-    for (const PatchSubdivision& subdivision : arrangement_.subdivisions) {
-      graph_.firstSlabOfPatch_.push_back(slabs);
-      for (const PatchSlab& slab : subdivision.slabs) {
-        graph_.firstGapOfSlab_.push_back(gaps);
-        gaps += static_cast<std::uint32_t>(slab.faces.size());
-      }
-      slabs += static_cast<std::uint32_t>(subdivision.slabs.size());
-    }
-    graph_.runsOfPiece_.resize(gaps);
-    cellOfPiece_.assign(gaps, kNotFree);
+    graph_.numberPieces(arrangement_);
+    graph_.parts_.runsOfPiece.resize(graph_.pieceCount_);
+    cellOfPiece_.assign(graph_.pieceCount_, kNotFree);
     for (std::uint32_t patch = 0; patch < arrangement_.subdivisions.size(); ++patch) {
       const auto& slabsOfPatch = arrangement_.subdivisions[patch].slabs;
       for (std::uint32_t slab = 0; slab < slabsOfPatch.size(); ++slab) {
@@ -160,7 +152,7 @@ class CellGraphSweep {
   bool wholeCircle(const PatchSlab& slab) { return algebra_.compare(slab.from, slab.to) == 0; }
 
   void findCriticalAngles() {
-    std::vector<AlgebraicAngle>& angles = graph_.criticalAngles_;
+    std::vector<AlgebraicAngle>& angles = graph_.parts_.criticalAngles;
     forEachFreeSlab([&](std::uint32_t, std::uint32_t, const PatchSlab& slab) {
       if (algebra_.compare(slab.from, slab.sample) == 0) return;  // a whole circle without events
       angles.push_back(slab.from);
@@ -198,7 +190,7 @@ class CellGraphSweep {
 
   /// The index of a critical angle (which `angle` must be).
   std::uint32_t criticalIndex(const AlgebraicAngle& angle) {
-    const std::vector<AlgebraicAngle>& angles = graph_.criticalAngles_;
+    const std::vector<AlgebraicAngle>& angles = graph_.parts_.criticalAngles;
     const auto found = std::lower_bound(angles.begin(), angles.end(), angle, [&](const auto& a, const auto& b) {
       return algebra_.compare(a, b) < 0;
     });
@@ -229,7 +221,7 @@ class CellGraphSweep {
   }
 
   void indexHorizontalGlues() {
-    horizontalGluesAt_.resize(graph_.criticalAngles_.size());
+    horizontalGluesAt_.resize(graph_.parts_.criticalAngles.size());
     for (const SubFaceGlue& glue : arrangement_.acrossHorizontalEdges.glues) {
       if (!cellOf_(glue.first) || !cellOf_(glue.second)) continue;
       horizontalGluesAt_[criticalIndex(glue.at)].push_back(glue);
@@ -422,7 +414,7 @@ class CellGraphSweep {
     std::set<std::pair<std::uint32_t, std::uint32_t>> joined{{before.unboundedNode, after.unboundedNode}};
     for (const auto& [from, to] : links) joined.insert({before.nodeOfLoop[from], after.nodeOfLoop[to]});
     for (const auto& [from, to] : joined) {
-      if (from != to) graph_.edges_.push_back({from, to, after.interval});
+      if (from != to) graph_.parts_.edges.push_back({from, to, after.interval});
     }
   }
 
@@ -536,11 +528,11 @@ class CellGraphSweep {
       if (!face.changed && face.previousNodes.size() == 1 &&
           loopsOfPreviousNode[*face.previousNodes.begin()] == face.loops.size()) {
         node = *face.previousNodes.begin();
-        graph_.nodes_[node].lastInterval = current.interval;
+        graph_.parts_.nodes[node].lastInterval = current.interval;
       } else {
-        node = static_cast<std::uint32_t>(graph_.nodes_.size());
-        graph_.nodes_.push_back(newNode(current, face.loops, members, nesting.outer, face.previousNodes, unbounded));
-        for (std::uint32_t from : face.previousNodes) graph_.edges_.push_back({from, node, current.interval});
+        node = static_cast<std::uint32_t>(graph_.parts_.nodes.size());
+        graph_.parts_.nodes.push_back(newNode(current, face.loops, members, nesting.outer, face.previousNodes, unbounded));
+        for (std::uint32_t from : face.previousNodes) graph_.parts_.edges.push_back({from, node, current.interval});
       }
       for (std::uint32_t loop : face.loops) current.nodeOfLoop[loop] = node;
       if (unbounded) current.unboundedNode = node;
@@ -607,7 +599,7 @@ class CellGraphSweep {
       // The outer loop continues from one of the previous faces: their boxes hold it.
       node.box = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
       for (std::uint32_t from : previousNodes) {
-        const std::array<double, 4>& box = graph_.nodes_[from].box;
+        const std::array<double, 4>& box = graph_.parts_.nodes[from].box;
         node.box = {std::min(node.box[0], box[0]), std::min(node.box[1], box[1]), std::max(node.box[2], box[2]),
                     std::max(node.box[3], box[3])};
       }
@@ -680,7 +672,7 @@ class CellGraphSweep {
     for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
       const Piece& piece = loops.pieces[index];
       const std::uint32_t node = loops.nodeOfLoop[loops.loopOf[index]];
-      if (cellOfPiece_[graph_.pieceIndex(piece.patch, piece.slab, piece.gap)] != graph_.nodes_[node].cell) {
+      if (cellOfPiece_[graph_.pieceIndex(piece.patch, piece.slab, piece.gap)] != graph_.parts_.nodes[node].cell) {
         throw std::logic_error("CellGraph: a face's loops bound different cells");
       }
     }
@@ -689,10 +681,10 @@ class CellGraphSweep {
   void recordRuns(const IntervalLoops& loops) {
     for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
       const Piece& piece = loops.pieces[index];
-      addRun(graph_.runsOfPiece_[graph_.pieceIndex(piece.patch, piece.slab, piece.gap)], loops.interval,
+      addRun(graph_.parts_.runsOfPiece[graph_.pieceIndex(piece.patch, piece.slab, piece.gap)], loops.interval,
              loops.nodeOfLoop[loops.loopOf[index]]);
     }
-    addRun(graph_.unboundedRuns_, loops.interval, loops.unboundedNode);
+    addRun(graph_.parts_.unboundedRuns, loops.interval, loops.unboundedNode);
   }
 
   static void addRun(std::vector<CellGraph::NodeRun>& runs, std::uint32_t interval, std::uint32_t node) {
@@ -718,12 +710,60 @@ CellGraph::CellGraph(const Arrangement& arrangement, const SliceRays& rays, cons
   CellGraphSweep(*this, arrangement, rays, cellOf, algebra).run(cancellation);
 }
 
+CellGraph::CellGraph(const Arrangement& arrangement, Parts parts, std::size_t cellCount, AngleAlgebra& algebra)
+    : parts_(std::move(parts)) {
+  numberPieces(arrangement);
+  checkParts(cellCount, algebra);
+}
+
+void CellGraph::numberPieces(const Arrangement& arrangement) {
+  std::uint32_t slabs = 0, gaps = 0;
+  for (const PatchSubdivision& subdivision : arrangement.subdivisions) {
+    firstSlabOfPatch_.push_back(slabs);
+    for (const PatchSlab& slab : subdivision.slabs) {
+      firstGapOfSlab_.push_back(gaps);
+      gaps += static_cast<std::uint32_t>(slab.faces.size());
+    }
+    slabs += static_cast<std::uint32_t>(subdivision.slabs.size());
+  }
+  pieceCount_ = gaps;
+}
+
+void CellGraph::checkParts(std::size_t cellCount, AngleAlgebra& algebra) const {
+  const auto require = [](bool holds, const char* part) {
+    if (!holds) throw std::invalid_argument(part);
+  };
+  const std::vector<AlgebraicAngle>& angles = parts_.criticalAngles;
+  for (std::size_t i = 1; i < angles.size(); ++i) {
+    require(algebra.compare(angles[i - 1], angles[i]) < 0, "the graph's critical angles (not increasing)");
+  }
+  const std::size_t intervals = intervalCount(), nodes = parts_.nodes.size();
+  for (const CellGraphNode& node : parts_.nodes) {
+    require(node.cell < cellCount && node.firstInterval <= node.lastInterval && node.lastInterval < intervals &&
+                node.sample.isRational(),
+            "a node of the graph");
+  }
+  for (const CellGraphEdge& edge : parts_.edges) {
+    require(edge.from < nodes && edge.to < nodes && edge.angle < intervals, "an edge of the graph");
+  }
+  require(parts_.runsOfPiece.size() == pieceCount_, "the graph's pieces");
+  const auto checkRuns = [&](const std::vector<NodeRun>& runs) {
+    for (std::size_t i = 0; i < runs.size(); ++i) {
+      require(runs[i].interval < intervals && runs[i].node < nodes && (i == 0 || runs[i - 1].interval < runs[i].interval),
+              "the nodes of a piece of the graph");
+    }
+  };
+  for (const auto& runs : parts_.runsOfPiece) checkRuns(runs);
+  checkRuns(parts_.unboundedRuns);
+}
+
 std::uint32_t CellGraph::intervalOf(const AlgebraicAngle& angle, AngleAlgebra& algebra) const {
-  if (criticalAngles_.empty()) return 0;
-  const auto after = std::upper_bound(criticalAngles_.begin(), criticalAngles_.end(), angle,
+  const std::vector<AlgebraicAngle>& angles = parts_.criticalAngles;
+  if (angles.empty()) return 0;
+  const auto after = std::upper_bound(angles.begin(), angles.end(), angle,
                                       [&](const auto& a, const auto& b) { return algebra.compare(a, b) < 0; });
-  if (after == criticalAngles_.begin()) return static_cast<std::uint32_t>(criticalAngles_.size() - 1);
-  return static_cast<std::uint32_t>(after - criticalAngles_.begin() - 1);
+  if (after == angles.begin()) return static_cast<std::uint32_t>(angles.size() - 1);
+  return static_cast<std::uint32_t>(after - angles.begin() - 1);
 }
 
 std::optional<std::uint32_t> CellGraph::nodeAtRun(const std::vector<NodeRun>& runs, std::uint32_t interval) const {
@@ -736,9 +776,9 @@ std::optional<std::uint32_t> CellGraph::nodeAtRun(const std::vector<NodeRun>& ru
 std::optional<std::uint32_t> CellGraph::nodeOf(const RayHit& hit, const AlgebraicAngle& rationalAngle,
                                                AngleAlgebra& algebra) const {
   const std::uint32_t interval = intervalOf(rationalAngle, algebra);
-  if (hit.kind == RayHit::Kind::Nothing) return nodeAtRun(unboundedRuns_, interval);
+  if (hit.kind == RayHit::Kind::Nothing) return nodeAtRun(parts_.unboundedRuns, interval);
   if (hit.kind != RayHit::Kind::SubFace || !hit.fromPositiveSide) return std::nullopt;
-  return nodeAtRun(runsOfPiece_[pieceIndex(hit.face.patch, hit.slab, hit.gap)], interval);
+  return nodeAtRun(parts_.runsOfPiece[pieceIndex(hit.face.patch, hit.slab, hit.gap)], interval);
 }
 
 }  // namespace freespace

@@ -60,15 +60,37 @@ class CellGraph {
   /// The cell a sub-face bounds (its positive side), if it bounds one.
   using CellOfFace = std::function<std::optional<std::uint32_t>(SubFaceId)>;
 
+  /// The node of a piece's face from an interval on.
+  struct NodeRun {
+    std::uint32_t interval;
+    std::uint32_t node;
+  };
+
+  /// What a graph holds besides the arrangement (as saved with a free space).
+  struct Parts {
+    /// Increasing in AngleAlgebra::compare; none when no free cell's slice ever
+    /// changes (then one interval holds every angle).
+    std::vector<AlgebraicAngle> criticalAngles;
+    std::vector<CellGraphNode> nodes;
+    std::vector<CellGraphEdge> edges;
+    /// For every piece (gap of a slab; patch by patch, slab by slab), the node of its
+    /// face from each interval on where that changes (none for pieces of no free
+    /// cell); the same for the unbounded face.
+    std::vector<std::vector<NodeRun>> runsOfPiece;
+    std::vector<NodeRun> unboundedRuns;
+  };
+
   CellGraph(const Arrangement& arrangement, const SliceRays& rays, const CellOfFace& cellOf, AngleAlgebra& algebra,
             const Cancellation& cancellation = {});
+  /// A graph read back, its parts checked against the arrangement and the number of
+  /// cells: std::invalid_argument naming the part that does not fit.
+  CellGraph(const Arrangement& arrangement, Parts parts, std::size_t cellCount, AngleAlgebra& algebra);
 
-  /// Increasing in AngleAlgebra::compare; none when no free cell's slice ever
-  /// changes (then one interval holds every angle).
-  const std::vector<AlgebraicAngle>& criticalAngles() const { return criticalAngles_; }
-  std::size_t intervalCount() const { return std::max<std::size_t>(1, criticalAngles_.size()); }
-  const std::vector<CellGraphNode>& nodes() const { return nodes_; }
-  const std::vector<CellGraphEdge>& edges() const { return edges_; }
+  const Parts& parts() const { return parts_; }
+  const std::vector<AlgebraicAngle>& criticalAngles() const { return parts_.criticalAngles; }
+  std::size_t intervalCount() const { return std::max<std::size_t>(1, parts_.criticalAngles.size()); }
+  const std::vector<CellGraphNode>& nodes() const { return parts_.nodes; }
+  const std::vector<CellGraphEdge>& edges() const { return parts_.edges; }
 
   /// The interval whose open arc holds an angle; a critical angle gets the interval
   /// it starts.
@@ -83,23 +105,17 @@ class CellGraph {
  private:
   friend class CellGraphSweep;
 
-  /// The node of a piece (a gap of a slab) from each interval on where it changed.
-  struct NodeRun {
-    std::uint32_t interval;
-    std::uint32_t node;
-  };
+  void numberPieces(const Arrangement& arrangement);
+  void checkParts(std::size_t cellCount, AngleAlgebra& algebra) const;
   std::optional<std::uint32_t> nodeAtRun(const std::vector<NodeRun>& runs, std::uint32_t interval) const;
   std::size_t pieceIndex(std::uint32_t patch, std::uint32_t slab, std::uint32_t gap) const {
     return firstGapOfSlab_[firstSlabOfPatch_[patch] + slab] + gap;
   }
 
-  std::vector<AlgebraicAngle> criticalAngles_;
-  std::vector<CellGraphNode> nodes_;
-  std::vector<CellGraphEdge> edges_;
+  Parts parts_;
   std::vector<std::uint32_t> firstSlabOfPatch_;
   std::vector<std::uint32_t> firstGapOfSlab_;
-  std::vector<std::vector<NodeRun>> runsOfPiece_;
-  std::vector<NodeRun> unboundedRuns_;
+  std::size_t pieceCount_ = 0;
 };
 
 }  // namespace freespace
