@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <numeric>
 #include <set>
 #include <stdexcept>
 #include <unordered_map>
@@ -92,17 +93,38 @@ class CellGraphSweep {
     IntervalLoops first, previous;
     for (std::uint32_t interval = 0; interval < count; ++interval) {
       cancellation.check();
+      SlabChanges changes;
       for (const auto& [patch, slab] : ending[interval]) {
         const auto found = active.find(patch);
-        if (found != active.end() && found->second == slab) active.erase(found);
+        if (found == active.end() || found->second != slab) continue;
+        active.erase(found);
+        changes.removed.push_back({patch, slab});
       }
-      for (const auto& [patch, slab] : starting[interval]) active[patch] = slab;
-      IntervalLoops current = loopsOver(interval, active);
-      assignFaces(interval == 0 ? nullptr : &previous, current);
-      recordRuns(current);
-      if (interval == 0) first = current;
-      previous = std::move(current);
+      for (const auto& [patch, slab] : starting[interval]) {
+        active[patch] = slab;
+        changes.added.push_back({patch, slab});
+      }
+      if (interval == 0) {
+        previous = loopsOver(interval, active);
+        assignFaces(nullptr, previous);
+        recordRuns(previous);
+        first = previous;
+        continue;
+      }
+      std::sort(changes.removed.begin(), changes.removed.end());
+      std::sort(changes.added.begin(), changes.added.end());
+      Step step = nextLoops(previous, changes, interval);
+      if (!step.full && inheritFaces(previous, step)) {
+        recordRuns(step.loops, step.added);
+      } else {
+        if (step.full) step.loops = loopsOver(interval, active);
+        for (std::uint32_t node : nodesOf(previous)) graph_.parts_.nodes[node].lastInterval = interval - 1;
+        assignFaces(&previous, step.loops);
+        recordRuns(step.loops);
+      }
+      previous = std::move(step.loops);
     }
+    for (std::uint32_t node : nodesOf(previous)) graph_.parts_.nodes[node].lastInterval = count - 1;
     if (!graph_.parts_.criticalAngles.empty()) {
       LoopLinks links = continuingLoops(previous, first);
       addGluedLoops(previous, first, links);
@@ -138,6 +160,10 @@ class CellGraphSweep {
         ends[end] = numbers.emplace(patch.segment.ends[end], static_cast<std::uint32_t>(numbers.size())).first->second;
       }
       spiralOfEnd_.push_back(ends);
+    }
+    patchesAtSpiral_.resize(numbers.size());
+    for (std::uint32_t patch = 0; patch < spiralOfEnd_.size(); ++patch) {
+      for (int end : {0, 1}) patchesAtSpiral_[spiralOfEnd_[patch][end]].push_back({patch, end});
     }
   }
 
@@ -230,23 +256,20 @@ class CellGraphSweep {
 
   // --- Loops over one interval ------------------------------------------------------
 
+  /// Every loop over an interval, from scratch.
   IntervalLoops loopsOver(std::uint32_t interval, const std::map<std::uint32_t, std::uint32_t>& active) {
     IntervalLoops loops;
     loops.interval = interval;
     loops.sample = samples_[interval];
     loops.slabs.assign(active.begin(), active.end());
-    for (const auto& [patch, slab] : loops.slabs) {
-      const std::size_t gaps = arrangement_.subdivisions[patch].slabs[slab].faces.size();
-      for (std::uint32_t gap = 0; gap < gaps; ++gap) {
-        const std::size_t index = graph_.pieceIndex(patch, slab, gap);
-        if (cellOfPiece_[index] == kNotFree) continue;
-        loops.pieceIndices.push_back(index);
-        loops.pieces.push_back({patch, slab, gap});
-      }
-    }
+    for (const auto& [patch, slab] : loops.slabs) appendFreePieces(loops, patch, slab);
+    std::vector<std::uint32_t> all(loops.pieces.size());
+    std::iota(all.begin(), all.end(), 0);
+    const std::vector<char> everywhere(loops.pieces.size(), 1);
     detail::DisjointSets sets(loops.pieces.size());
-    joinAcrossCurves(loops, sets);
-    joinAroundSpirals(loops, sets);
+    if (!joinAcrossCurves(loops, all, everywhere, sets) || !joinAroundSpirals(loops, all, everywhere, sets)) {
+      throw std::logic_error("CellGraph: loops do not close");
+    }
     std::unordered_map<std::uint32_t, std::uint32_t> numberOfRoot;
     for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
       const auto found = numberOfRoot.emplace(sets.find(piece), static_cast<std::uint32_t>(numberOfRoot.size()));
@@ -256,56 +279,254 @@ class CellGraphSweep {
     return loops;
   }
 
+  void appendFreePieces(IntervalLoops& loops, std::uint32_t patch, std::uint32_t slab) const {
+    const std::size_t gaps = arrangement_.subdivisions[patch].slabs[slab].faces.size();
+    for (std::uint32_t gap = 0; gap < gaps; ++gap) {
+      const std::size_t index = graph_.pieceIndex(patch, slab, gap);
+      if (cellOfPiece_[index] == kNotFree) continue;
+      loops.pieceIndices.push_back(index);
+      loops.pieces.push_back({patch, slab, gap});
+    }
+  }
+
+  /// The slabs with free pieces that end and start at a critical angle, by patch.
+  struct SlabChanges {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> removed, added;
+  };
+
+  /// The loops over an interval from those over the previous one, when only the
+  /// loops through pieces of the changed slabs (or their neighbours) can change:
+  /// `loops` keeps every other loop with its number, `links` joins the changed loops
+  /// (`before`) to the loops that replace them (`after`). `full` when the changed
+  /// pieces do not close up into loops among themselves (then nothing else is set).
+  struct Step {
+    IntervalLoops loops;
+    LoopLinks links;
+    std::vector<std::uint32_t> before, after;
+    /// The pieces of added slabs.
+    std::vector<std::uint32_t> added;
+    bool full = false;
+  };
+
+  Step nextLoops(const IntervalLoops& previous, const SlabChanges& changes, std::uint32_t interval) {
+    Step step;
+    IntervalLoops& loops = step.loops;
+    loops.interval = interval;
+    loops.sample = samples_[interval];
+    const std::vector<std::int64_t> previousIndex = mergePieces(previous, changes, loops);
+    // Loops that may change: through a removed piece, or next to an added one.
+    std::vector<char> changed(previous.loopCount, 0);
+    const auto touch = [&](std::uint32_t piece) {
+      if (previousIndex[piece] >= 0) changed[previous.loopOf[previousIndex[piece]]] = 1;
+    };
+    for (const auto& [patch, slab] : changes.removed) {
+      for (std::uint32_t piece : piecesOfSlab(previous, patch, slab)) changed[previous.loopOf[piece]] = 1;
+    }
+    std::vector<std::uint32_t> spirals;
+    for (const auto* list : {&changes.removed, &changes.added}) {
+      for (const auto& [patch, slab] : *list) spirals.insert(spirals.end(), spiralOfEnd_[patch].begin(), spiralOfEnd_[patch].end());
+    }
+    for (std::uint32_t spiral : spirals) {
+      for (std::uint32_t piece : endPiecesAt(loops, spiral)) touch(piece);
+    }
+    for (const auto& [patch, slab] : changes.added) {
+      for (std::uint32_t piece : piecesOfSlab(loops, patch, slab)) {
+        for (const std::size_t end : {0, 1}) {
+          if (const auto next = curveNeighbour(loops, piece, end)) touch(*next);
+        }
+      }
+    }
+    std::vector<std::uint32_t> subset;
+    std::vector<char> inSubset(loops.pieces.size(), 0);
+    for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
+      if (previousIndex[piece] < 0) step.added.push_back(piece);
+      if (previousIndex[piece] < 0 || changed[previous.loopOf[previousIndex[piece]]]) {
+        subset.push_back(piece);
+        inSubset[piece] = 1;
+      }
+    }
+    detail::DisjointSets sets(loops.pieces.size());
+    if (!joinAcrossCurves(loops, subset, inSubset, sets) || !joinAroundSpirals(loops, subset, inSubset, sets)) {
+      step.full = true;
+      return step;
+    }
+    numberChangedLoops(previous, previousIndex, changed, subset, sets, step);
+    return step;
+  }
+
+  /// The pieces over the interval: the previous ones but those of removed slabs, and
+  /// those of added slabs, in order; returns the previous index of each (-1: added).
+  std::vector<std::int64_t> mergePieces(const IntervalLoops& previous, const SlabChanges& changes,
+                                        IntervalLoops& loops) const {
+    std::set_difference(previous.slabs.begin(), previous.slabs.end(), changes.removed.begin(), changes.removed.end(),
+                        std::back_inserter(loops.slabs));
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> kept;
+    kept.swap(loops.slabs);
+    std::merge(kept.begin(), kept.end(), changes.added.begin(), changes.added.end(), std::back_inserter(loops.slabs));
+    IntervalLoops added;
+    for (const auto& [patch, slab] : changes.added) appendFreePieces(added, patch, slab);
+    std::vector<std::int64_t> previousIndex;
+    std::size_t i = 0, j = 0;
+    const auto removed = [&](const Piece& piece) {
+      return std::binary_search(changes.removed.begin(), changes.removed.end(), std::pair(piece.patch, piece.slab));
+    };
+    while (i < previous.pieces.size() || j < added.pieces.size()) {
+      if (i < previous.pieces.size() && removed(previous.pieces[i])) {
+        ++i;
+      } else if (j == added.pieces.size() ||
+                 (i < previous.pieces.size() && previous.pieceIndices[i] < added.pieceIndices[j])) {
+        loops.pieces.push_back(previous.pieces[i]);
+        loops.pieceIndices.push_back(previous.pieceIndices[i]);
+        previousIndex.push_back(static_cast<std::int64_t>(i++));
+      } else {
+        loops.pieces.push_back(added.pieces[j]);
+        loops.pieceIndices.push_back(added.pieceIndices[j++]);
+        previousIndex.push_back(-1);
+      }
+    }
+    return previousIndex;
+  }
+
+  /// Numbers the loops the changed pieces form (reusing the numbers of the loops
+  /// they replace), keeps every other loop's number, and links old to new.
+  void numberChangedLoops(const IntervalLoops& previous, const std::vector<std::int64_t>& previousIndex,
+                          const std::vector<char>& changed, const std::vector<std::uint32_t>& subset,
+                          detail::DisjointSets& sets, Step& step) const {
+    IntervalLoops& loops = step.loops;
+    for (std::uint32_t loop = 0; loop < previous.loopCount; ++loop) {
+      if (changed[loop]) step.before.push_back(loop);
+    }
+    std::size_t reused = 0;
+    std::uint32_t next = previous.loopCount;
+    std::unordered_map<std::uint32_t, std::uint32_t> numberOfRoot;
+    loops.loopOf.resize(loops.pieces.size());
+    for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
+      if (previousIndex[piece] >= 0) loops.loopOf[piece] = previous.loopOf[previousIndex[piece]];
+    }
+    for (std::uint32_t piece : subset) {
+      auto found = numberOfRoot.find(sets.find(piece));
+      if (found == numberOfRoot.end()) {
+        const std::uint32_t number = reused < step.before.size() ? step.before[reused++] : next++;
+        found = numberOfRoot.emplace(sets.find(piece), number).first;
+        step.after.push_back(number);
+      }
+      loops.loopOf[piece] = found->second;
+      if (previousIndex[piece] >= 0) step.links.insert({previous.loopOf[previousIndex[piece]], found->second});
+    }
+    loops.loopCount = next;
+    for (const auto& [patch, slab] : loops.slabs) {
+      const std::optional<std::uint32_t> earlier = previous.slabOf(patch);
+      if (!earlier || *earlier == slab) continue;
+      for (const auto& [from, to] : piecesOfSubFaces(previous, loops, patch, slab)) {
+        step.links.insert({previous.loopOf[from], loops.loopOf[to]});
+      }
+    }
+  }
+
+  /// When the changed loops continue one to one, every face goes on with its node.
+  bool inheritFaces(const IntervalLoops& previous, Step& step) const {
+    if (step.before.size() != step.after.size() || step.links.size() != step.before.size()) return false;
+    std::set<std::uint32_t> from, to;
+    for (const auto& [before, after] : step.links) from.insert(before), to.insert(after);
+    if (from.size() != step.before.size() || to.size() != step.after.size()) return false;
+    IntervalLoops& loops = step.loops;
+    loops.nodeOfLoop = previous.nodeOfLoop;
+    loops.nodeOfLoop.resize(loops.loopCount);
+    for (const auto& [before, after] : step.links) loops.nodeOfLoop[after] = previous.nodeOfLoop[before];
+    loops.unboundedNode = previous.unboundedNode;
+    return true;
+  }
+
+  /// The nodes of the faces over an interval.
+  std::set<std::uint32_t> nodesOf(const IntervalLoops& loops) const {
+    std::set<std::uint32_t> nodes{loops.unboundedNode};
+    for (std::uint32_t loop : loops.loopOf) nodes.insert(loops.nodeOfLoop[loop]);
+    return nodes;
+  }
+
+  /// The free pieces of a slab over an interval.
+  std::vector<std::uint32_t> piecesOfSlab(const IntervalLoops& loops, std::uint32_t patch, std::uint32_t slab) const {
+    std::vector<std::uint32_t> found;
+    const std::size_t gaps = arrangement_.subdivisions[patch].slabs[slab].faces.size();
+    for (std::uint32_t gap = 0; gap < gaps; ++gap) {
+      if (const auto piece = loops.pieceAt(graph_.pieceIndex(patch, slab, gap))) found.push_back(*piece);
+    }
+    return found;
+  }
+
+  /// The free pieces over an interval that end at a spiral.
+  std::vector<std::uint32_t> endPiecesAt(const IntervalLoops& loops, std::uint32_t spiral) const {
+    std::vector<std::uint32_t> found;
+    for (const auto& [patch, end] : patchesAtSpiral_[spiral]) {
+      const std::optional<std::uint32_t> slab = loops.slabOf(patch);
+      if (!slab) continue;
+      const std::size_t gaps = arrangement_.subdivisions[patch].slabs[*slab].faces.size();
+      const std::uint32_t gap = end == 0 ? 0 : static_cast<std::uint32_t>(gaps - 1);
+      if (const auto piece = loops.pieceAt(graph_.pieceIndex(patch, *slab, gap))) found.push_back(*piece);
+    }
+    return found;
+  }
+
   const PatchSlab& slabOf(const Piece& piece) const {
     return arrangement_.subdivisions[piece.patch].slabs[piece.slab];
   }
 
-  /// A piece ending at a curve continues on the curve's other patch, on the one side
-  /// of the curve there that bounds free space (the other side lies inside this
-  /// patch's obstacle).
-  void joinAcrossCurves(const IntervalLoops& loops, detail::DisjointSets& sets) const {
-    for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
-      const Piece& piece = loops.pieces[index];
-      const PatchSlab& slab = slabOf(piece);
-      for (const std::size_t end : {std::size_t{piece.gap}, std::size_t{piece.gap} + 1}) {
-        if (end == 0 || end > slab.curves.size()) continue;
-        const std::uint32_t curve = slab.curves[end - 1];
-        const std::uint32_t other = arrangement_.curves[curve].other(piece.patch);
-        const std::optional<std::uint32_t> otherSlab = loops.slabOf(other);
-        if (!otherSlab) throw std::logic_error("CellGraph: a free piece's curve ends nowhere");
-        const auto& curves = arrangement_.subdivisions[other].slabs[*otherSlab].curves;
-        const std::size_t at = std::find(curves.begin(), curves.end(), curve) - curves.begin();
-        std::optional<std::uint32_t> next;
-        for (const std::size_t gap : {at, at + 1}) {
-          const std::optional<std::uint32_t> found = loops.pieceAt(graph_.pieceIndex(other, *otherSlab, gap));
-          if (!found) continue;
-          if (next) throw std::logic_error("CellGraph: both sides of a curve bound free space");
-          next = found;
-        }
-        if (!next) throw std::logic_error("CellGraph: a free piece continues into no free piece across a curve");
+  /// The piece a piece continues into across the curve at its low (0) or high (1)
+  /// end: on the curve's other patch, the one side of the curve there that bounds
+  /// free space (the other side lies inside this patch's obstacle). None at a spiral.
+  std::optional<std::uint32_t> curveNeighbour(const IntervalLoops& loops, std::uint32_t index, std::size_t end) const {
+    const Piece& piece = loops.pieces[index];
+    const PatchSlab& slab = slabOf(piece);
+    const std::size_t at = piece.gap + end;
+    if (at == 0 || at > slab.curves.size()) return std::nullopt;
+    const std::uint32_t curve = slab.curves[at - 1];
+    const std::uint32_t other = arrangement_.curves[curve].other(piece.patch);
+    const std::optional<std::uint32_t> otherSlab = loops.slabOf(other);
+    if (!otherSlab) throw std::logic_error("CellGraph: a free piece's curve ends nowhere");
+    const auto& curves = arrangement_.subdivisions[other].slabs[*otherSlab].curves;
+    const std::size_t crossing = std::find(curves.begin(), curves.end(), curve) - curves.begin();
+    std::optional<std::uint32_t> next;
+    for (const std::size_t gap : {crossing, crossing + 1}) {
+      const std::optional<std::uint32_t> found = loops.pieceAt(graph_.pieceIndex(other, *otherSlab, gap));
+      if (!found) continue;
+      if (next) throw std::logic_error("CellGraph: both sides of a curve bound free space");
+      next = found;
+    }
+    if (!next) throw std::logic_error("CellGraph: a free piece continues into no free piece across a curve");
+    return next;
+  }
+
+  /// Joins the pieces of `subset` to their neighbours across curves; false when one
+  /// lies outside it.
+  bool joinAcrossCurves(const IntervalLoops& loops, const std::vector<std::uint32_t>& subset,
+                        const std::vector<char>& inSubset, detail::DisjointSets& sets) const {
+    for (std::uint32_t index : subset) {
+      for (const std::size_t end : {0, 1}) {
+        const std::optional<std::uint32_t> next = curveNeighbour(loops, index, end);
+        if (!next) continue;
+        if (!inSubset[*next]) return false;
         sets.unite(index, *next);
       }
     }
+    return true;
   }
 
   /// Pieces ending at one spiral point are joined in pairs, by the gluing around
-  /// spirals when more than two end there.
-  void joinAroundSpirals(const IntervalLoops& loops, detail::DisjointSets& sets) const {
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> spiralEnds;  // (spiral, piece)
-    for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
+  /// spirals when more than two end there; false when one of them lies outside
+  /// `subset`.
+  bool joinAroundSpirals(const IntervalLoops& loops, const std::vector<std::uint32_t>& subset,
+                         const std::vector<char>& inSubset, detail::DisjointSets& sets) const {
+    std::vector<std::uint32_t> spirals;
+    for (std::uint32_t index : subset) {
       const Piece& piece = loops.pieces[index];
-      if (piece.gap == 0) spiralEnds.push_back({spiralOfEnd_[piece.patch][0], index});
-      if (piece.gap + 1 == slabOf(piece).faces.size()) spiralEnds.push_back({spiralOfEnd_[piece.patch][1], index});
+      if (piece.gap == 0) spirals.push_back(spiralOfEnd_[piece.patch][0]);
+      if (piece.gap + 1 == slabOf(piece).faces.size()) spirals.push_back(spiralOfEnd_[piece.patch][1]);
     }
-    std::sort(spiralEnds.begin(), spiralEnds.end());
-    std::vector<std::uint32_t> ending;
-    for (std::size_t first = 0; first < spiralEnds.size();) {
-      ending.clear();
-      std::size_t last = first;
-      for (; last < spiralEnds.size() && spiralEnds[last].first == spiralEnds[first].first; ++last) {
-        ending.push_back(spiralEnds[last].second);
-      }
-      first = last;
+    std::sort(spirals.begin(), spirals.end());
+    spirals.erase(std::unique(spirals.begin(), spirals.end()), spirals.end());
+    for (std::uint32_t spiral : spirals) {
+      const std::vector<std::uint32_t> ending = endPiecesAt(loops, spiral);
+      if (std::any_of(ending.begin(), ending.end(), [&](std::uint32_t piece) { return !inSubset[piece]; })) return false;
       if (ending.size() == 1) throw std::logic_error("CellGraph: a free piece ends alone at a spiral");
       if (ending.size() == 2) {
         sets.unite(ending[0], ending[1]);
@@ -319,6 +540,7 @@ class CellGraphSweep {
         }
       }
     }
+    return true;
   }
 
   SubFaceId faceOf(const Piece& piece) const { return {piece.patch, slabOf(piece).faces[piece.gap]}; }
@@ -436,7 +658,7 @@ class CellGraphSweep {
     FaceNesting nesting(current.loopCount);
     std::set<std::uint32_t> renested;
     for (std::uint32_t loop = 0; loop < current.loopCount; ++loop) {
-      if (continues[loop]) continue;
+      if (continues[loop] || members[loop].empty()) continue;
       if (nest(current, loop, members[loop], nesting)) {
         for (const auto& [before, after] : links) {
           if (after == loop) renested.insert(previous->nodeOfLoop[before]);
@@ -446,7 +668,7 @@ class CellGraphSweep {
     std::unordered_map<std::uint32_t, std::uint32_t> representative;
     if (previous) representative[previous->unboundedNode] = nesting.unbounded;
     for (std::uint32_t loop = 0; loop < current.loopCount; ++loop) {
-      if (!continues[loop]) continue;
+      if (!continues[loop] || members[loop].empty()) continue;
       const std::uint32_t node = previous->nodeOfLoop[*continues[loop]];
       if (renested.count(node)) {
         nest(current, loop, members[loop], nesting);
@@ -509,6 +731,7 @@ class CellGraphSweep {
     faces[nesting.faces.find(nesting.unbounded)];
     if (previous) faces[nesting.faces.find(nesting.unbounded)].previousNodes.insert(previous->unboundedNode);
     for (std::uint32_t loop = 0; loop < current.loopCount; ++loop) {
+      if (members[loop].empty()) continue;  // a number no loop has over this interval
       Face& face = faces[nesting.faces.find(loop)];
       face.loops.push_back(loop);
       face.changed = face.changed || !continues[loop];
@@ -518,7 +741,11 @@ class CellGraphSweep {
     }
     std::unordered_map<std::uint32_t, std::uint32_t> loopsOfPreviousNode;
     if (previous) {
-      for (std::uint32_t loop = 0; loop < previous->loopCount; ++loop) ++loopsOfPreviousNode[previous->nodeOfLoop[loop]];
+      std::vector<char> seen(previous->loopCount, 0);
+      for (std::uint32_t loop : previous->loopOf) {
+        if (!seen[loop]) ++loopsOfPreviousNode[previous->nodeOfLoop[loop]];
+        seen[loop] = 1;
+      }
     }
     current.nodeOfLoop.assign(current.loopCount, 0);
     const std::uint32_t unboundedRoot = nesting.faces.find(nesting.unbounded);
@@ -678,13 +905,20 @@ class CellGraphSweep {
     }
   }
 
-  void recordRuns(const IntervalLoops& loops) {
-    for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
-      const Piece& piece = loops.pieces[index];
-      addRun(graph_.parts_.runsOfPiece[graph_.pieceIndex(piece.patch, piece.slab, piece.gap)], loops.interval,
+  /// The node of each piece from this interval on, where it changes (only new
+  /// pieces can change when the faces went on with their nodes).
+  void recordRuns(const IntervalLoops& loops, const std::vector<std::uint32_t>& pieces) {
+    for (std::uint32_t index : pieces) {
+      addRun(graph_.parts_.runsOfPiece[loops.pieceIndices[index]], loops.interval,
              loops.nodeOfLoop[loops.loopOf[index]]);
     }
     addRun(graph_.parts_.unboundedRuns, loops.interval, loops.unboundedNode);
+  }
+
+  void recordRuns(const IntervalLoops& loops) {
+    std::vector<std::uint32_t> all(loops.pieces.size());
+    std::iota(all.begin(), all.end(), 0);
+    recordRuns(loops, all);
   }
 
   static void addRun(std::vector<CellGraph::NodeRun>& runs, std::uint32_t interval, std::uint32_t node) {
@@ -703,6 +937,7 @@ class CellGraphSweep {
   std::vector<std::vector<SubFaceGlue>> horizontalGluesAt_;
   std::set<std::pair<std::uint64_t, std::uint64_t>> spiralGlues_;
   std::vector<std::array<std::uint32_t, 2>> spiralOfEnd_;
+  std::vector<std::vector<std::pair<std::uint32_t, int>>> patchesAtSpiral_;
 };
 
 CellGraph::CellGraph(const Arrangement& arrangement, const SliceRays& rays, const CellOfFace& cellOf,
