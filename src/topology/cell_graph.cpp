@@ -314,6 +314,12 @@ class CellGraphSweep {
     loops.interval = interval;
     loops.sample = samples_[interval];
     const std::vector<std::int64_t> previousIndex = mergePieces(previous, changes, loops);
+    if (replacesChains(previous, changes, previousIndex, loops)) {
+      for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
+        if (previousIndex[piece] < 0) step.added.push_back(piece);
+      }
+      return step;
+    }
     // Loops that may change: through a removed piece, or next to an added one.
     std::vector<char> changed(previous.loopCount, 0);
     const auto touch = [&](std::uint32_t piece) {
@@ -352,6 +358,96 @@ class CellGraphSweep {
     }
     numberChangedLoops(previous, previousIndex, changed, subset, sets, step);
     return step;
+  }
+
+  /// Where the changed pieces only replace chains between the same kept pieces (the
+  /// usual case), no loop changes but for those pieces: every chain of removed
+  /// pieces between two kept ones is matched by a chain of added pieces between the
+  /// same two, and no chain closes on itself. Then the added pieces take the loops of
+  /// the pieces they hang from, every other piece keeps its loop, and true.
+  bool replacesChains(const IntervalLoops& previous, const SlabChanges& changes,
+                      const std::vector<std::int64_t>& previousIndex, IntervalLoops& loops) const {
+    std::vector<char> removed(previous.pieces.size(), 0);
+    std::vector<std::uint32_t> removedPieces;
+    for (const auto& [patch, slab] : changes.removed) {
+      for (std::uint32_t piece : piecesOfSlab(previous, patch, slab)) {
+        removed[piece] = 1;
+        removedPieces.push_back(piece);
+      }
+    }
+    std::vector<char> added(loops.pieces.size(), 0);
+    std::vector<std::uint32_t> addedPieces;
+    for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
+      if (previousIndex[piece] < 0) added[piece] = 1, addedPieces.push_back(piece);
+    }
+    std::vector<std::pair<std::size_t, std::size_t>> before, after;
+    std::vector<std::uint32_t> hangsFrom(loops.pieces.size());
+    if (!chainEnds(previous, removedPieces, removed, before, nullptr) ||
+        !chainEnds(loops, addedPieces, added, after, &hangsFrom)) {
+      return false;
+    }
+    std::sort(before.begin(), before.end());
+    std::sort(after.begin(), after.end());
+    if (before != after) return false;
+    loops.loopOf.resize(loops.pieces.size());
+    for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
+      if (previousIndex[piece] >= 0) loops.loopOf[piece] = previous.loopOf[previousIndex[piece]];
+    }
+    for (std::uint32_t piece : addedPieces) {
+      loops.loopOf[piece] = previous.loopOf[previous.pieceAt(loops.pieceIndices[hangsFrom[piece]]).value()];
+    }
+    loops.loopCount = previous.loopCount;
+    loops.nodeOfLoop = previous.nodeOfLoop;
+    loops.unboundedNode = previous.unboundedNode;
+    return true;
+  }
+
+  /// The chains the marked pieces form, each as the pair of pieces (by pieceIndex)
+  /// it hangs between; false when one closes on itself or a neighbour is unclear.
+  /// With `hangsFrom`, each marked piece's first end piece (an index in `loops`).
+  bool chainEnds(const IntervalLoops& loops, const std::vector<std::uint32_t>& pieces, const std::vector<char>& marked,
+                 std::vector<std::pair<std::size_t, std::size_t>>& ends, std::vector<std::uint32_t>* hangsFrom) const {
+    std::vector<char> seen(loops.pieces.size(), 0);
+    for (std::uint32_t start : pieces) {
+      if (seen[start]) continue;
+      std::vector<std::uint32_t> chain{start}, outside;
+      seen[start] = 1;
+      for (std::size_t at = 0; at < chain.size(); ++at) {
+        for (const std::size_t end : {0, 1}) {
+          const std::optional<std::uint32_t> next = neighbour(loops, chain[at], end);
+          if (!next) return false;
+          if (!marked[*next]) {
+            outside.push_back(*next);
+          } else if (!seen[*next]) {
+            seen[*next] = 1;
+            chain.push_back(*next);
+          }
+        }
+      }
+      if (outside.size() != 2) return false;
+      const std::size_t a = loops.pieceIndices[outside[0]], b = loops.pieceIndices[outside[1]];
+      ends.push_back({std::min(a, b), std::max(a, b)});
+      if (hangsFrom) {
+        for (std::uint32_t piece : chain) (*hangsFrom)[piece] = outside[0];
+      }
+    }
+    return true;
+  }
+
+  /// The piece across a piece's low (0) or high (1) end: across a curve, or the one
+  /// glued to it around the spiral there; none when that is unclear.
+  std::optional<std::uint32_t> neighbour(const IntervalLoops& loops, std::uint32_t index, std::size_t end) const {
+    if (const std::optional<std::uint32_t> next = curveNeighbour(loops, index, end)) return next;
+    const Piece& piece = loops.pieces[index];
+    const std::vector<std::uint32_t> ending = endPiecesAt(loops, spiralOfEnd_[piece.patch][end]);
+    std::optional<std::uint32_t> found;
+    for (std::uint32_t other : ending) {
+      if (other == index) continue;
+      if (ending.size() > 2 && !gluedAroundSpiral(faceOf(piece), faceOf(loops.pieces[other]))) continue;
+      if (found) return std::nullopt;
+      found = other;
+    }
+    return found;
   }
 
   /// The pieces over the interval: the previous ones but those of removed slabs, and
