@@ -367,23 +367,18 @@ class CellGraphSweep {
   /// the pieces they hang from, every other piece keeps its loop, and true.
   bool replacesChains(const IntervalLoops& previous, const SlabChanges& changes,
                       const std::vector<std::int64_t>& previousIndex, IntervalLoops& loops) const {
-    std::vector<char> removed(previous.pieces.size(), 0);
-    std::vector<std::uint32_t> removedPieces;
+    std::vector<std::uint32_t> removedPieces, addedPieces;
     for (const auto& [patch, slab] : changes.removed) {
-      for (std::uint32_t piece : piecesOfSlab(previous, patch, slab)) {
-        removed[piece] = 1;
-        removedPieces.push_back(piece);
-      }
+      const std::vector<std::uint32_t> pieces = piecesOfSlab(previous, patch, slab);
+      removedPieces.insert(removedPieces.end(), pieces.begin(), pieces.end());
     }
-    std::vector<char> added(loops.pieces.size(), 0);
-    std::vector<std::uint32_t> addedPieces;
     for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
-      if (previousIndex[piece] < 0) added[piece] = 1, addedPieces.push_back(piece);
+      if (previousIndex[piece] < 0) addedPieces.push_back(piece);
     }
+    std::sort(removedPieces.begin(), removedPieces.end());
     std::vector<std::pair<std::size_t, std::size_t>> before, after;
-    std::vector<std::uint32_t> hangsFrom(loops.pieces.size());
-    if (!chainEnds(previous, removedPieces, removed, before, nullptr) ||
-        !chainEnds(loops, addedPieces, added, after, &hangsFrom)) {
+    std::vector<std::uint32_t> hangsFrom(addedPieces.size());
+    if (!chainEnds(previous, removedPieces, before, nullptr) || !chainEnds(loops, addedPieces, after, &hangsFrom)) {
       return false;
     }
     std::sort(before.begin(), before.end());
@@ -393,8 +388,8 @@ class CellGraphSweep {
     for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
       if (previousIndex[piece] >= 0) loops.loopOf[piece] = previous.loopOf[previousIndex[piece]];
     }
-    for (std::uint32_t piece : addedPieces) {
-      loops.loopOf[piece] = previous.loopOf[previous.pieceAt(loops.pieceIndices[hangsFrom[piece]]).value()];
+    for (std::size_t i = 0; i < addedPieces.size(); ++i) {
+      loops.loopOf[addedPieces[i]] = previous.loopOf[previous.pieceAt(loops.pieceIndices[hangsFrom[i]]).value()];
     }
     loops.loopCount = previous.loopCount;
     loops.nodeOfLoop = previous.nodeOfLoop;
@@ -402,25 +397,33 @@ class CellGraphSweep {
     return true;
   }
 
-  /// The chains the marked pieces form, each as the pair of pieces (by pieceIndex)
-  /// it hangs between; false when one closes on itself or a neighbour is unclear.
-  /// With `hangsFrom`, each marked piece's first end piece (an index in `loops`).
-  bool chainEnds(const IntervalLoops& loops, const std::vector<std::uint32_t>& pieces, const std::vector<char>& marked,
+  /// The chains the pieces (increasing) form, each as the pair of pieces (by
+  /// pieceIndex) it hangs between; false when one closes on itself or a neighbour
+  /// is unclear. With `hangsFrom`, for each of the pieces the index in `loops` of
+  /// the first piece its chain hangs from.
+  bool chainEnds(const IntervalLoops& loops, const std::vector<std::uint32_t>& pieces,
                  std::vector<std::pair<std::size_t, std::size_t>>& ends, std::vector<std::uint32_t>* hangsFrom) const {
-    std::vector<char> seen(loops.pieces.size(), 0);
-    for (std::uint32_t start : pieces) {
-      if (seen[start]) continue;
-      std::vector<std::uint32_t> chain{start}, outside;
-      seen[start] = 1;
+    const auto position = [&](std::uint32_t piece) -> std::optional<std::size_t> {
+      const auto found = std::lower_bound(pieces.begin(), pieces.end(), piece);
+      if (found == pieces.end() || *found != piece) return std::nullopt;
+      return static_cast<std::size_t>(found - pieces.begin());
+    };
+    std::vector<char> seen(pieces.size(), 0);
+    for (std::size_t first = 0; first < pieces.size(); ++first) {
+      if (seen[first]) continue;
+      std::vector<std::size_t> chain{first};
+      std::vector<std::uint32_t> outside;
+      seen[first] = 1;
       for (std::size_t at = 0; at < chain.size(); ++at) {
         for (const std::size_t end : {0, 1}) {
-          const std::optional<std::uint32_t> next = neighbour(loops, chain[at], end);
+          const std::optional<std::uint32_t> next = neighbour(loops, pieces[chain[at]], end);
           if (!next) return false;
-          if (!marked[*next]) {
+          const std::optional<std::size_t> inChain = position(*next);
+          if (!inChain) {
             outside.push_back(*next);
-          } else if (!seen[*next]) {
-            seen[*next] = 1;
-            chain.push_back(*next);
+          } else if (!seen[*inChain]) {
+            seen[*inChain] = 1;
+            chain.push_back(*inChain);
           }
         }
       }
@@ -428,7 +431,7 @@ class CellGraphSweep {
       const std::size_t a = loops.pieceIndices[outside[0]], b = loops.pieceIndices[outside[1]];
       ends.push_back({std::min(a, b), std::max(a, b)});
       if (hangsFrom) {
-        for (std::uint32_t piece : chain) (*hangsFrom)[piece] = outside[0];
+        for (std::size_t at : chain) (*hangsFrom)[at] = outside[0];
       }
     }
     return true;
