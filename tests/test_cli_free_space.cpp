@@ -53,6 +53,23 @@ TEST(CliFreeSpace, BuildPrintsTheStatisticsAsJson) {
   EXPECT_GE(statistics["free_cells"].get<int>(), 1);
   EXPECT_GT(statistics["predicates"]["ef"]["levels"]["double"].get<long>(), 0);
   EXPECT_EQ(statistics["perturbation"]["seed"], 1);
+  EXPECT_GE(statistics["graph"]["nodes"].get<int>(), statistics["free_cells"].get<int>());
+  EXPECT_GE(statistics["graph"]["critical_angles"].get<int>(), 0);
+  EXPECT_TRUE(statistics["graph"].contains("edges"));
+}
+
+// Locate names the node of the cell graph of each free configuration: the start and
+// the goal of a problem in one node when a translation at one angle joins them
+// (keyhole: both at theta 0 in front of and behind the wall, not joined that way).
+TEST(CliFreeSpace, LocateNamesTheNodeOfFreeConfigurations) {
+  const std::vector<nlohmann::json> answers =
+      batchAnswers("locate", "keyhole.cfg", "0 -2.25 0\n0 -2.0 0\n0 0 0\n0 2.25 0\n");
+  ASSERT_EQ(answers.size(), 4u);
+  EXPECT_TRUE(answers[0].contains("node"));
+  EXPECT_EQ(answers[0]["node"], answers[1]["node"]);  // within the start's clearance
+  EXPECT_FALSE(answers[2].contains("node"));          // blocked
+  EXPECT_TRUE(answers[3].contains("node"));
+  EXPECT_NE(answers[0]["node"], answers[3]["node"]);  // the wall lies between them at theta 0
 }
 
 TEST(CliFreeSpace, LocateSeparatesTheNarrowKeyholesStartAndGoal) {

@@ -1,6 +1,8 @@
 #include <iostream>
 #include <memory>
 
+#include <chrono>
+
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
@@ -102,8 +104,16 @@ void addBuildCommand(CLI::App& app) {
     }
     LoadedProblem loaded;
     const std::unique_ptr<FreeSpace> space = options->input.build(loaded);
+    const auto graphStart = std::chrono::steady_clock::now();
+    const CellGraph& graph = space->cellGraph();
+    const double graphSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - graphStart).count();
     if (!options->save.empty()) space->save(options->save, options->force);
-    const nlohmann::json statistics = statisticsJson(*space);
+    nlohmann::json statistics = statisticsJson(*space);
+    statistics["graph"] = {{"critical_angles", graph.criticalAngles().size()},
+                           {"nodes", graph.nodes().size()},
+                           {"edges", graph.edges().size()},
+                           {"seconds", graphSeconds}};
     if (options->json) {
       std::cout << statistics.dump(2) << "\n";
       return;
@@ -115,6 +125,8 @@ void addBuildCommand(CLI::App& app) {
               << statistics["free_cells"] << " (cell 0 is the unbounded one)\n"
               << "seconds " << statistics["seconds"] << ":";
     for (const StageTime& stage : space->stageTimes()) std::cout << " " << stage.stage << " " << stage.seconds;
+    std::cout << "\ncell graph: " << graph.nodes().size() << " nodes, " << graph.edges().size() << " edges over "
+              << graph.intervalCount() << " angle intervals, " << graphSeconds << " s";
     std::cout << "\npeak memory " << statistics["peak_memory_mb"] << " MB; predicates decided in double intervals "
               << 100 * space->statistics().doubleIntervalFraction() << "%\n"
               << space->statistics().toText();
