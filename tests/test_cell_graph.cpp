@@ -11,6 +11,7 @@
 
 #include "geometry/disjoint_sets.h"
 #include "freespace/problem/planar_problem.h"
+#include "freespace/scenes/scene_generator.h"
 #include "freespace/space/free_space.h"
 #include "random_configurations.h"
 #include "temp_dir.h"
@@ -49,6 +50,30 @@ TEST_P(BundledCellGraph, ComponentsAreTheCells) {
     EXPECT_EQ(*component, components.find(node)) << "node " << node << " of cell " << graph.nodes()[node].cell;
   }
   for (std::size_t cell = 0; cell < componentOfCell.size(); ++cell) EXPECT_TRUE(componentOfCell[cell]) << cell;
+}
+
+/// The start's and the goal's nodes are joined by a path of edges exactly when the
+/// problem was designed solvable (breadth-first search over the edges).
+TEST_P(BundledCellGraph, StartAndGoalNodesAreJoinedExactlyWhenSolvable) {
+  const LoadedProblem loaded = problem();
+  const FreeSpace space(loaded.robot, loaded.world);
+  const CellGraph& graph = space.cellGraph();
+  const std::optional<std::uint32_t> start = space.nodeOf(loaded.problem.start), goal = space.nodeOf(loaded.problem.goal);
+  ASSERT_TRUE(start && goal);
+  std::vector<std::vector<std::uint32_t>> next(graph.nodes().size());
+  for (const CellGraphEdge& edge : graph.edges()) {
+    next[edge.from].push_back(edge.to);
+    next[edge.to].push_back(edge.from);
+  }
+  std::vector<bool> reached(graph.nodes().size(), false);
+  std::vector<std::uint32_t> queue{*start};
+  reached[*start] = true;
+  for (std::size_t at = 0; at < queue.size(); ++at) {
+    for (std::uint32_t node : next[queue[at]]) {
+      if (!reached[node]) reached[node] = true, queue.push_back(node);
+    }
+  }
+  EXPECT_EQ(reached[*goal], makeScene(GetParam()).expectSolvable);
 }
 
 /// Edges join the last interval of one node to the first of the next, at the
@@ -126,7 +151,7 @@ TEST_P(BundledCellGraph, ConfigurationsFindTheirNodes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledCellGraph,
-                         ::testing::Values("keyhole", "keyhole_narrow", "cage", "maze", "overhang", "table",
+                         ::testing::Values("keyhole", "keyhole_narrow", "keyhole_wide", "keyhole_tight", "cage", "maze", "overhang", "table",
                                            "table_tall", "turn_around", "room_door", "random_polyhedra",
                                            "tetra_floorplan"));
 

@@ -243,6 +243,8 @@ TEST(Scenes, ComponentsAndEnclosedRegionsAreAsDesigned) {
       {"maze", {1, 0, 1}},
       {"keyhole", {1, 1, 1}},
       {"keyhole_narrow", {1, 1, 1}},
+      {"keyhole_wide", {1, 1, 1}},
+      {"keyhole_tight", {1, 1, 1}},
       {"cage", {1, 1, 1}},
       {"table", {1, 2, 1}},
       {"table_tall", {1, 2, 1}},

@@ -107,14 +107,16 @@ Scene mazeScene(std::uint64_t seed) {
 }
 
 /// A closed 8 x 8 room split in two by a wall along y = 0 whose only opening is a
-/// slot of `slotWidth` near x = 0; the bar lies parallel to the wall on both sides.
-Scene keyholeScene(const std::string& name, double slotWidth, bool solvable, const std::string& description) {
+/// slot of `slotWidth` near x = 0; the bar (3 long) lies parallel to the wall on both
+/// sides.
+Scene keyholeScene(const std::string& name, double slotWidth, double barWidth, bool solvable,
+                   const std::string& description) {
   const double height = 0.75;
   const Box2 interior(Point2(-4, -4), Point2(4, 4));
   const double slotStart = -std::floor(slotWidth / 2 / kSceneGrid) * kSceneGrid;
   const std::vector<Box2> partition =
       wallRectangles({-4, 0}, {4, 0}, kWallThickness, {{slotStart, slotStart + slotWidth}});
-  return assembleScene(name, makeBarRobot(3, 0.5, height),
+  return assembleScene(name, makeBarRobot(3, barWidth, height),
                        walls(concatenate(roomWallRectangles(interior, kWallThickness), partition), height),
                        {0, -2.25, 0}, {0, 2.25, 0}, solvable, description);
 }
@@ -203,16 +205,28 @@ const std::vector<std::pair<std::string, SceneBuilder>>& sceneBuilders() {
       {"maze", mazeScene},
       {"keyhole",
        [](std::uint64_t) {
-         return keyholeScene("keyhole", 0.75, true,
+         return keyholeScene("keyhole", 0.75, 0.5, true,
                              "Bar robot 3 x 0.5 x 0.75 lying parallel to a wall that splits a closed 8 x 8 room; "
                              "the wall's only opening is a 0.75 wide slot, so the bar must turn by 90 degrees, "
                              "pass end first and turn back. Walls as high as the robot. Solvable.");
        }},
       {"keyhole_narrow",
        [](std::uint64_t) {
-         return keyholeScene("keyhole_narrow", 0.5 - kSceneGrid, false,
+         return keyholeScene("keyhole_narrow", 0.5 - kSceneGrid, 0.5, false,
                              "As keyhole, with the slot 1/64 narrower than the bar's 0.5 width (0.484375): the "
                              "convex bar cannot pass a gap narrower than its smallest width. No path.");
+       }},
+      {"keyhole_wide",
+       [](std::uint64_t) {
+         return keyholeScene("keyhole_wide", 101 * kSceneGrid, 100 * kSceneGrid, true,
+                             "As keyhole with a bar 1.5625 (100/64) wide and a slot 1% wider (101/64): the bar "
+                             "passes end first, turned within about 0.005 radians of a quarter turn. Solvable.");
+       }},
+      {"keyhole_tight",
+       [](std::uint64_t) {
+         return keyholeScene("keyhole_tight", 99 * kSceneGrid, 100 * kSceneGrid, false,
+                             "As keyhole with a bar 1.5625 (100/64) wide and a slot 1% narrower (99/64): the convex "
+                             "bar cannot pass a gap narrower than its smallest width. No path.");
        }},
       {"cage", [](std::uint64_t) { return cageScene(); }},
       {"table",
