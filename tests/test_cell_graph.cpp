@@ -151,7 +151,7 @@ TEST_P(BundledCellGraph, ConfigurationsFindTheirNodes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledCellGraph,
-                         ::testing::Values("keyhole", "keyhole_narrow", "keyhole_wide", "keyhole_tight", "cage", "maze", "overhang", "table",
+                         ::testing::Values("keyhole", "keyhole_narrow", "keyhole_wide", "keyhole_tight", "flip_window", "cage", "maze", "overhang", "table",
                                            "table_tall", "turn_around", "room_door", "random_polyhedra",
                                            "tetra_floorplan"));
 

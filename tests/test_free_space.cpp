@@ -98,10 +98,12 @@ TEST(FreeSpace, BenchmarkRobotsAmongWallsOfSeveralHeights) {
   }
 }
 
-// The cage: inside and outside. The other counts are not known independently.
+// The cage: inside and outside; flip_window: outside, and the bar's headings about 0
+// and about pi in the box. The other counts are not known independently.
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledFreeSpace,
                          ::testing::Values(SceneCase{"cage", 2}, SceneCase{"keyhole", -1}, SceneCase{"keyhole_narrow", -1},
                                            SceneCase{"keyhole_wide", -1}, SceneCase{"keyhole_tight", -1},
+                                           SceneCase{"flip_window", 3},
                                            SceneCase{"turn_around", -1}, SceneCase{"table", -1},
                                            SceneCase{"table_tall", -1}, SceneCase{"overhang", -1},
                                            SceneCase{"room_door", -1}, SceneCase{"random_polyhedra", -1},

@@ -251,6 +251,7 @@ TEST(Scenes, ComponentsAndEnclosedRegionsAreAsDesigned) {
       {"overhang", {2, 2, 1}},
       {"random_polyhedra", {1, 17, 1}},
       {"turn_around", {1, 1, 1}},
+      {"flip_window", {1, 1, 1}},
       {"tetra_floorplan", {1, 0, 1}},
       {"soup_maze", {1, 0, -1}},
       {"soup_pieces", {1, 14, 0}},

@@ -197,6 +197,22 @@ Scene turnAroundScene() {
                        "and drive back in. Solvable.");
 }
 
+/// A bar 3 x 0.5 in a closed box 3.25 x 1 just larger than it: it turns by at most
+/// about 0.17 radians either way from lying along x, so its headings about 0 and
+/// about pi are apart (it cannot turn round in the box).
+Scene flipWindowScene() {
+  const double height = 0.5;
+  const Box2 interior(Point2(-1.625, -0.5), Point2(1.625, 0.5));
+  const double tilt = 0.0625;
+  return assembleScene("flip_window", makeBarRobot(3, 0.5, height),
+                       walls(roomWallRectangles(interior, kWallThickness), height), {0, 0, kPi - tilt},
+                       {0, 0, -kPi + tilt}, true,
+                       "Bar robot 3 x 0.5 in a closed 3.25 x 1 box of walls as high as it: it can turn by at "
+                       "most about 0.17 radians either way from lying along x. The start is turned 0.0625 short "
+                       "of pi, the goal 0.0625 past it (theta = -pi + 0.0625): the only way is the short turn "
+                       "through theta = pi, OMPL's wrap-around. Solvable.");
+}
+
 using SceneBuilder = std::function<Scene(std::uint64_t seed)>;
 
 const std::vector<std::pair<std::string, SceneBuilder>>& sceneBuilders() {
@@ -245,6 +261,7 @@ const std::vector<std::pair<std::string, SceneBuilder>>& sceneBuilders() {
       {"overhang", [](std::uint64_t) { return overhangScene(); }},
       {"random_polyhedra", randomPolyhedraScene},
       {"turn_around", [](std::uint64_t) { return turnAroundScene(); }},
+      {"flip_window", [](std::uint64_t) { return flipWindowScene(); }},
       {kTetraFloorplan,
        [](std::uint64_t seed) {
          return renamedScene(makeTetraFloorplanScene(kDefaultTetraRooms, seed), kTetraFloorplan);
