@@ -62,8 +62,31 @@ struct IntervalLoops {
     if (found == pieceIndices.end() || *found != index) return std::nullopt;
     return static_cast<std::uint32_t>(found - pieceIndices.begin());
   }
+  const Piece& piece(std::size_t id) const { return pieces[id]; }
   std::vector<std::uint32_t> nodeOfLoop;
   std::uint32_t unboundedNode = 0;
+};
+
+/// The boundary of the free slices as the sweep goes, kept from interval to interval:
+/// which slab of each patch and which pieces are there, each piece's loop (pieces
+/// by CellGraph::pieceIndex) and each loop's node.
+struct LiveState {
+  std::vector<std::int64_t> slabOfPatch;  // -1: none
+  std::vector<char> live;
+  std::vector<std::uint32_t> loopOf;
+  std::vector<std::uint32_t> nodeOfLoop;
+  std::uint32_t unboundedNode = 0;
+  const std::vector<Piece>* pieceOfIndex = nullptr;
+
+  std::optional<std::uint32_t> slabOf(std::uint32_t patch) const {
+    if (slabOfPatch[patch] < 0) return std::nullopt;
+    return static_cast<std::uint32_t>(slabOfPatch[patch]);
+  }
+  std::optional<std::size_t> pieceAt(std::size_t index) const {
+    if (!live[index]) return std::nullopt;
+    return index;
+  }
+  const Piece& piece(std::size_t id) const { return (*pieceOfIndex)[id]; }
 };
 
 /// Pairs (loop before, loop after) that share boundary across a critical angle.
@@ -89,46 +112,27 @@ class CellGraphSweep {
   void run(const Cancellation& cancellation) {
     const std::uint32_t count = static_cast<std::uint32_t>(graph_.intervalCount());
     std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> starting(count), ending(count);
-    std::map<std::uint32_t, std::uint32_t> active = slabsCovering(starting, ending);
-    IntervalLoops first, previous;
-    for (std::uint32_t interval = 0; interval < count; ++interval) {
+    active_ = slabsCovering(starting, ending);
+    for (const auto& [patch, slab] : starting[0]) active_[patch] = slab;
+    IntervalLoops first = loopsOver(0);
+    assignFaces(nullptr, first);
+    recordRuns(first);
+    startState(first);
+    for (std::uint32_t interval = 1; interval < count; ++interval) {
       cancellation.check();
       SlabChanges changes;
       for (const auto& [patch, slab] : ending[interval]) {
-        const auto found = active.find(patch);
-        if (found == active.end() || found->second != slab) continue;
-        active.erase(found);
-        changes.removed.push_back({patch, slab});
+        if (state_.slabOfPatch[patch] == slab) changes.removed.push_back({patch, slab});
       }
-      for (const auto& [patch, slab] : starting[interval]) {
-        active[patch] = slab;
-        changes.added.push_back({patch, slab});
-      }
-      if (interval == 0) {
-        previous = loopsOver(interval, active);
-        assignFaces(nullptr, previous);
-        recordRuns(previous);
-        first = previous;
-        continue;
-      }
-      std::sort(changes.removed.begin(), changes.removed.end());
-      std::sort(changes.added.begin(), changes.added.end());
-      Step step = nextLoops(previous, changes, interval);
-      if (!step.full && inheritFaces(previous, step)) {
-        recordRuns(step.loops, step.added);
-      } else {
-        if (step.full) step.loops = loopsOver(interval, active);
-        for (std::uint32_t node : nodesOf(previous)) graph_.parts_.nodes[node].lastInterval = interval - 1;
-        assignFaces(&previous, step.loops);
-        recordRuns(step.loops);
-      }
-      previous = std::move(step.loops);
+      changes.added = starting[interval];
+      if (!advanceByChains(changes, interval)) advanceFromScratch(changes, interval);
     }
-    for (std::uint32_t node : nodesOf(previous)) graph_.parts_.nodes[node].lastInterval = count - 1;
+    const IntervalLoops last = snapshot(count - 1);
+    for (std::uint32_t node : nodesOf(last)) graph_.parts_.nodes[node].lastInterval = count - 1;
     if (!graph_.parts_.criticalAngles.empty()) {
-      LoopLinks links = continuingLoops(previous, first);
-      addGluedLoops(previous, first, links);
-      addEdges(previous, first, links);
+      LoopLinks links = continuingLoops(last, first);
+      addGluedLoops(last, first, links);
+      addEdges(last, first, links);
     }
   }
 
@@ -139,10 +143,12 @@ class CellGraphSweep {
     graph_.numberPieces(arrangement_);
     graph_.parts_.runsOfPiece.resize(graph_.pieceCount_);
     cellOfPiece_.assign(graph_.pieceCount_, kNotFree);
+    pieceOfIndex_.reserve(graph_.pieceCount_);
     for (std::uint32_t patch = 0; patch < arrangement_.subdivisions.size(); ++patch) {
       const auto& slabsOfPatch = arrangement_.subdivisions[patch].slabs;
       for (std::uint32_t slab = 0; slab < slabsOfPatch.size(); ++slab) {
         for (std::uint32_t gap = 0; gap < slabsOfPatch[slab].faces.size(); ++gap) {
+          pieceOfIndex_.push_back({patch, slab, gap});
           if (const auto cell = cellOf_({patch, slabsOfPatch[slab].faces[gap]})) {
             cellOfPiece_[graph_.pieceIndex(patch, slab, gap)] = *cell;
           }
@@ -257,25 +263,27 @@ class CellGraphSweep {
   // --- Loops over one interval ------------------------------------------------------
 
   /// Every loop over an interval, from scratch.
-  IntervalLoops loopsOver(std::uint32_t interval, const std::map<std::uint32_t, std::uint32_t>& active) {
-    IntervalLoops loops;
-    loops.interval = interval;
-    loops.sample = samples_[interval];
-    loops.slabs.assign(active.begin(), active.end());
-    for (const auto& [patch, slab] : loops.slabs) appendFreePieces(loops, patch, slab);
-    std::vector<std::uint32_t> all(loops.pieces.size());
-    std::iota(all.begin(), all.end(), 0);
-    const std::vector<char> everywhere(loops.pieces.size(), 1);
+  IntervalLoops loopsOver(std::uint32_t interval) const {
+    IntervalLoops loops = piecesOver(interval);
     detail::DisjointSets sets(loops.pieces.size());
-    if (!joinAcrossCurves(loops, all, everywhere, sets) || !joinAroundSpirals(loops, all, everywhere, sets)) {
-      throw std::logic_error("CellGraph: loops do not close");
-    }
+    joinAcrossCurves(loops, sets);
+    joinAroundSpirals(loops, sets);
     std::unordered_map<std::uint32_t, std::uint32_t> numberOfRoot;
     for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
       const auto found = numberOfRoot.emplace(sets.find(piece), static_cast<std::uint32_t>(numberOfRoot.size()));
       loops.loopOf.push_back(found.first->second);
     }
     loops.loopCount = static_cast<std::uint32_t>(numberOfRoot.size());
+    return loops;
+  }
+
+  /// The pieces over an interval (the slabs of active_), without their loops.
+  IntervalLoops piecesOver(std::uint32_t interval) const {
+    IntervalLoops loops;
+    loops.interval = interval;
+    loops.sample = samples_[interval];
+    loops.slabs.assign(active_.begin(), active_.end());
+    for (const auto& [patch, slab] : loops.slabs) appendFreePieces(loops, patch, slab);
     return loops;
   }
 
@@ -294,116 +302,111 @@ class CellGraphSweep {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> removed, added;
   };
 
-  /// The loops over an interval from those over the previous one, when only the
-  /// loops through pieces of the changed slabs (or their neighbours) can change:
-  /// `loops` keeps every other loop with its number, `links` joins the changed loops
-  /// (`before`) to the loops that replace them (`after`). `full` when the changed
-  /// pieces do not close up into loops among themselves (then nothing else is set).
-  struct Step {
-    IntervalLoops loops;
-    LoopLinks links;
-    std::vector<std::uint32_t> before, after;
-    /// The pieces of added slabs.
-    std::vector<std::uint32_t> added;
-    bool full = false;
-  };
+  // --- The live state ------------------------------------------------------------
 
-  Step nextLoops(const IntervalLoops& previous, const SlabChanges& changes, std::uint32_t interval) {
-    Step step;
-    IntervalLoops& loops = step.loops;
-    loops.interval = interval;
-    loops.sample = samples_[interval];
-    const std::vector<std::int64_t> previousIndex = mergePieces(previous, changes, loops);
-    if (replacesChains(previous, changes, previousIndex, loops)) {
-      for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
-        if (previousIndex[piece] < 0) step.added.push_back(piece);
-      }
-      return step;
-    }
-    // Loops that may change: through a removed piece, or next to an added one.
-    std::vector<char> changed(previous.loopCount, 0);
-    const auto touch = [&](std::uint32_t piece) {
-      if (previousIndex[piece] >= 0) changed[previous.loopOf[previousIndex[piece]]] = 1;
-    };
-    for (const auto& [patch, slab] : changes.removed) {
-      for (std::uint32_t piece : piecesOfSlab(previous, patch, slab)) changed[previous.loopOf[piece]] = 1;
-    }
-    std::vector<std::uint32_t> spirals;
-    for (const auto* list : {&changes.removed, &changes.added}) {
-      for (const auto& [patch, slab] : *list) spirals.insert(spirals.end(), spiralOfEnd_[patch].begin(), spiralOfEnd_[patch].end());
-    }
-    for (std::uint32_t spiral : spirals) {
-      for (std::uint32_t piece : endPiecesAt(loops, spiral)) touch(piece);
-    }
-    for (const auto& [patch, slab] : changes.added) {
-      for (std::uint32_t piece : piecesOfSlab(loops, patch, slab)) {
-        for (const std::size_t end : {0, 1}) {
-          if (const auto next = curveNeighbour(loops, piece, end)) touch(*next);
-        }
-      }
-    }
-    std::vector<std::uint32_t> subset;
-    std::vector<char> inSubset(loops.pieces.size(), 0);
-    for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
-      if (previousIndex[piece] < 0) step.added.push_back(piece);
-      if (previousIndex[piece] < 0 || changed[previous.loopOf[previousIndex[piece]]]) {
-        subset.push_back(piece);
-        inSubset[piece] = 1;
-      }
-    }
-    detail::DisjointSets sets(loops.pieces.size());
-    if (!joinAcrossCurves(loops, subset, inSubset, sets) || !joinAroundSpirals(loops, subset, inSubset, sets)) {
-      step.full = true;
-      return step;
-    }
-    numberChangedLoops(previous, previousIndex, changed, subset, sets, step);
-    return step;
+  void startState(const IntervalLoops& loops) {
+    state_.pieceOfIndex = &pieceOfIndex_;
+    state_.slabOfPatch.assign(arrangement_.subdivisions.size(), -1);
+    state_.live.assign(pieceOfIndex_.size(), 0);
+    state_.loopOf.assign(pieceOfIndex_.size(), 0);
+    for (const auto& [patch, slab] : loops.slabs) state_.slabOfPatch[patch] = slab;
+    keep(loops);
   }
 
-  /// Where the changed pieces only replace chains between the same kept pieces (the
-  /// usual case), no loop changes but for those pieces: every chain of removed
-  /// pieces between two kept ones is matched by a chain of added pieces between the
-  /// same two, and no chain closes on itself. Then the added pieces take the loops of
-  /// the pieces they hang from, every other piece keeps its loop, and true.
-  bool replacesChains(const IntervalLoops& previous, const SlabChanges& changes,
-                      const std::vector<std::int64_t>& previousIndex, IntervalLoops& loops) const {
-    std::vector<std::uint32_t> removedPieces, addedPieces;
+  /// The loops, nodes and pieces of an interval's loops as the live state's.
+  void keep(const IntervalLoops& loops) {
+    for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
+      state_.live[loops.pieceIndices[index]] = 1;
+      state_.loopOf[loops.pieceIndices[index]] = loops.loopOf[index];
+    }
+    state_.nodeOfLoop = loops.nodeOfLoop;
+    state_.unboundedNode = loops.unboundedNode;
+  }
+
+  /// The live state as an interval's loops.
+  IntervalLoops snapshot(std::uint32_t interval) const {
+    IntervalLoops loops = piecesOver(interval);
+    for (std::size_t index : loops.pieceIndices) loops.loopOf.push_back(state_.loopOf[index]);
+    loops.loopCount = static_cast<std::uint32_t>(state_.nodeOfLoop.size());
+    loops.nodeOfLoop = state_.nodeOfLoop;
+    loops.unboundedNode = state_.unboundedNode;
+    return loops;
+  }
+
+  /// The free pieces of a slab (by CellGraph::pieceIndex).
+  std::vector<std::size_t> freePiecesOf(std::uint32_t patch, std::uint32_t slab) const {
+    std::vector<std::size_t> pieces;
+    const std::size_t first = graph_.pieceIndex(patch, slab, 0);
+    const std::size_t gaps = arrangement_.subdivisions[patch].slabs[slab].faces.size();
+    for (std::size_t index = first; index < first + gaps; ++index) {
+      if (cellOfPiece_[index] != kNotFree) pieces.push_back(index);
+    }
+    return pieces;
+  }
+
+  /// Moves the live state over a critical angle (`forward`) or back.
+  void apply(const SlabChanges& changes, bool forward) {
+    for (const auto& [patch, slab] : forward ? changes.removed : changes.added) {
+      state_.slabOfPatch[patch] = -1;
+      active_.erase(patch);
+      for (std::size_t index : freePiecesOf(patch, slab)) state_.live[index] = 0;
+    }
+    for (const auto& [patch, slab] : forward ? changes.added : changes.removed) {
+      state_.slabOfPatch[patch] = slab;
+      active_[patch] = slab;
+      for (std::size_t index : freePiecesOf(patch, slab)) state_.live[index] = 1;
+    }
+  }
+
+  /// The usual step: the pieces that change only replace chains of pieces between
+  /// the same kept pieces (every chain of removed pieces between two kept ones is
+  /// matched by a chain of added pieces between the same two, and none closes on
+  /// itself), so no loop and no face changes; the added pieces take the loops of the
+  /// pieces they hang from. False (the state moved on) otherwise.
+  bool advanceByChains(const SlabChanges& changes, std::uint32_t interval) {
+    std::vector<std::size_t> removed, added;
     for (const auto& [patch, slab] : changes.removed) {
-      const std::vector<std::uint32_t> pieces = piecesOfSlab(previous, patch, slab);
-      removedPieces.insert(removedPieces.end(), pieces.begin(), pieces.end());
+      for (std::size_t index : freePiecesOf(patch, slab)) removed.push_back(index);
     }
-    for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
-      if (previousIndex[piece] < 0) addedPieces.push_back(piece);
+    for (const auto& [patch, slab] : changes.added) {
+      for (std::size_t index : freePiecesOf(patch, slab)) added.push_back(index);
     }
-    std::sort(removedPieces.begin(), removedPieces.end());
+    std::sort(removed.begin(), removed.end());
+    std::sort(added.begin(), added.end());
     std::vector<std::pair<std::size_t, std::size_t>> before, after;
-    std::vector<std::uint32_t> hangsFrom(addedPieces.size());
-    if (!chainEnds(previous, removedPieces, before, nullptr) || !chainEnds(loops, addedPieces, after, &hangsFrom)) {
-      return false;
-    }
+    std::vector<std::size_t> hangsFrom(added.size());
+    const bool walked = chainEnds(removed, before, nullptr);
+    apply(changes, true);
+    if (!walked || !chainEnds(added, after, &hangsFrom)) return false;
     std::sort(before.begin(), before.end());
     std::sort(after.begin(), after.end());
     if (before != after) return false;
-    loops.loopOf.resize(loops.pieces.size());
-    for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
-      if (previousIndex[piece] >= 0) loops.loopOf[piece] = previous.loopOf[previousIndex[piece]];
+    for (std::size_t i = 0; i < added.size(); ++i) {
+      state_.loopOf[added[i]] = state_.loopOf[hangsFrom[i]];
+      addRun(graph_.parts_.runsOfPiece[added[i]], interval, state_.nodeOfLoop[state_.loopOf[added[i]]]);
     }
-    for (std::size_t i = 0; i < addedPieces.size(); ++i) {
-      loops.loopOf[addedPieces[i]] = previous.loopOf[previous.pieceAt(loops.pieceIndices[hangsFrom[i]]).value()];
-    }
-    loops.loopCount = previous.loopCount;
-    loops.nodeOfLoop = previous.nodeOfLoop;
-    loops.unboundedNode = previous.unboundedNode;
     return true;
   }
 
-  /// The chains the pieces (increasing) form, each as the pair of pieces (by
-  /// pieceIndex) it hangs between; false when one closes on itself or a neighbour
-  /// is unclear. With `hangsFrom`, for each of the pieces the index in `loops` of
-  /// the first piece its chain hangs from.
-  bool chainEnds(const IntervalLoops& loops, const std::vector<std::uint32_t>& pieces,
-                 std::vector<std::pair<std::size_t, std::size_t>>& ends, std::vector<std::uint32_t>* hangsFrom) const {
-    const auto position = [&](std::uint32_t piece) -> std::optional<std::size_t> {
+  /// Any other step (the state moved on already): every loop over the interval
+  /// joined again and the faces found from the previous interval's (assignFaces).
+  void advanceFromScratch(const SlabChanges& changes, std::uint32_t interval) {
+    apply(changes, false);
+    const IntervalLoops previous = snapshot(interval - 1);
+    apply(changes, true);
+    IntervalLoops current = loopsOver(interval);
+    for (std::uint32_t node : nodesOf(previous)) graph_.parts_.nodes[node].lastInterval = interval - 1;
+    assignFaces(&previous, current);
+    recordRuns(current);
+    keep(current);
+  }
+
+  /// The chains the live pieces (increasing) form, each as the pair of pieces it
+  /// hangs between; false when one closes on itself or a neighbour is unclear. With
+  /// `hangsFrom`, for each of the pieces the first piece its chain hangs from.
+  bool chainEnds(const std::vector<std::size_t>& pieces, std::vector<std::pair<std::size_t, std::size_t>>& ends,
+                 std::vector<std::size_t>* hangsFrom) const {
+    const auto position = [&](std::size_t piece) -> std::optional<std::size_t> {
       const auto found = std::lower_bound(pieces.begin(), pieces.end(), piece);
       if (found == pieces.end() || *found != piece) return std::nullopt;
       return static_cast<std::size_t>(found - pieces.begin());
@@ -411,12 +414,11 @@ class CellGraphSweep {
     std::vector<char> seen(pieces.size(), 0);
     for (std::size_t first = 0; first < pieces.size(); ++first) {
       if (seen[first]) continue;
-      std::vector<std::size_t> chain{first};
-      std::vector<std::uint32_t> outside;
+      std::vector<std::size_t> chain{first}, outside;
       seen[first] = 1;
       for (std::size_t at = 0; at < chain.size(); ++at) {
         for (const std::size_t end : {0, 1}) {
-          const std::optional<std::uint32_t> next = neighbour(loops, pieces[chain[at]], end);
+          const std::optional<std::size_t> next = neighbour(pieces[chain[at]], end);
           if (!next) return false;
           const std::optional<std::size_t> inChain = position(*next);
           if (!inChain) {
@@ -428,8 +430,7 @@ class CellGraphSweep {
         }
       }
       if (outside.size() != 2) return false;
-      const std::size_t a = loops.pieceIndices[outside[0]], b = loops.pieceIndices[outside[1]];
-      ends.push_back({std::min(a, b), std::max(a, b)});
+      ends.push_back({std::min(outside[0], outside[1]), std::max(outside[0], outside[1])});
       if (hangsFrom) {
         for (std::size_t at : chain) (*hangsFrom)[at] = outside[0];
       }
@@ -437,103 +438,20 @@ class CellGraphSweep {
     return true;
   }
 
-  /// The piece across a piece's low (0) or high (1) end: across a curve, or the one
-  /// glued to it around the spiral there; none when that is unclear.
-  std::optional<std::uint32_t> neighbour(const IntervalLoops& loops, std::uint32_t index, std::size_t end) const {
-    if (const std::optional<std::uint32_t> next = curveNeighbour(loops, index, end)) return next;
-    const Piece& piece = loops.pieces[index];
-    const std::vector<std::uint32_t> ending = endPiecesAt(loops, spiralOfEnd_[piece.patch][end]);
-    std::optional<std::uint32_t> found;
-    for (std::uint32_t other : ending) {
+  /// The live piece across a live piece's low (0) or high (1) end: across a curve, or
+  /// the one glued to it around the spiral there; none when that is unclear.
+  std::optional<std::size_t> neighbour(std::size_t index, std::size_t end) const {
+    if (const std::optional<std::size_t> next = curveNeighbour(state_, index, end)) return next;
+    const Piece& piece = state_.piece(index);
+    const std::vector<std::size_t> ending = endPiecesAt(state_, spiralOfEnd_[piece.patch][end]);
+    std::optional<std::size_t> found;
+    for (std::size_t other : ending) {
       if (other == index) continue;
-      if (ending.size() > 2 && !gluedAroundSpiral(faceOf(piece), faceOf(loops.pieces[other]))) continue;
+      if (ending.size() > 2 && !gluedAroundSpiral(faceOf(piece), faceOf(state_.piece(other)))) continue;
       if (found) return std::nullopt;
       found = other;
     }
     return found;
-  }
-
-  /// The pieces over the interval: the previous ones but those of removed slabs, and
-  /// those of added slabs, in order; returns the previous index of each (-1: added).
-  std::vector<std::int64_t> mergePieces(const IntervalLoops& previous, const SlabChanges& changes,
-                                        IntervalLoops& loops) const {
-    std::set_difference(previous.slabs.begin(), previous.slabs.end(), changes.removed.begin(), changes.removed.end(),
-                        std::back_inserter(loops.slabs));
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> kept;
-    kept.swap(loops.slabs);
-    std::merge(kept.begin(), kept.end(), changes.added.begin(), changes.added.end(), std::back_inserter(loops.slabs));
-    IntervalLoops added;
-    for (const auto& [patch, slab] : changes.added) appendFreePieces(added, patch, slab);
-    std::vector<std::int64_t> previousIndex;
-    std::size_t i = 0, j = 0;
-    const auto removed = [&](const Piece& piece) {
-      return std::binary_search(changes.removed.begin(), changes.removed.end(), std::pair(piece.patch, piece.slab));
-    };
-    while (i < previous.pieces.size() || j < added.pieces.size()) {
-      if (i < previous.pieces.size() && removed(previous.pieces[i])) {
-        ++i;
-      } else if (j == added.pieces.size() ||
-                 (i < previous.pieces.size() && previous.pieceIndices[i] < added.pieceIndices[j])) {
-        loops.pieces.push_back(previous.pieces[i]);
-        loops.pieceIndices.push_back(previous.pieceIndices[i]);
-        previousIndex.push_back(static_cast<std::int64_t>(i++));
-      } else {
-        loops.pieces.push_back(added.pieces[j]);
-        loops.pieceIndices.push_back(added.pieceIndices[j++]);
-        previousIndex.push_back(-1);
-      }
-    }
-    return previousIndex;
-  }
-
-  /// Numbers the loops the changed pieces form (reusing the numbers of the loops
-  /// they replace), keeps every other loop's number, and links old to new.
-  void numberChangedLoops(const IntervalLoops& previous, const std::vector<std::int64_t>& previousIndex,
-                          const std::vector<char>& changed, const std::vector<std::uint32_t>& subset,
-                          detail::DisjointSets& sets, Step& step) const {
-    IntervalLoops& loops = step.loops;
-    for (std::uint32_t loop = 0; loop < previous.loopCount; ++loop) {
-      if (changed[loop]) step.before.push_back(loop);
-    }
-    std::size_t reused = 0;
-    std::uint32_t next = previous.loopCount;
-    std::unordered_map<std::uint32_t, std::uint32_t> numberOfRoot;
-    loops.loopOf.resize(loops.pieces.size());
-    for (std::uint32_t piece = 0; piece < loops.pieces.size(); ++piece) {
-      if (previousIndex[piece] >= 0) loops.loopOf[piece] = previous.loopOf[previousIndex[piece]];
-    }
-    for (std::uint32_t piece : subset) {
-      auto found = numberOfRoot.find(sets.find(piece));
-      if (found == numberOfRoot.end()) {
-        const std::uint32_t number = reused < step.before.size() ? step.before[reused++] : next++;
-        found = numberOfRoot.emplace(sets.find(piece), number).first;
-        step.after.push_back(number);
-      }
-      loops.loopOf[piece] = found->second;
-      if (previousIndex[piece] >= 0) step.links.insert({previous.loopOf[previousIndex[piece]], found->second});
-    }
-    loops.loopCount = next;
-    for (const auto& [patch, slab] : loops.slabs) {
-      const std::optional<std::uint32_t> earlier = previous.slabOf(patch);
-      if (!earlier || *earlier == slab) continue;
-      for (const auto& [from, to] : piecesOfSubFaces(previous, loops, patch, slab)) {
-        step.links.insert({previous.loopOf[from], loops.loopOf[to]});
-      }
-    }
-  }
-
-  /// When the changed loops continue one to one, every face goes on with its node.
-  bool inheritFaces(const IntervalLoops& previous, Step& step) const {
-    if (step.before.size() != step.after.size() || step.links.size() != step.before.size()) return false;
-    std::set<std::uint32_t> from, to;
-    for (const auto& [before, after] : step.links) from.insert(before), to.insert(after);
-    if (from.size() != step.before.size() || to.size() != step.after.size()) return false;
-    IntervalLoops& loops = step.loops;
-    loops.nodeOfLoop = previous.nodeOfLoop;
-    loops.nodeOfLoop.resize(loops.loopCount);
-    for (const auto& [before, after] : step.links) loops.nodeOfLoop[after] = previous.nodeOfLoop[before];
-    loops.unboundedNode = previous.unboundedNode;
-    return true;
   }
 
   /// The nodes of the faces over an interval.
@@ -543,25 +461,16 @@ class CellGraphSweep {
     return nodes;
   }
 
-  /// The free pieces of a slab over an interval.
-  std::vector<std::uint32_t> piecesOfSlab(const IntervalLoops& loops, std::uint32_t patch, std::uint32_t slab) const {
-    std::vector<std::uint32_t> found;
-    const std::size_t gaps = arrangement_.subdivisions[patch].slabs[slab].faces.size();
-    for (std::uint32_t gap = 0; gap < gaps; ++gap) {
-      if (const auto piece = loops.pieceAt(graph_.pieceIndex(patch, slab, gap))) found.push_back(*piece);
-    }
-    return found;
-  }
-
-  /// The free pieces over an interval that end at a spiral.
-  std::vector<std::uint32_t> endPiecesAt(const IntervalLoops& loops, std::uint32_t spiral) const {
-    std::vector<std::uint32_t> found;
+  /// The free pieces that end at a spiral (an interval's loops or the live state).
+  template <class State>
+  std::vector<std::size_t> endPiecesAt(const State& state, std::uint32_t spiral) const {
+    std::vector<std::size_t> found;
     for (const auto& [patch, end] : patchesAtSpiral_[spiral]) {
-      const std::optional<std::uint32_t> slab = loops.slabOf(patch);
+      const std::optional<std::uint32_t> slab = state.slabOf(patch);
       if (!slab) continue;
       const std::size_t gaps = arrangement_.subdivisions[patch].slabs[*slab].faces.size();
       const std::uint32_t gap = end == 0 ? 0 : static_cast<std::uint32_t>(gaps - 1);
-      if (const auto piece = loops.pieceAt(graph_.pieceIndex(patch, *slab, gap))) found.push_back(*piece);
+      if (const auto piece = state.pieceAt(graph_.pieceIndex(patch, *slab, gap))) found.push_back(*piece);
     }
     return found;
   }
@@ -573,73 +482,59 @@ class CellGraphSweep {
   /// The piece a piece continues into across the curve at its low (0) or high (1)
   /// end: on the curve's other patch, the one side of the curve there that bounds
   /// free space (the other side lies inside this patch's obstacle). None at a spiral.
-  std::optional<std::uint32_t> curveNeighbour(const IntervalLoops& loops, std::uint32_t index, std::size_t end) const {
-    const Piece& piece = loops.pieces[index];
+  template <class State>
+  std::optional<std::size_t> curveNeighbour(const State& state, std::size_t id, std::size_t end) const {
+    const Piece& piece = state.piece(id);
     const PatchSlab& slab = slabOf(piece);
     const std::size_t at = piece.gap + end;
     if (at == 0 || at > slab.curves.size()) return std::nullopt;
     const std::uint32_t curve = slab.curves[at - 1];
     const std::uint32_t other = arrangement_.curves[curve].other(piece.patch);
-    const std::optional<std::uint32_t> otherSlab = loops.slabOf(other);
+    const std::optional<std::uint32_t> otherSlab = state.slabOf(other);
     if (!otherSlab) throw std::logic_error("CellGraph: a free piece's curve ends nowhere");
     const auto& curves = arrangement_.subdivisions[other].slabs[*otherSlab].curves;
     const std::size_t crossing = std::find(curves.begin(), curves.end(), curve) - curves.begin();
-    std::optional<std::uint32_t> next;
+    std::optional<std::size_t> next;
     for (const std::size_t gap : {crossing, crossing + 1}) {
-      const std::optional<std::uint32_t> found = loops.pieceAt(graph_.pieceIndex(other, *otherSlab, gap));
+      const auto found = state.pieceAt(graph_.pieceIndex(other, *otherSlab, gap));
       if (!found) continue;
       if (next) throw std::logic_error("CellGraph: both sides of a curve bound free space");
-      next = found;
+      next = *found;
     }
     if (!next) throw std::logic_error("CellGraph: a free piece continues into no free piece across a curve");
     return next;
   }
 
-  /// Joins the pieces of `subset` to their neighbours across curves; false when one
-  /// lies outside it.
-  bool joinAcrossCurves(const IntervalLoops& loops, const std::vector<std::uint32_t>& subset,
-                        const std::vector<char>& inSubset, detail::DisjointSets& sets) const {
-    for (std::uint32_t index : subset) {
+  void joinAcrossCurves(const IntervalLoops& loops, detail::DisjointSets& sets) const {
+    for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
       for (const std::size_t end : {0, 1}) {
-        const std::optional<std::uint32_t> next = curveNeighbour(loops, index, end);
-        if (!next) continue;
-        if (!inSubset[*next]) return false;
-        sets.unite(index, *next);
+        if (const auto next = curveNeighbour(loops, index, end)) sets.unite(index, static_cast<std::uint32_t>(*next));
       }
     }
-    return true;
   }
 
   /// Pieces ending at one spiral point are joined in pairs, by the gluing around
-  /// spirals when more than two end there; false when one of them lies outside
-  /// `subset`.
-  bool joinAroundSpirals(const IntervalLoops& loops, const std::vector<std::uint32_t>& subset,
-                         const std::vector<char>& inSubset, detail::DisjointSets& sets) const {
+  /// spirals when more than two end there.
+  void joinAroundSpirals(const IntervalLoops& loops, detail::DisjointSets& sets) const {
     std::vector<std::uint32_t> spirals;
-    for (std::uint32_t index : subset) {
-      const Piece& piece = loops.pieces[index];
+    for (const Piece& piece : loops.pieces) {
       if (piece.gap == 0) spirals.push_back(spiralOfEnd_[piece.patch][0]);
       if (piece.gap + 1 == slabOf(piece).faces.size()) spirals.push_back(spiralOfEnd_[piece.patch][1]);
     }
     std::sort(spirals.begin(), spirals.end());
     spirals.erase(std::unique(spirals.begin(), spirals.end()), spirals.end());
     for (std::uint32_t spiral : spirals) {
-      const std::vector<std::uint32_t> ending = endPiecesAt(loops, spiral);
-      if (std::any_of(ending.begin(), ending.end(), [&](std::uint32_t piece) { return !inSubset[piece]; })) return false;
+      const std::vector<std::size_t> ending = endPiecesAt(loops, spiral);
       if (ending.size() == 1) throw std::logic_error("CellGraph: a free piece ends alone at a spiral");
-      if (ending.size() == 2) {
-        sets.unite(ending[0], ending[1]);
-        continue;
-      }
       for (std::size_t i = 0; i < ending.size(); ++i) {
         for (std::size_t j = i + 1; j < ending.size(); ++j) {
-          if (gluedAroundSpiral(faceOf(loops.pieces[ending[i]]), faceOf(loops.pieces[ending[j]]))) {
-            sets.unite(ending[i], ending[j]);
+          if (ending.size() == 2 ||
+              gluedAroundSpiral(faceOf(loops.pieces[ending[i]]), faceOf(loops.pieces[ending[j]]))) {
+            sets.unite(static_cast<std::uint32_t>(ending[i]), static_cast<std::uint32_t>(ending[j]));
           }
         }
       }
     }
-    return true;
   }
 
   SubFaceId faceOf(const Piece& piece) const { return {piece.patch, slabOf(piece).faces[piece.gap]}; }
@@ -1004,20 +899,13 @@ class CellGraphSweep {
     }
   }
 
-  /// The node of each piece from this interval on, where it changes (only new
-  /// pieces can change when the faces went on with their nodes).
-  void recordRuns(const IntervalLoops& loops, const std::vector<std::uint32_t>& pieces) {
-    for (std::uint32_t index : pieces) {
+  /// The node of each piece from this interval on, where it changes.
+  void recordRuns(const IntervalLoops& loops) {
+    for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
       addRun(graph_.parts_.runsOfPiece[loops.pieceIndices[index]], loops.interval,
              loops.nodeOfLoop[loops.loopOf[index]]);
     }
     addRun(graph_.parts_.unboundedRuns, loops.interval, loops.unboundedNode);
-  }
-
-  void recordRuns(const IntervalLoops& loops) {
-    std::vector<std::uint32_t> all(loops.pieces.size());
-    std::iota(all.begin(), all.end(), 0);
-    recordRuns(loops, all);
   }
 
   static void addRun(std::vector<CellGraph::NodeRun>& runs, std::uint32_t interval, std::uint32_t node) {
@@ -1036,6 +924,9 @@ class CellGraphSweep {
   std::vector<std::vector<SubFaceGlue>> horizontalGluesAt_;
   std::set<std::pair<std::uint64_t, std::uint64_t>> spiralGlues_;
   std::vector<std::array<std::uint32_t, 2>> spiralOfEnd_;
+  std::vector<Piece> pieceOfIndex_;
+  std::map<std::uint32_t, std::uint32_t> active_;
+  LiveState state_;
   std::vector<std::vector<std::pair<std::uint32_t, int>>> patchesAtSpiral_;
 };
 
