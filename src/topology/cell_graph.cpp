@@ -838,33 +838,63 @@ class CellGraphSweep {
     return {lowest - (highest - lowest) - 1, 0.0};
   }
 
-  /// A point of the face a loop bounds: from the middle of one of its pieces, half
-  /// way along x to whatever lies next on the piece's free side.
+  /// A point of the face a loop bounds: from near the middle of one of its pieces
+  /// (placed in double intervals, else exactly), half way along x to whatever lies
+  /// next on the piece's free side, once a ray shows that the start sees that piece
+  /// first, from its free side.
   std::array<double, 2> pointOff(const IntervalLoops& loops, const std::vector<std::uint32_t>& members) const {
-    const auto [cosine, sine] = exactCosSin(loops.sample);
-    for (std::uint32_t index : members) {
-      const Piece& piece = loops.pieces[index];
-      const slices::ExactSegment segment = slices::segmentAt(arrangement_.patches[piece.patch], cosine, sine);
-      if (segment.nx == 0) continue;
-      const auto lambdas =
-          slices::pieceOf(arrangement_, piece.patch, slabOf(piece), piece.gap, segment, cosine, sine);
-      if (!lambdas) continue;
-      const Point middle = segment.at((lambdas->first + lambdas->second) / 2);
-      const int direction = segment.nx > 0 ? 1 : -1;
-      const Rational scale = 1 + abs(middle[0]) + abs(middle[1]);
-      for (Rational step = scale * powerOfHalf(20); step > scale * powerOfHalf(120); step /= 1024) {
-        const Point off{middle[0] + direction * step, middle[1]};
-        const RayHit back = rays_.castTo(loops.sample, off, middle);
-        if (back.kind != RayHit::Kind::SubFace || !back.fromPositiveSide || back.face.patch != piece.patch ||
-            back.slab != piece.slab || back.gap != piece.gap) {
-          continue;
-        }
-        const RayHit ahead = rays_.cast(loops.sample, off, direction);
-        const Rational room = ahead.kind == RayHit::Kind::Nothing ? scale : Rational(ahead.along) / 2;
-        return {(off[0] + direction * room).convert_to<double>(), off[1].convert_to<double>()};
+    for (const bool exact : {false, true}) {
+      for (std::uint32_t index : members) {
+        const Piece& piece = loops.pieces[index];
+        const auto near = exact ? exactMiddle(loops.sample, piece) : nearMiddle(loops.sample, piece);
+        if (!near) continue;
+        if (const auto point = pointBeside(loops.sample, piece, near->first, near->second)) return *point;
       }
     }
     throw std::runtime_error("CellGraph: no point could be placed inside a face");
+  }
+
+  std::optional<std::array<double, 2>> pointBeside(const AlgebraicAngle& angle, const Piece& piece,
+                                                   const Point& middle, int direction) const {
+    const Rational scale = 1 + abs(middle[0]) + abs(middle[1]);
+    for (Rational step = scale * powerOfHalf(20); step > scale * powerOfHalf(120); step /= 1024) {
+      const Point off{middle[0] + direction * step, middle[1]};
+      const Point beyond{middle[0] - direction * step, middle[1]};
+      const RayHit back = rays_.castTo(angle, off, beyond);
+      if (back.kind != RayHit::Kind::SubFace || !back.fromPositiveSide || back.face.patch != piece.patch ||
+          back.slab != piece.slab || back.gap != piece.gap) {
+        continue;
+      }
+      const RayHit ahead = rays_.cast(angle, off, direction);
+      const Rational room = ahead.kind == RayHit::Kind::Nothing ? scale : Rational(ahead.along) / 2;
+      return std::array<double, 2>{(off[0] + direction * room).convert_to<double>(), off[1].convert_to<double>()};
+    }
+    return std::nullopt;
+  }
+
+  /// The middle of a piece at a rational angle, exactly, and the direction along x
+  /// toward its free side; none for a piece along x.
+  std::optional<std::pair<Point, int>> exactMiddle(const AlgebraicAngle& angle, const Piece& piece) const {
+    const auto [cosine, sine] = exactCosSin(angle);
+    const slices::ExactSegment segment = slices::segmentAt(arrangement_.patches[piece.patch], cosine, sine);
+    const auto lambdas = slices::pieceOf(arrangement_, piece.patch, slabOf(piece), piece.gap, segment, cosine, sine);
+    if (segment.nx == 0 || !lambdas) return std::nullopt;
+    return std::pair(segment.at((lambdas->first + lambdas->second) / 2), segment.nx > 0 ? 1 : -1);
+  }
+
+  /// A point near the middle of a piece at a rational angle, and the direction along
+  /// x toward its free side; none when the doubles cannot tell.
+  std::optional<std::pair<Point, int>> nearMiddle(const AlgebraicAngle& angle, const Piece& piece) const {
+    const RoundingScope rounding;
+    const slices::IntervalSlice slice(angle);
+    const PatchGeometry& patch = arrangement_.patches[piece.patch];
+    const std::optional<Sign> side = certainSign(slice.line(patch).nx);
+    const auto lambdas = slice.pieceOf(arrangement_, piece.patch, slabOf(piece), piece.gap);
+    if (!side || *side == Sign::Zero || !lambdas) return std::nullopt;
+    const Interval middle = (lambdas->first + lambdas->second) / Interval(2);
+    const std::array<Interval, 2> end0 = slice.end(patch, 0), end1 = slice.end(patch, 1);
+    const Interval x = end0[0] + middle * (end1[0] - end0[0]), y = end0[1] + middle * (end1[1] - end0[1]);
+    return std::pair(Point{Rational(x.midpoint()), Rational(y.midpoint())}, *side == Sign::Positive ? 1 : -1);
   }
 
   std::array<double, 4> boxOf(const IntervalLoops& loops, const std::vector<std::uint32_t>& members) const {
