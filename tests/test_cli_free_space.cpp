@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -176,6 +177,11 @@ TEST(CliFreeSpace, SliceDrawsTheCellsAndNeverOverwrites) {
                             ">boundary of cell 1<", ">the robot at the point given<"}) {
     EXPECT_NE(picture.find(entry), std::string::npos) << entry;
   }
+  // Each face is labelled with its node: the cage's inside and outside at this angle.
+  EXPECT_NE(picture.find(">node N: a face of the cell graph's node N<"), std::string::npos);
+  std::size_t labels = 0;
+  for (std::size_t at = picture.find(">node "); at != std::string::npos; at = picture.find(">node ", at + 1)) ++labels;
+  EXPECT_EQ(labels, 3u);  // and the legend's
   // The caged robot's cell and the outside both have boundary pieces drawn.
   EXPECT_NE(picture.find("stroke=\"#1f77b4\""), std::string::npos);
   EXPECT_NE(picture.find("stroke=\"#ff7f0e\""), std::string::npos);
@@ -184,6 +190,26 @@ TEST(CliFreeSpace, SliceDrawsTheCellsAndNeverOverwrites) {
   EXPECT_EQ(second.status, 2);
   EXPECT_EQ(second.err, "error: " + svg + ": already exists (not overwritten)\n");
   EXPECT_EQ(readWholeFile(svg), picture);
+}
+
+// The keyhole at theta 0 has three faces (outside, and the bar lying along the wall on
+// either side of it: the slot lets it through only end first); at a quarter turn the
+// two sides are one face.
+TEST(CliFreeSpace, SliceLabelsEveryFaceWithItsNode) {
+  TempDir dir;
+  for (const auto& [theta, faces] : {std::pair<std::string, std::size_t>{"0", 3}, {"1.5707963", 2}}) {
+    const std::string svg = dir.file("keyhole" + theta + ".svg");
+    const CommandResult result =
+        runFreespace("slice --cfg '" + kProblems + "keyhole.cfg' --theta " + theta + " --resolution 60 --svg '" + svg + "'");
+    ASSERT_EQ(result.status, 0) << result.err;
+    const std::string picture = readWholeFile(svg);
+    std::set<std::string> labels;
+    for (std::size_t at = picture.find(">node "); at != std::string::npos; at = picture.find(">node ", at + 1)) {
+      labels.insert(picture.substr(at, picture.find('<', at) - at));
+    }
+    labels.erase(">node N: a face of the cell graph's node N");
+    EXPECT_EQ(labels.size(), faces) << theta;
+  }
 }
 
 TEST(CliFreeSpace, BuildRejectsEveryMalformedMeshNamingTheFile) {

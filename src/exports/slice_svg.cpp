@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <map>
 #include <set>
 #include <sstream>
 #include <vector>
@@ -42,9 +44,16 @@ View viewOf(const FreeSpace& space, int resolution) {
   return view;
 }
 
-/// The pixels, run by run along each row; returns the free cells met.
-std::set<std::uint32_t> writePixels(const FreeSpace& space, const View& view, double theta, std::ostream& out) {
+/// What the pixels met: the free cells, and for each node of the cell graph the
+/// centres of its pixels.
+struct PixelsMet {
   std::set<std::uint32_t> cells;
+  std::map<std::uint32_t, std::vector<std::array<double, 2>>> nodes;
+};
+
+/// The pixels, run by run along each row.
+PixelsMet writePixels(const FreeSpace& space, const View& view, double theta, std::ostream& out) {
+  PixelsMet met;
   const double pixelWidth = view.width / view.columns, pixelHeight = view.height / view.rows;
   out << "<g shape-rendering=\"crispEdges\">\n";
   for (int row = 0; row < view.rows; ++row) {
@@ -54,9 +63,13 @@ std::set<std::uint32_t> writePixels(const FreeSpace& space, const View& view, do
     for (int column = 0; column <= view.columns; ++column) {
       std::string colour;
       if (column < view.columns) {
-        const Location location = space.locate({view.left + (column + 0.5) * pixelWidth, y, theta});
+        const Pose2 pose{view.left + (column + 0.5) * pixelWidth, y, theta};
+        const Location location = space.locate(pose);
         colour = location.free ? cellColour(location.cell, false) : kBlocked;
-        if (location.free) cells.insert(location.cell);
+        if (location.free) met.cells.insert(location.cell);
+        if (const std::optional<std::uint32_t> node = location.free ? space.nodeOf(pose) : std::nullopt) {
+          met.nodes[*node].push_back({pose.x, pose.y});
+        }
       }
       if (colour == runColour) continue;
       if (!runColour.empty()) {
@@ -69,7 +82,26 @@ std::set<std::uint32_t> writePixels(const FreeSpace& space, const View& view, do
     }
   }
   out << "</g>\n";
-  return cells;
+  return met;
+}
+
+/// Each node's label at the pixel of its face nearest the face's centre of pixels,
+/// in picture coordinates (`toPicture`).
+void writeNodeLabels(const PixelsMet& met,
+                     const std::function<std::array<double, 2>(const std::array<double, 2>&)>& toPicture,
+                     std::ostream& out) {
+  out << "<g font-family=\"sans-serif\" font-size=\"11\" text-anchor=\"middle\" stroke=\"#ffffff\" "
+         "stroke-width=\"3\" paint-order=\"stroke\">\n";
+  for (const auto& [node, pixels] : met.nodes) {
+    std::array<double, 2> centre{0, 0};
+    for (const auto& p : pixels) centre = {centre[0] + p[0] / pixels.size(), centre[1] + p[1] / pixels.size()};
+    const auto nearest = std::min_element(pixels.begin(), pixels.end(), [&](const auto& a, const auto& b) {
+      return std::hypot(a[0] - centre[0], a[1] - centre[1]) < std::hypot(b[0] - centre[0], b[1] - centre[1]);
+    });
+    const std::array<double, 2> at = toPicture(*nearest);
+    out << "<text x=\"" << at[0] << "\" y=\"" << at[1] << "\">node " << node << "</text>\n";
+  }
+  out << "</g>\n";
 }
 
 /// The pieces of segment of every sub-face active at the angle.
@@ -182,6 +214,8 @@ void writeLegend(const Frame& frame, const std::set<std::uint32_t>& cells, bool 
   }
   for (std::uint32_t cell : cells) line(cellColour(cell, true), 3, "boundary of cell " + std::to_string(cell));
   line(kOtherPiece, 1, "other contact pieces");
+  out << "<text x=\"" << x << "\" y=\"" << y << "\">node N: a face of the cell graph's node N</text>\n";
+  y += 20;
   if (robot) swatch(kRobotFill, "the robot at the point given", kRobotOpacity);
   out << "</g>\n";
 }
@@ -207,12 +241,16 @@ void writeSliceSvg(const FreeSpace& space, const SliceSvgOptions& options, std::
       // The plot in the input's (x, y), y up.
       << "<g transform=\"translate(" << frame.left << "," << frame.top + frame.plotHeight << ") scale(" << perUnit << ","
       << -perUnit << ") translate(" << -view.left << "," << -view.bottom << ")\">\n";
-  const std::set<std::uint32_t> cells = writePixels(space, view, options.theta, out);
+  const PixelsMet met = writePixels(space, view, options.theta, out);
   writePieces(space, options.theta, pixel / 3, out);
   if (options.robotAt) writeRobot(space, *options.robotAt, options.theta, out);
   out << "</g>\n";
+  writeNodeLabels(met, [&](const std::array<double, 2>& p) {
+    return std::array<double, 2>{frame.left + (p[0] - view.left) * perUnit,
+                                 frame.top + frame.plotHeight - (p[1] - view.bottom) * perUnit};
+  }, out);
   writeAxes(view, frame, out);
-  writeLegend(frame, cells, options.robotAt.has_value(), out);
+  writeLegend(frame, met.cells, options.robotAt.has_value(), out);
   out << "</svg>\n";
 }
 

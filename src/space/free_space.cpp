@@ -55,7 +55,8 @@ void requireMemoryFor(std::size_t candidates, const FreeSpaceOptions& options) {
 
 }  // namespace
 
-FreeSpace::Impl::Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options) {
+FreeSpace::Impl::Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options)
+    : progress(options.progress), cancellation(options.cancellation) {
   StageClock clock(options.progress, options.cancellation);
   meshes = clock.run("perturb", [&] {
     PerturbedMeshes perturbed = perturbMeshes(robot, world, options.perturbation);
@@ -116,8 +117,10 @@ Location FreeSpace::locate(const Pose2& pose) const {
 
 const CellGraph& FreeSpace::cellGraph() const {
   if (!impl_->graph) {
+    if (impl_->progress) impl_->progress("cell graph");
     impl_->graph = std::make_unique<CellGraph>(
-        impl_->arrangement, *impl_->rays, [this](SubFaceId face) { return cellOfSubFace(face); }, impl_->algebra);
+        impl_->arrangement, *impl_->rays, [this](SubFaceId face) { return cellOfSubFace(face); }, impl_->algebra,
+        impl_->cancellation);
   }
   return *impl_->graph;
 }

@@ -24,8 +24,11 @@ struct FreeSpace::Impl {
   std::unique_ptr<ExactCollisionChecker> collision;
   std::vector<ShellSide> sides;
   std::unique_ptr<FreeCells> cells;
-  /// Built on first use (FreeSpace::cellGraph).
+  /// Built on first use (FreeSpace::cellGraph), announced to `progress` and
+  /// stopped by `cancellation` (those the construction was given).
   std::unique_ptr<CellGraph> graph;
+  std::function<void(const std::string& stage)> progress;
+  Cancellation cancellation;
 
   /// Builds everything from the meshes.
   Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options);

@@ -19,8 +19,9 @@ struct SliceSvgOptions {
 /// The slice of the free space at one angle as SVG, in (x, y) with y up: every
 /// pixel located (blocked dark grey, free tinted by cell), the sub-faces' pieces of
 /// segment on top (those that bound a free cell in the cell's colour, the others
-/// thin grey), and the robot's outline at a point; with a title (the angle and the
-/// number of free cells), axes ticked in the meshes' units, and a legend.
+/// thin grey), each face labelled with its node of the cell graph, and the robot's
+/// outline at a point; with a title (the angle and the number of free cells), axes
+/// ticked in the meshes' units, and a legend.
 void writeSliceSvg(const FreeSpace& space, const SliceSvgOptions& options, std::ostream& out);
 
 }  // namespace freespace

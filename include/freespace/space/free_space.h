@@ -100,8 +100,9 @@ class FreeSpace {
   /// about 1e-13 relative (exact arithmetic where double intervals are wider).
   Clearance clearance(const Pose2& pose) const;
 
-  /// The free cell graph (docs/design.md section 7), built on first use, in the
-  /// construction's coordinates (as arrangement()).
+  /// The free cell graph (docs/design.md section 7), built on first use (announced
+  /// and cancellable as the construction was), in the construction's coordinates
+  /// (as arrangement()).
   const CellGraph& cellGraph() const;
   /// The node of the cell graph whose face holds a configuration; none when it is
   /// blocked.
