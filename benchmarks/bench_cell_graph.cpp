@@ -15,18 +15,14 @@ using namespace freespace;
 
 namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 void measure(const std::string& cfg) {
   const LoadedProblem loaded = loadProblem(cfg);
   auto start = std::chrono::steady_clock::now();
   const FreeSpace space(loaded.robot, loaded.world);
-  const double build = secondsSince(start);
+  const double build = benchmarks::secondsSince(start);
   start = std::chrono::steady_clock::now();
   const CellGraph& graph = space.cellGraph();
-  const double graphSeconds = secondsSince(start);
+  const double graphSeconds = benchmarks::secondsSince(start);
   std::cout << "| " << std::filesystem::path(cfg).stem().string() << " | " << space.cellCount() << " | "
             << graph.criticalAngles().size() << " | " << graph.nodes().size() << " | " << graph.edges().size() << " | "
             << build << " | " << graphSeconds << " | " << graphSeconds / build << " |" << std::endl;

@@ -22,15 +22,11 @@ using namespace freespace;
 
 namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 void measure(const std::string& cfg, int samples) {
   const LoadedProblem loaded = loadProblem(cfg);
   auto start = std::chrono::steady_clock::now();
   const FreeSpace space(loaded.robot, loaded.world);
-  const double buildSeconds = secondsSince(start);
+  const double buildSeconds = benchmarks::secondsSince(start);
   const ExactCollisionChecker collision(space.meshes().robot, space.meshes().world);
   const Box3 world = space.meshes().world.bounds();
   const double reach = space.meshes().robot.bounds().sizes().head<2>().norm();
@@ -46,7 +42,7 @@ void measure(const std::string& cfg, int samples) {
   // Drawn in the construction's coordinates, where the exact test runs; located in the input's.
   const double scale = space.meshes().scale;
   for (const Pose2& pose : poses) locations.push_back(space.locate({pose.x / scale, pose.y / scale, pose.theta}));
-  const double locateSeconds = secondsSince(start);
+  const double locateSeconds = benchmarks::secondsSince(start);
   int disagreements = 0, free = 0;
   std::set<std::uint32_t> cellsMet;
   start = std::chrono::steady_clock::now();
@@ -58,7 +54,7 @@ void measure(const std::string& cfg, int samples) {
       cellsMet.insert(locations[i].cell);
     }
   }
-  const double collisionSeconds = secondsSince(start);
+  const double collisionSeconds = benchmarks::secondsSince(start);
   std::cout << std::filesystem::path(cfg).stem().string() << ": robot " << space.meshes().robot.triangles().size()
             << " triangles, world " << space.meshes().world.triangles().size() << " triangles; build "
             << buildSeconds << " s (";

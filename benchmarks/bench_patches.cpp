@@ -23,43 +23,39 @@ using namespace freespace;
 
 namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 void measure(const std::string& cfg) {
   const LoadedProblem loaded = loadProblem(cfg);
   auto start = std::chrono::steady_clock::now();
   const PerturbedMeshes meshes = perturbMeshes(loaded.robot, loaded.world, PerturbationSettings{});
-  const double perturbSeconds = secondsSince(start);
+  const double perturbSeconds = benchmarks::secondsSince(start);
   PredicateStatistics statistics;
   start = std::chrono::steady_clock::now();
   const MeshTopology robotTopology(meshes.robot, statistics), worldTopology(meshes.world, statistics);
-  const double topologySeconds = secondsSince(start);
+  const double topologySeconds = benchmarks::secondsSince(start);
   AngleAlgebra algebra(statistics);
   start = std::chrono::steady_clock::now();
   const auto vertexFacet = vertexFacetPatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
-  const double vertexFacetSeconds = secondsSince(start);
+  const double vertexFacetSeconds = benchmarks::secondsSince(start);
   start = std::chrono::steady_clock::now();
   const auto edgeEdge = edgeEdgePatches(meshes.robot, robotTopology, meshes.world, worldTopology, algebra);
-  const double edgeEdgeSeconds = secondsSince(start);
+  const double edgeEdgeSeconds = benchmarks::secondsSince(start);
   std::vector<Patch> patches = vertexFacet;
   patches.insert(patches.end(), edgeEdge.begin(), edgeEdge.end());
   start = std::chrono::steady_clock::now();
   const auto geometries = patchGeometries(patches, meshes.robot, robotTopology, meshes.world, worldTopology, statistics);
-  const double segmentSeconds = secondsSince(start);
+  const double segmentSeconds = benchmarks::secondsSince(start);
   start = std::chrono::steady_clock::now();
   const auto pairs = candidatePatchPairs(geometries);
-  const double pairSeconds = secondsSince(start);
+  const double pairSeconds = benchmarks::secondsSince(start);
   start = std::chrono::steady_clock::now();
   const auto curves = patchCurves(geometries, algebra);
-  const double curveSeconds = secondsSince(start);
+  const double curveSeconds = benchmarks::secondsSince(start);
   start = std::chrono::steady_clock::now();
   const auto overlaps = patchOverlaps(geometries, algebra);
-  const double overlapSeconds = secondsSince(start);
+  const double overlapSeconds = benchmarks::secondsSince(start);
   start = std::chrono::steady_clock::now();
   const auto vertices = patchVertices(geometries, curves, overlaps, algebra);
-  const double vertexSeconds = secondsSince(start);
+  const double vertexSeconds = benchmarks::secondsSince(start);
   start = std::chrono::steady_clock::now();
   std::size_t slabs = 0, subFaces = 0, curveGlues = 0, spiralGlues = 0, horizontalGlues = 0, unmatched = 0;
   std::size_t shellCount = 0, closedShells = 0;
@@ -72,16 +68,16 @@ void measure(const std::string& cfg) {
       slabs += subdivision.slabs.size();
       subFaces += subdivision.faceCount;
     }
-    subdivisionSeconds = secondsSince(start);
+    subdivisionSeconds = benchmarks::secondsSince(start);
     start = std::chrono::steady_clock::now();
     const SubFaceGluing acrossCurves = glueAcrossCurves(geometries, curves, subdivisions, algebra);
-    curveGluingSeconds = secondsSince(start);
+    curveGluingSeconds = benchmarks::secondsSince(start);
     start = std::chrono::steady_clock::now();
     const SubFaceGluing aroundSpirals = glueAroundSpirals(geometries, subdivisions, algebra);
-    spiralGluingSeconds = secondsSince(start);
+    spiralGluingSeconds = benchmarks::secondsSince(start);
     start = std::chrono::steady_clock::now();
     const SubFaceGluing acrossEdges = glueAcrossHorizontalEdges(geometries, curves, overlaps, subdivisions, algebra);
-    edgeGluingSeconds = secondsSince(start);
+    edgeGluingSeconds = benchmarks::secondsSince(start);
     gluingSeconds = curveGluingSeconds + spiralGluingSeconds + edgeGluingSeconds;
     curveGlues = acrossCurves.glues.size();
     spiralGlues = aroundSpirals.glues.size();

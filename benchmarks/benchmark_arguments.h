@@ -5,6 +5,7 @@
 // before the long runs start where it can be checked then.
 
 #include <algorithm>
+#include <chrono>
 #include <exception>
 #include <filesystem>
 #include <iostream>
@@ -13,6 +14,11 @@
 #include <vector>
 
 namespace freespace::benchmarks {
+
+/// Seconds of wall-clock time since `start`.
+inline double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 /// Runs `body` (which returns the exit status), reporting any exception as
 /// "program: error: what" with status 1.
