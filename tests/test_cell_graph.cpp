@@ -4,15 +4,15 @@
 
 #include <chrono>
 #include <cmath>
-#include <random>
 #include <iostream>
+#include <random>
 #include <string>
 #include <tuple>
 
-#include "geometry/disjoint_sets.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/scenes/scene_generator.h"
 #include "freespace/space/free_space.h"
+#include "geometry/disjoint_sets.h"
 #include "random_configurations.h"
 #include "temp_dir.h"
 
@@ -58,7 +58,8 @@ TEST_P(BundledCellGraph, StartAndGoalNodesAreJoinedExactlyWhenSolvable) {
   const LoadedProblem loaded = problem();
   const FreeSpace space(loaded.robot, loaded.world);
   const CellGraph& graph = space.cellGraph();
-  const std::optional<std::uint32_t> start = space.nodeOf(loaded.problem.start), goal = space.nodeOf(loaded.problem.goal);
+  const std::optional<std::uint32_t> start = space.nodeOf(loaded.problem.start),
+                                     goal = space.nodeOf(loaded.problem.goal);
   ASSERT_TRUE(start && goal);
   std::vector<std::vector<std::uint32_t>> next(graph.nodes().size());
   for (const CellGraphEdge& edge : graph.edges()) {
@@ -151,9 +152,9 @@ TEST_P(BundledCellGraph, ConfigurationsFindTheirNodes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledCellGraph,
-                         ::testing::Values("keyhole", "keyhole_narrow", "keyhole_wide", "keyhole_tight", "flip_window", "cage", "maze", "overhang", "table",
-                                           "table_tall", "turn_around", "room_door", "random_polyhedra",
-                                           "tetra_floorplan"));
+                         ::testing::Values("keyhole", "keyhole_narrow", "keyhole_wide", "keyhole_tight", "flip_window",
+                                           "cage", "maze", "overhang", "table", "table_tall", "turn_around",
+                                           "room_door", "random_polyhedra", "tetra_floorplan"));
 
 /// A saved free space holds its graph: read back, it has the same nodes and edges,
 /// and configurations find the same nodes.

@@ -200,7 +200,8 @@ TEST(CliFreeSpace, SliceLabelsEveryFaceWithItsNode) {
   for (const auto& [theta, faces] : {std::pair<std::string, std::size_t>{"0", 3}, {"1.5707963", 2}}) {
     const std::string svg = dir.file("keyhole" + theta + ".svg");
     const CommandResult result =
-        runFreespace("slice --cfg '" + kProblems + "keyhole.cfg' --theta " + theta + " --resolution 60 --svg '" + svg + "'");
+        runFreespace("slice --cfg '" + kProblems + "keyhole.cfg' --theta " + theta + " --resolution 60 --svg '" + svg +
+                     "'");
     ASSERT_EQ(result.status, 0) << result.err;
     const std::string picture = readWholeFile(svg);
     std::set<std::string> labels;

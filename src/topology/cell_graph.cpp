@@ -11,12 +11,16 @@
 #include <unordered_set>
 
 #include "../geometry/disjoint_sets.h"
+#include "face_placement.h"
+#include "slice_loops.h"
 #include "slice_nesting.h"
 
 namespace freespace {
 
 namespace {
 
+using cellgraph::IntervalLoops;
+using cellgraph::Piece;
 using slices::Point;
 
 std::uint64_t codeOf(SubFaceId face) { return (std::uint64_t(face.patch) << 32) | face.face; }
@@ -29,42 +33,6 @@ struct SpiralHash {
             (hash << 6) + (hash >> 2);
     return hash;
   }
-};
-
-/// A free piece of the slices' boundary over an interval: a gap of a slab.
-struct Piece {
-  std::uint32_t patch;
-  std::uint32_t slab;
-  std::uint32_t gap;
-};
-
-/// The boundary of the free slices over one interval: its pieces, the loops they
-/// form, and (once known) the node of each loop's face.
-struct IntervalLoops {
-  std::uint32_t interval = 0;
-  AlgebraicAngle sample = AlgebraicAngle::rational(0, 0.0);
-  std::vector<Piece> pieces;
-  std::vector<std::uint32_t> loopOf;
-  std::uint32_t loopCount = 0;
-  /// (patch, slab) for each patch with free pieces here, by patch.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> slabs;
-  /// CellGraph::pieceIndex of each piece, increasing.
-  std::vector<std::size_t> pieceIndices;
-
-  std::optional<std::uint32_t> slabOf(std::uint32_t patch) const {
-    const auto found = std::lower_bound(slabs.begin(), slabs.end(), std::pair(patch, std::uint32_t{0}));
-    if (found == slabs.end() || found->first != patch) return std::nullopt;
-    return found->second;
-  }
-  /// The piece with a CellGraph::pieceIndex, if it is one here.
-  std::optional<std::uint32_t> pieceAt(std::size_t index) const {
-    const auto found = std::lower_bound(pieceIndices.begin(), pieceIndices.end(), index);
-    if (found == pieceIndices.end() || *found != index) return std::nullopt;
-    return static_cast<std::uint32_t>(found - pieceIndices.begin());
-  }
-  const Piece& piece(std::size_t id) const { return pieces[id]; }
-  std::vector<std::uint32_t> nodeOfLoop;
-  std::uint32_t unboundedNode = 0;
 };
 
 /// The boundary of the free slices as the sweep goes, kept from interval to interval:
@@ -99,7 +67,12 @@ class CellGraphSweep {
  public:
   CellGraphSweep(CellGraph& graph, const Arrangement& arrangement, const SliceRays& rays,
                  const CellGraph::CellOfFace& cellOf, AngleAlgebra& algebra)
-      : graph_(graph), arrangement_(arrangement), rays_(rays), cellOf_(cellOf), algebra_(algebra) {
+      : graph_(graph),
+        arrangement_(arrangement),
+        rays_(rays),
+        cellOf_(cellOf),
+        algebra_(algebra),
+        placement_(arrangement, rays) {
     numberPieces();
     findCriticalAngles();
     indexHorizontalGlues();
@@ -192,11 +165,10 @@ class CellGraphSweep {
     });
     std::sort(angles.begin(), angles.end(),
               [&](const AlgebraicAngle& a, const AlgebraicAngle& b) { return algebra_.compare(a, b) < 0; });
-    angles.erase(std::unique(angles.begin(), angles.end(),
-                             [&](const AlgebraicAngle& a, const AlgebraicAngle& b) {
-                               return algebra_.compare(a, b) == 0;
-                             }),
-                 angles.end());
+    angles.erase(
+        std::unique(angles.begin(), angles.end(),
+                    [&](const AlgebraicAngle& a, const AlgebraicAngle& b) { return algebra_.compare(a, b) == 0; }),
+        angles.end());
     samples_.clear();
     const std::size_t count = angles.size();
     for (std::size_t i = 0; i < graph_.intervalCount(); ++i) {
@@ -223,9 +195,8 @@ class CellGraphSweep {
   /// The index of a critical angle (which `angle` must be).
   std::uint32_t criticalIndex(const AlgebraicAngle& angle) {
     const std::vector<AlgebraicAngle>& angles = graph_.parts_.criticalAngles;
-    const auto found = std::lower_bound(angles.begin(), angles.end(), angle, [&](const auto& a, const auto& b) {
-      return algebra_.compare(a, b) < 0;
-    });
+    const auto found = std::lower_bound(angles.begin(), angles.end(), angle,
+                                        [&](const auto& a, const auto& b) { return algebra_.compare(a, b) < 0; });
     if (found == angles.end() || algebra_.compare(*found, angle) != 0) {
       throw std::logic_error("CellGraph: a slab's end is not a critical angle");
     }
@@ -475,9 +446,7 @@ class CellGraphSweep {
     return found;
   }
 
-  const PatchSlab& slabOf(const Piece& piece) const {
-    return arrangement_.subdivisions[piece.patch].slabs[piece.slab];
-  }
+  const PatchSlab& slabOf(const Piece& piece) const { return arrangement_.subdivisions[piece.patch].slabs[piece.slab]; }
 
   /// The piece a piece continues into across the curve at its low (0) or high (1)
   /// end: on the curve's other patch, the one side of the curve there that bounds
@@ -594,8 +563,8 @@ class CellGraphSweep {
   /// intervals: the pieces of each sub-face, in their order along the segment
   /// (every pair when the sub-face has more pieces on one side).
   std::vector<std::pair<std::uint32_t, std::uint32_t>> piecesOfSubFaces(const IntervalLoops& before,
-                                                                       const IntervalLoops& after, std::uint32_t patch,
-                                                                       std::uint32_t slabAfter) const {
+                                                                        const IntervalLoops& after, std::uint32_t patch,
+                                                                        std::uint32_t slabAfter) const {
     std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
     const auto& faces = arrangement_.subdivisions[patch].slabs[slabAfter].faces;
     for (std::uint32_t gap = 0; gap < faces.size(); ++gap) {
@@ -752,7 +721,8 @@ class CellGraphSweep {
         graph_.parts_.nodes[node].lastInterval = current.interval;
       } else {
         node = static_cast<std::uint32_t>(graph_.parts_.nodes.size());
-        graph_.parts_.nodes.push_back(newNode(current, face.loops, members, nesting.outer, face.previousNodes, unbounded));
+        graph_.parts_.nodes.push_back(
+            newNode(current, face.loops, members, nesting.outer, face.previousNodes, unbounded));
         for (std::uint32_t from : face.previousNodes) graph_.parts_.edges.push_back({from, node, current.interval});
       }
       for (std::uint32_t loop : face.loops) current.nodeOfLoop[loop] = node;
@@ -807,15 +777,15 @@ class CellGraphSweep {
     node.box = {-HUGE_VAL, -HUGE_VAL, HUGE_VAL, HUGE_VAL};
     if (unbounded) {
       node.cell = 0;
-      node.point = farPoint();
+      node.point = placement_.farPoint();
       return node;
     }
     const Piece& piece = loops.pieces[members[faceLoops.front()].front()];
     node.cell = cellOfPiece_[graph_.pieceIndex(piece.patch, piece.slab, piece.gap)];
-    node.point = pointOff(loops, members[faceLoops.front()]);
+    node.point = placement_.pointOff(loops, members[faceLoops.front()]);
     const auto outer = std::find_if(faceLoops.begin(), faceLoops.end(), [&](std::uint32_t l) { return outerLoops[l]; });
     if (outer != faceLoops.end()) {
-      node.box = boxOf(loops, members[*outer]);
+      node.box = placement_.boxOf(loops, members[*outer]);
     } else {
       // The outer loop continues from one of the previous faces: their boxes hold it.
       node.box = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
@@ -826,96 +796,6 @@ class CellGraphSweep {
       }
     }
     return node;
-  }
-
-  /// A point left of every patch: in the unbounded face of every slice.
-  std::array<double, 2> farPoint() const {
-    double lowest = 0, highest = 0;
-    for (const auto& [box, patch] : arrangement_.boxIndex->boxes()) {
-      lowest = std::min({lowest, box.low[0], box.low[1]});
-      highest = std::max({highest, box.high[0], box.high[1]});
-    }
-    return {lowest - (highest - lowest) - 1, 0.0};
-  }
-
-  /// A point of the face a loop bounds: from near the middle of one of its pieces
-  /// (placed in double intervals, else exactly), half way along x to whatever lies
-  /// next on the piece's free side, once a ray shows that the start sees that piece
-  /// first, from its free side.
-  std::array<double, 2> pointOff(const IntervalLoops& loops, const std::vector<std::uint32_t>& members) const {
-    for (const bool exact : {false, true}) {
-      for (std::uint32_t index : members) {
-        const Piece& piece = loops.pieces[index];
-        const auto near = exact ? exactMiddle(loops.sample, piece) : nearMiddle(loops.sample, piece);
-        if (!near) continue;
-        if (const auto point = pointBeside(loops.sample, piece, near->first, near->second)) return *point;
-      }
-    }
-    throw std::runtime_error("CellGraph: no point could be placed inside a face");
-  }
-
-  std::optional<std::array<double, 2>> pointBeside(const AlgebraicAngle& angle, const Piece& piece,
-                                                   const Point& middle, int direction) const {
-    const Rational scale = 1 + abs(middle[0]) + abs(middle[1]);
-    for (Rational step = scale * powerOfHalf(20); step > scale * powerOfHalf(120); step /= 1024) {
-      const Point off{middle[0] + direction * step, middle[1]};
-      const Point beyond{middle[0] - direction * step, middle[1]};
-      const RayHit back = rays_.castTo(angle, off, beyond);
-      if (back.kind != RayHit::Kind::SubFace || !back.fromPositiveSide || back.face.patch != piece.patch ||
-          back.slab != piece.slab || back.gap != piece.gap) {
-        continue;
-      }
-      const RayHit ahead = rays_.cast(angle, off, direction);
-      const Rational room = ahead.kind == RayHit::Kind::Nothing ? scale : Rational(ahead.along) / 2;
-      return std::array<double, 2>{(off[0] + direction * room).convert_to<double>(), off[1].convert_to<double>()};
-    }
-    return std::nullopt;
-  }
-
-  /// The middle of a piece at a rational angle, exactly, and the direction along x
-  /// toward its free side; none for a piece along x.
-  std::optional<std::pair<Point, int>> exactMiddle(const AlgebraicAngle& angle, const Piece& piece) const {
-    const auto [cosine, sine] = exactCosSin(angle);
-    const slices::ExactSegment segment = slices::segmentAt(arrangement_.patches[piece.patch], cosine, sine);
-    const auto lambdas = slices::pieceOf(arrangement_, piece.patch, slabOf(piece), piece.gap, segment, cosine, sine);
-    if (segment.nx == 0 || !lambdas) return std::nullopt;
-    return std::pair(segment.at((lambdas->first + lambdas->second) / 2), segment.nx > 0 ? 1 : -1);
-  }
-
-  /// A point near the middle of a piece at a rational angle, and the direction along
-  /// x toward its free side; none when the doubles cannot tell.
-  std::optional<std::pair<Point, int>> nearMiddle(const AlgebraicAngle& angle, const Piece& piece) const {
-    const RoundingScope rounding;
-    const slices::IntervalSlice slice(angle);
-    const PatchGeometry& patch = arrangement_.patches[piece.patch];
-    const std::optional<Sign> side = certainSign(slice.line(patch).nx);
-    const auto lambdas = slice.pieceOf(arrangement_, piece.patch, slabOf(piece), piece.gap);
-    if (!side || *side == Sign::Zero || !lambdas) return std::nullopt;
-    const Interval middle = (lambdas->first + lambdas->second) / Interval(2);
-    const std::array<Interval, 2> end0 = slice.end(patch, 0), end1 = slice.end(patch, 1);
-    const Interval x = end0[0] + middle * (end1[0] - end0[0]), y = end0[1] + middle * (end1[1] - end0[1]);
-    return std::pair(Point{Rational(x.midpoint()), Rational(y.midpoint())}, *side == Sign::Positive ? 1 : -1);
-  }
-
-  std::array<double, 4> boxOf(const IntervalLoops& loops, const std::vector<std::uint32_t>& members) const {
-    const RoundingScope rounding;
-    const slices::IntervalSlice slice(loops.sample);
-    std::array<double, 4> box{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-    for (std::uint32_t index : members) {
-      const Piece& piece = loops.pieces[index];
-      const PatchGeometry& patch = arrangement_.patches[piece.patch];
-      const std::array<Interval, 2> end0 = slice.end(patch, 0), end1 = slice.end(patch, 1);
-      const auto lambdas = slice.pieceOf(arrangement_, piece.patch, slabOf(piece), piece.gap);
-      const Interval low = lambdas ? lambdas->first : Interval(0), high = lambdas ? lambdas->second : Interval(1);
-      for (const Interval& lambda : {low, high}) {
-        for (int axis : {0, 1}) {
-          const Interval value = end0[axis] + lambda * (end1[axis] - end0[axis]);
-          box[axis] = std::min(box[axis], value.lower());
-          box[axis + 2] = std::max(box[axis + 2], value.upper());
-        }
-      }
-    }
-    return box;
   }
 
   /// Every loop of a face bounds the same cell.
@@ -949,6 +829,7 @@ class CellGraphSweep {
   const SliceRays& rays_;
   const CellGraph::CellOfFace& cellOf_;
   AngleAlgebra& algebra_;
+  const cellgraph::FacePlacement placement_;
   std::vector<std::uint32_t> cellOfPiece_;
   std::vector<AlgebraicAngle> samples_;
   std::vector<std::vector<SubFaceGlue>> horizontalGluesAt_;
@@ -1004,8 +885,9 @@ void CellGraph::checkParts(std::size_t cellCount, AngleAlgebra& algebra) const {
   require(parts_.runsOfPiece.size() == pieceCount_, "the graph's pieces");
   const auto checkRuns = [&](const std::vector<NodeRun>& runs) {
     for (std::size_t i = 0; i < runs.size(); ++i) {
-      require(runs[i].interval < intervals && runs[i].node < nodes && (i == 0 || runs[i - 1].interval < runs[i].interval),
-              "the nodes of a piece of the graph");
+      require(
+          runs[i].interval < intervals && runs[i].node < nodes && (i == 0 || runs[i - 1].interval < runs[i].interval),
+          "the nodes of a piece of the graph");
     }
   };
   for (const auto& runs : parts_.runsOfPiece) checkRuns(runs);
