@@ -1,5 +1,7 @@
 // The free cell graph (docs/design.md section 7) on the bundled scenes: its size and
-// the time it takes against the construction's (target: at most half).
+// the time it takes against the construction's (target: at most half), and whether
+// its edges join the start's and the goal's nodes (they must exactly when both lie in
+// one cell).
 //
 // Usage: bench_cell_graph [PROBLEM.cfg ...]   (default: every benchmarks/problems/*.cfg)
 #include <chrono>
@@ -15,6 +17,34 @@ using namespace freespace;
 
 namespace {
 
+/// Whether a path of edges joins two nodes (breadth-first search).
+bool joined(const CellGraph& graph, std::uint32_t from, std::uint32_t to) {
+  std::vector<std::vector<std::uint32_t>> next(graph.nodes().size());
+  for (const CellGraphEdge& edge : graph.edges()) {
+    next[edge.from].push_back(edge.to);
+    next[edge.to].push_back(edge.from);
+  }
+  std::vector<bool> reached(graph.nodes().size(), false);
+  std::vector<std::uint32_t> queue{from};
+  reached[from] = true;
+  for (std::size_t at = 0; at < queue.size(); ++at) {
+    for (std::uint32_t node : next[queue[at]]) {
+      if (!reached[node]) reached[node] = true, queue.push_back(node);
+    }
+  }
+  return reached[to];
+}
+
+/// "yes" or "no" when the graph joins the start's and the goal's nodes or not, then
+/// whether they share a cell; "blocked" when one of them is.
+std::string startAndGoal(const FreeSpace& space, const PlanarProblem& problem) {
+  const std::optional<std::uint32_t> start = space.nodeOf(problem.start), goal = space.nodeOf(problem.goal);
+  if (!start || !goal) return "blocked";
+  const bool sameCell = space.locate(problem.start).cell == space.locate(problem.goal).cell;
+  return std::string(joined(space.cellGraph(), *start, *goal) ? "yes" : "no") + " (" +
+         (sameCell ? "one cell" : "two cells") + ")";
+}
+
 void measure(const std::string& cfg) {
   const LoadedProblem loaded = loadProblem(cfg);
   auto start = std::chrono::steady_clock::now();
@@ -25,7 +55,8 @@ void measure(const std::string& cfg) {
   const double graphSeconds = benchmarks::secondsSince(start);
   std::cout << "| " << std::filesystem::path(cfg).stem().string() << " | " << space.cellCount() << " | "
             << graph.criticalAngles().size() << " | " << graph.nodes().size() << " | " << graph.edges().size() << " | "
-            << build << " | " << graphSeconds << " | " << graphSeconds / build << " |" << std::endl;
+            << build << " | " << graphSeconds << " | " << graphSeconds / build << " | "
+            << startAndGoal(space, loaded.problem) << " |" << std::endl;
 }
 
 int run(int argc, char** argv) {
@@ -36,8 +67,9 @@ int run(int argc, char** argv) {
   }
   if (problems.empty()) problems = benchmarks::bundledProblems();
   benchmarks::requireFiles(problems);
-  std::cout << "| problem | free cells | critical angles | nodes | edges | build s | graph s | graph / build |\n"
-               "| --- | --- | --- | --- | --- | --- | --- | --- |"
+  std::cout << "| problem | free cells | critical angles | nodes | edges | build s | graph s | graph / build | "
+               "start and goal joined |\n"
+               "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
             << std::endl;
   for (const std::string& problem : problems) measure(problem);
   return 0;
