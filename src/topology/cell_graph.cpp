@@ -20,42 +20,9 @@ namespace freespace {
 namespace {
 
 using cellgraph::IntervalLoops;
+using cellgraph::LiveState;
 using cellgraph::Piece;
 using slices::Point;
-
-std::uint64_t codeOf(SubFaceId face) { return (std::uint64_t(face.patch) << 32) | face.face; }
-
-/// A segment end (a spiral) as one number: vertex, edge and which body the vertex is of.
-struct SpiralHash {
-  std::size_t operator()(const SegmentEnd& end) const {
-    std::size_t hash = std::hash<std::uint64_t>()((std::uint64_t(end.vertex) << 1) | end.robotVertex);
-    hash ^= std::hash<std::uint64_t>()((std::uint64_t(end.edge[0]) << 32) | end.edge[1]) + 0x9e3779b97f4a7c15ULL +
-            (hash << 6) + (hash >> 2);
-    return hash;
-  }
-};
-
-/// The boundary of the free slices as the sweep goes, kept from interval to interval:
-/// which slab of each patch and which pieces are there, each piece's loop (pieces
-/// by CellGraph::pieceIndex) and each loop's node.
-struct LiveState {
-  std::vector<std::int64_t> slabOfPatch;  // -1: none
-  std::vector<char> live;
-  std::vector<std::uint32_t> loopOf;
-  std::vector<std::uint32_t> nodeOfLoop;
-  std::uint32_t unboundedNode = 0;
-  const std::vector<Piece>* pieceOfIndex = nullptr;
-
-  std::optional<std::uint32_t> slabOf(std::uint32_t patch) const {
-    if (slabOfPatch[patch] < 0) return std::nullopt;
-    return static_cast<std::uint32_t>(slabOfPatch[patch]);
-  }
-  std::optional<std::size_t> pieceAt(std::size_t index) const {
-    if (!live[index]) return std::nullopt;
-    return index;
-  }
-  const Piece& piece(std::size_t id) const { return (*pieceOfIndex)[id]; }
-};
 
 /// Pairs (loop before, loop after) that share boundary across a critical angle.
 using LoopLinks = std::set<std::pair<std::uint32_t, std::uint32_t>>;
@@ -72,14 +39,11 @@ class CellGraphSweep {
         rays_(rays),
         cellOf_(cellOf),
         algebra_(algebra),
-        placement_(arrangement, rays) {
+        placement_(arrangement, rays),
+        neighbours_(arrangement, graph) {
     numberPieces();
     findCriticalAngles();
     indexHorizontalGlues();
-    for (const SubFaceGlue& glue : arrangement.aroundSpirals.glues) {
-      spiralGlues_.insert({codeOf(glue.first), codeOf(glue.second)});
-    }
-    numberSpirals();
   }
 
   void run(const Cancellation& cancellation) {
@@ -127,22 +91,6 @@ class CellGraphSweep {
           }
         }
       }
-    }
-  }
-
-  /// Numbers the spirals (segment ends shared by patches) once.
-  void numberSpirals() {
-    std::unordered_map<SegmentEnd, std::uint32_t, SpiralHash> numbers;
-    for (const PatchGeometry& patch : arrangement_.patches) {
-      std::array<std::uint32_t, 2> ends{};
-      for (int end : {0, 1}) {
-        ends[end] = numbers.emplace(patch.segment.ends[end], static_cast<std::uint32_t>(numbers.size())).first->second;
-      }
-      spiralOfEnd_.push_back(ends);
-    }
-    patchesAtSpiral_.resize(numbers.size());
-    for (std::uint32_t patch = 0; patch < spiralOfEnd_.size(); ++patch) {
-      for (int end : {0, 1}) patchesAtSpiral_[spiralOfEnd_[patch][end]].push_back({patch, end});
     }
   }
 
@@ -389,7 +337,7 @@ class CellGraphSweep {
       seen[first] = 1;
       for (std::size_t at = 0; at < chain.size(); ++at) {
         for (const std::size_t end : {0, 1}) {
-          const std::optional<std::size_t> next = neighbour(pieces[chain[at]], end);
+          const std::optional<std::size_t> next = neighbours_.neighbour(state_, pieces[chain[at]], end);
           if (!next) return false;
           const std::optional<std::size_t> inChain = position(*next);
           if (!inChain) {
@@ -409,22 +357,6 @@ class CellGraphSweep {
     return true;
   }
 
-  /// The live piece across a live piece's low (0) or high (1) end: across a curve, or
-  /// the one glued to it around the spiral there; none when that is unclear.
-  std::optional<std::size_t> neighbour(std::size_t index, std::size_t end) const {
-    if (const std::optional<std::size_t> next = curveNeighbour(state_, index, end)) return next;
-    const Piece& piece = state_.piece(index);
-    const std::vector<std::size_t> ending = endPiecesAt(state_, spiralOfEnd_[piece.patch][end]);
-    std::optional<std::size_t> found;
-    for (std::size_t other : ending) {
-      if (other == index) continue;
-      if (ending.size() > 2 && !gluedAroundSpiral(faceOf(piece), faceOf(state_.piece(other)))) continue;
-      if (found) return std::nullopt;
-      found = other;
-    }
-    return found;
-  }
-
   /// The nodes of the faces over an interval.
   std::set<std::uint32_t> nodesOf(const IntervalLoops& loops) const {
     std::set<std::uint32_t> nodes{loops.unboundedNode};
@@ -432,52 +364,13 @@ class CellGraphSweep {
     return nodes;
   }
 
-  /// The free pieces that end at a spiral (an interval's loops or the live state).
-  template <class State>
-  std::vector<std::size_t> endPiecesAt(const State& state, std::uint32_t spiral) const {
-    std::vector<std::size_t> found;
-    for (const auto& [patch, end] : patchesAtSpiral_[spiral]) {
-      const std::optional<std::uint32_t> slab = state.slabOf(patch);
-      if (!slab) continue;
-      const std::size_t gaps = arrangement_.subdivisions[patch].slabs[*slab].faces.size();
-      const std::uint32_t gap = end == 0 ? 0 : static_cast<std::uint32_t>(gaps - 1);
-      if (const auto piece = state.pieceAt(graph_.pieceIndex(patch, *slab, gap))) found.push_back(*piece);
-    }
-    return found;
-  }
-
   const PatchSlab& slabOf(const Piece& piece) const { return arrangement_.subdivisions[piece.patch].slabs[piece.slab]; }
-
-  /// The piece a piece continues into across the curve at its low (0) or high (1)
-  /// end: on the curve's other patch, the one side of the curve there that bounds
-  /// free space (the other side lies inside this patch's obstacle). None at a spiral.
-  template <class State>
-  std::optional<std::size_t> curveNeighbour(const State& state, std::size_t id, std::size_t end) const {
-    const Piece& piece = state.piece(id);
-    const PatchSlab& slab = slabOf(piece);
-    const std::size_t at = piece.gap + end;
-    if (at == 0 || at > slab.curves.size()) return std::nullopt;
-    const std::uint32_t curve = slab.curves[at - 1];
-    const std::uint32_t other = arrangement_.curves[curve].other(piece.patch);
-    const std::optional<std::uint32_t> otherSlab = state.slabOf(other);
-    if (!otherSlab) throw std::logic_error("CellGraph: a free piece's curve ends nowhere");
-    const auto& curves = arrangement_.subdivisions[other].slabs[*otherSlab].curves;
-    const std::size_t crossing = std::find(curves.begin(), curves.end(), curve) - curves.begin();
-    std::optional<std::size_t> next;
-    for (const std::size_t gap : {crossing, crossing + 1}) {
-      const auto found = state.pieceAt(graph_.pieceIndex(other, *otherSlab, gap));
-      if (!found) continue;
-      if (next) throw std::logic_error("CellGraph: both sides of a curve bound free space");
-      next = *found;
-    }
-    if (!next) throw std::logic_error("CellGraph: a free piece continues into no free piece across a curve");
-    return next;
-  }
 
   void joinAcrossCurves(const IntervalLoops& loops, detail::DisjointSets& sets) const {
     for (std::uint32_t index = 0; index < loops.pieces.size(); ++index) {
       for (const std::size_t end : {0, 1}) {
-        if (const auto next = curveNeighbour(loops, index, end)) sets.unite(index, static_cast<std::uint32_t>(*next));
+        if (const auto next = neighbours_.curveNeighbour(loops, index, end))
+          sets.unite(index, static_cast<std::uint32_t>(*next));
       }
     }
   }
@@ -487,29 +380,22 @@ class CellGraphSweep {
   void joinAroundSpirals(const IntervalLoops& loops, detail::DisjointSets& sets) const {
     std::vector<std::uint32_t> spirals;
     for (const Piece& piece : loops.pieces) {
-      if (piece.gap == 0) spirals.push_back(spiralOfEnd_[piece.patch][0]);
-      if (piece.gap + 1 == slabOf(piece).faces.size()) spirals.push_back(spiralOfEnd_[piece.patch][1]);
+      if (piece.gap == 0) spirals.push_back(neighbours_.spiralOf(piece.patch, 0));
+      if (piece.gap + 1 == slabOf(piece).faces.size()) spirals.push_back(neighbours_.spiralOf(piece.patch, 1));
     }
     std::sort(spirals.begin(), spirals.end());
     spirals.erase(std::unique(spirals.begin(), spirals.end()), spirals.end());
     for (std::uint32_t spiral : spirals) {
-      const std::vector<std::size_t> ending = endPiecesAt(loops, spiral);
+      const std::vector<std::size_t> ending = neighbours_.endPiecesAt(loops, spiral);
       if (ending.size() == 1) throw std::logic_error("CellGraph: a free piece ends alone at a spiral");
       for (std::size_t i = 0; i < ending.size(); ++i) {
         for (std::size_t j = i + 1; j < ending.size(); ++j) {
-          if (ending.size() == 2 ||
-              gluedAroundSpiral(faceOf(loops.pieces[ending[i]]), faceOf(loops.pieces[ending[j]]))) {
+          if (ending.size() == 2 || neighbours_.gluedAroundSpiral(loops.pieces[ending[i]], loops.pieces[ending[j]])) {
             sets.unite(static_cast<std::uint32_t>(ending[i]), static_cast<std::uint32_t>(ending[j]));
           }
         }
       }
     }
-  }
-
-  SubFaceId faceOf(const Piece& piece) const { return {piece.patch, slabOf(piece).faces[piece.gap]}; }
-
-  bool gluedAroundSpiral(SubFaceId a, SubFaceId b) const {
-    return spiralGlues_.count({codeOf(a), codeOf(b)}) != 0 || spiralGlues_.count({codeOf(b), codeOf(a)}) != 0;
   }
 
   // --- Faces --------------------------------------------------------------------------
@@ -830,15 +716,14 @@ class CellGraphSweep {
   const CellGraph::CellOfFace& cellOf_;
   AngleAlgebra& algebra_;
   const cellgraph::FacePlacement placement_;
+  const cellgraph::PieceNeighbours neighbours_;
   std::vector<std::uint32_t> cellOfPiece_;
   std::vector<AlgebraicAngle> samples_;
   std::vector<std::vector<SubFaceGlue>> horizontalGluesAt_;
-  std::set<std::pair<std::uint64_t, std::uint64_t>> spiralGlues_;
-  std::vector<std::array<std::uint32_t, 2>> spiralOfEnd_;
+
   std::vector<Piece> pieceOfIndex_;
   std::map<std::uint32_t, std::uint32_t> active_;
   LiveState state_;
-  std::vector<std::vector<std::pair<std::uint32_t, int>>> patchesAtSpiral_;
 };
 
 CellGraph::CellGraph(const Arrangement& arrangement, const SliceRays& rays, const CellOfFace& cellOf,

@@ -4,12 +4,15 @@
 // cell graph's sweep sees it (cell_graph.cpp, face_placement.cpp).
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <optional>
+#include <set>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
-#include "freespace/numbers/algebraic_angle.h"
+#include "freespace/topology/cell_graph.h"
 
 namespace freespace::cellgraph {
 
@@ -48,5 +51,116 @@ struct IntervalLoops {
   std::vector<std::uint32_t> nodeOfLoop;
   std::uint32_t unboundedNode = 0;
 };
+
+/// The boundary of the free slices as the sweep goes, kept from interval to interval:
+/// which slab of each patch and which pieces are there, each piece's loop (pieces
+/// by CellGraph::pieceIndex) and each loop's node.
+struct LiveState {
+  std::vector<std::int64_t> slabOfPatch;  // -1: none
+  std::vector<char> live;
+  std::vector<std::uint32_t> loopOf;
+  std::vector<std::uint32_t> nodeOfLoop;
+  std::uint32_t unboundedNode = 0;
+  const std::vector<Piece>* pieceOfIndex = nullptr;
+
+  std::optional<std::uint32_t> slabOf(std::uint32_t patch) const {
+    if (slabOfPatch[patch] < 0) return std::nullopt;
+    return static_cast<std::uint32_t>(slabOfPatch[patch]);
+  }
+  std::optional<std::size_t> pieceAt(std::size_t index) const {
+    if (!live[index]) return std::nullopt;
+    return index;
+  }
+  const Piece& piece(std::size_t id) const { return (*pieceOfIndex)[id]; }
+};
+
+/// How the free pieces of a slice join into loops (docs/design.md section 7): across
+/// a curve, to the free piece of the curve's other patch; at a spiral, to the other
+/// piece ending there (the one glued to it around the spiral when more end there).
+/// A State (IntervalLoops, LiveState) tells each patch's slab (slabOf), whether a
+/// piece by CellGraph::pieceIndex is there (pieceAt) and its pieces by id (piece).
+class PieceNeighbours {
+ public:
+  PieceNeighbours(const Arrangement& arrangement, const CellGraph& numbering);
+
+  /// The piece a piece continues into across the curve at its low (0) or high (1)
+  /// end: on the curve's other patch, the one side of the curve there that bounds
+  /// free space (the other side lies inside this patch's obstacle). None at a spiral.
+  template <class State>
+  std::optional<std::size_t> curveNeighbour(const State& state, std::size_t id, std::size_t end) const;
+
+  /// The free pieces that end at a spiral.
+  template <class State>
+  std::vector<std::size_t> endPiecesAt(const State& state, std::uint32_t spiral) const;
+
+  /// The piece across a piece's low (0) or high (1) end: across a curve, or the one
+  /// glued to it around the spiral there; none when that is unclear.
+  template <class State>
+  std::optional<std::size_t> neighbour(const State& state, std::size_t id, std::size_t end) const;
+
+  /// The number of the spiral at a patch's segment end 0 or 1.
+  std::uint32_t spiralOf(std::uint32_t patch, int end) const { return spiralOfEnd_[patch][end]; }
+  SubFaceId faceOf(const Piece& piece) const { return {piece.patch, slabOf(piece).faces[piece.gap]}; }
+  bool gluedAroundSpiral(const Piece& a, const Piece& b) const;
+  const PatchSlab& slabOf(const Piece& piece) const { return arrangement_.subdivisions[piece.patch].slabs[piece.slab]; }
+
+ private:
+  const Arrangement& arrangement_;
+  const CellGraph& numbering_;
+  std::set<std::pair<std::uint64_t, std::uint64_t>> spiralGlues_;
+  std::vector<std::array<std::uint32_t, 2>> spiralOfEnd_;
+  std::vector<std::vector<std::pair<std::uint32_t, int>>> patchesAtSpiral_;
+};
+
+template <class State>
+std::optional<std::size_t> PieceNeighbours::curveNeighbour(const State& state, std::size_t id, std::size_t end) const {
+  const Piece& piece = state.piece(id);
+  const PatchSlab& slab = slabOf(piece);
+  const std::size_t at = piece.gap + end;
+  if (at == 0 || at > slab.curves.size()) return std::nullopt;
+  const std::uint32_t curve = slab.curves[at - 1];
+  const std::uint32_t other = arrangement_.curves[curve].other(piece.patch);
+  const std::optional<std::uint32_t> otherSlab = state.slabOf(other);
+  if (!otherSlab) throw std::logic_error("CellGraph: a free piece's curve ends nowhere");
+  const auto& curves = arrangement_.subdivisions[other].slabs[*otherSlab].curves;
+  const std::size_t crossing = std::find(curves.begin(), curves.end(), curve) - curves.begin();
+  std::optional<std::size_t> next;
+  for (const std::size_t gap : {crossing, crossing + 1}) {
+    const auto found = state.pieceAt(numbering_.pieceIndex(other, *otherSlab, static_cast<std::uint32_t>(gap)));
+    if (!found) continue;
+    if (next) throw std::logic_error("CellGraph: both sides of a curve bound free space");
+    next = *found;
+  }
+  if (!next) throw std::logic_error("CellGraph: a free piece continues into no free piece across a curve");
+  return next;
+}
+
+template <class State>
+std::vector<std::size_t> PieceNeighbours::endPiecesAt(const State& state, std::uint32_t spiral) const {
+  std::vector<std::size_t> found;
+  for (const auto& [patch, end] : patchesAtSpiral_[spiral]) {
+    const std::optional<std::uint32_t> slab = state.slabOf(patch);
+    if (!slab) continue;
+    const std::size_t gaps = arrangement_.subdivisions[patch].slabs[*slab].faces.size();
+    const std::uint32_t gap = end == 0 ? 0 : static_cast<std::uint32_t>(gaps - 1);
+    if (const auto piece = state.pieceAt(numbering_.pieceIndex(patch, *slab, gap))) found.push_back(*piece);
+  }
+  return found;
+}
+
+template <class State>
+std::optional<std::size_t> PieceNeighbours::neighbour(const State& state, std::size_t id, std::size_t end) const {
+  if (const std::optional<std::size_t> next = curveNeighbour(state, id, end)) return next;
+  const Piece& piece = state.piece(id);
+  const std::vector<std::size_t> ending = endPiecesAt(state, spiralOf(piece.patch, static_cast<int>(end)));
+  std::optional<std::size_t> found;
+  for (std::size_t other : ending) {
+    if (other == id) continue;
+    if (ending.size() > 2 && !gluedAroundSpiral(piece, state.piece(other))) continue;
+    if (found) return std::nullopt;
+    found = other;
+  }
+  return found;
+}
 
 }  // namespace freespace::cellgraph

@@ -102,15 +102,18 @@ class CellGraph {
   std::optional<std::uint32_t> nodeOf(const RayHit& hit, const AlgebraicAngle& rationalAngle,
                                       AngleAlgebra& algebra) const;
 
+  /// The number of a piece of a slice: the gap `gap` of the slab `slab` of `patch`,
+  /// numbered patch by patch, slab by slab (as Parts::runsOfPiece).
+  std::size_t pieceIndex(std::uint32_t patch, std::uint32_t slab, std::uint32_t gap) const {
+    return firstGapOfSlab_[firstSlabOfPatch_[patch] + slab] + gap;
+  }
+
  private:
   friend class CellGraphSweep;
 
   void numberPieces(const Arrangement& arrangement);
   void checkParts(std::size_t cellCount, AngleAlgebra& algebra) const;
   std::optional<std::uint32_t> nodeAtRun(const std::vector<NodeRun>& runs, std::uint32_t interval) const;
-  std::size_t pieceIndex(std::uint32_t patch, std::uint32_t slab, std::uint32_t gap) const {
-    return firstGapOfSlab_[firstSlabOfPatch_[patch] + slab] + gap;
-  }
 
   Parts parts_;
   std::vector<std::uint32_t> firstSlabOfPatch_;
