@@ -2,6 +2,7 @@
 // and edges against the free cells, the exact locate and the clearance.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -11,6 +12,7 @@
 
 #include "freespace/problem/planar_problem.h"
 #include "freespace/scenes/scene_generator.h"
+#include "freespace/topology/slice_faces.h"
 #include "freespace/space/free_space.h"
 #include "geometry/disjoint_sets.h"
 #include "random_configurations.h"
@@ -155,6 +157,92 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BundledCellGraph,
                          ::testing::Values("keyhole", "keyhole_narrow", "keyhole_wide", "keyhole_tight", "flip_window",
                                            "cage", "maze", "overhang", "table", "table_tall", "turn_around",
                                            "room_door", "random_polyhedra", "tetra_floorplan"));
+
+/// Whether an even-odd count of the loops' edges crossing the ray toward +x from a
+/// point puts it inside the face (and how near an edge it lies).
+struct Containment {
+  bool inside = false;
+  double nearestEdge = HUGE_VAL;
+};
+
+double signedArea(const SliceLoop& loop) {
+  double twice = 0;
+  for (std::size_t i = 0; i < loop.corners.size(); ++i) {
+    const auto& a = loop.corners[i];
+    const auto& b = loop.corners[(i + 1) % loop.corners.size()];
+    twice += a[0] * b[1] - a[1] * b[0];
+  }
+  return twice / 2;
+}
+
+Containment containment(const SliceFace& face, const std::array<double, 2>& p) {
+  Containment result;
+  int crossings = 0;
+  for (const SliceLoop& loop : face.loops) {
+    for (std::size_t i = 0; i < loop.corners.size(); ++i) {
+      const auto& a = loop.corners[i];
+      const auto& b = loop.corners[(i + 1) % loop.corners.size()];
+      const double dx = b[0] - a[0], dy = b[1] - a[1], length2 = dx * dx + dy * dy;
+      const double t = length2 > 0 ? std::clamp(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / length2, 0.0, 1.0) : 0;
+      result.nearestEdge = std::min(result.nearestEdge, std::hypot(a[0] + t * dx - p[0], a[1] + t * dy - p[1]));
+      if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) / (b[1] - a[1]) * dx) ++crossings;
+    }
+  }
+  result.inside = (crossings % 2 == 1) != face.unbounded;
+  return result;
+}
+
+/// The faces of slices at random angles, as polygons, against the exact locate: a
+/// free configuration lies in exactly one face, that of its node; a blocked one in
+/// none (points within 1e-9 of an edge are left out: the corners are rounded).
+TEST_P(BundledCellGraph, SliceFacesHoldTheirConfigurations) {
+  const LoadedProblem loaded = problem();
+  const FreeSpace space(loaded.robot, loaded.world);
+  const CellGraph& graph = space.cellGraph();
+  const double scale = space.meshes().scale;
+  RandomConfigurations random(space, 99);
+  int checked = 0;
+  for (int slice = 0; slice < 6; ++slice) {
+    const double theta = random.next().theta;
+    const AlgebraicAngle angle = AlgebraicAngle::rational(HalfAngle::fromRadians(theta));
+    std::vector<SliceFace> faces;
+    try {
+      faces = sliceFaces(space.arrangement(), graph, [&](SubFaceId face) { return space.cellOfSubFace(face); }, angle,
+                         space.algebra());
+    } catch (const std::invalid_argument&) {
+      continue;  // a critical angle
+    }
+    // One face per node: walked with the free side on the right, a face's outer loop
+    // turns clockwise and its holes counterclockwise; an unbounded face has none.
+    for (const SliceFace& face : faces) {
+      std::size_t clockwise = 0;
+      for (const SliceLoop& loop : face.loops) clockwise += signedArea(loop) < 0;
+      EXPECT_EQ(clockwise, face.unbounded ? 0u : 1u) << "node " << face.node << " at theta " << theta;
+    }
+    for (int sample = 0; sample < 300; ++sample) {
+      Pose2 pose = random.next();
+      pose.theta = theta;
+      const std::array<double, 2> point{pose.x * scale, pose.y * scale};
+      std::vector<std::uint32_t> holding;
+      bool nearEdge = false;
+      for (const SliceFace& face : faces) {
+        const Containment in = containment(face, point);
+        nearEdge = nearEdge || in.nearestEdge < 1e-9 * (1 + std::abs(point[0]) + std::abs(point[1]));
+        if (in.inside) holding.push_back(face.node);
+      }
+      if (nearEdge) continue;
+      const std::optional<std::uint32_t> node = space.nodeOf(pose);
+      if (node) {
+        EXPECT_EQ(holding, std::vector<std::uint32_t>{*node}) << pose.x << " " << pose.y << " " << pose.theta;
+      } else {
+        EXPECT_TRUE(holding.empty()) << pose.x << " " << pose.y << " " << pose.theta;
+      }
+      ++checked;
+    }
+  }
+  std::cout << GetParam() << ": " << checked << " configurations checked against the slices' faces\n";
+  EXPECT_GT(checked, 500);
+}
 
 /// A saved free space holds its graph: read back, it has the same nodes and edges,
 /// and configurations find the same nodes.

@@ -102,6 +102,15 @@ class CellGraph {
   std::optional<std::uint32_t> nodeOf(const RayHit& hit, const AlgebraicAngle& rationalAngle,
                                       AngleAlgebra& algebra) const;
 
+  /// The node of the face a piece bounds over an interval (the piece's slab holding
+  /// it), and of the unbounded face; none for a piece of no free cell.
+  std::optional<std::uint32_t> nodeOfPiece(std::size_t piece, std::uint32_t interval) const {
+    return nodeAtRun(parts_.runsOfPiece[piece], interval);
+  }
+  std::optional<std::uint32_t> unboundedNode(std::uint32_t interval) const {
+    return nodeAtRun(parts_.unboundedRuns, interval);
+  }
+
   /// The number of a piece of a slice: the gap `gap` of the slab `slab` of `patch`,
   /// numbered patch by patch, slab by slab (as Parts::runsOfPiece).
   std::size_t pieceIndex(std::uint32_t patch, std::uint32_t slab, std::uint32_t gap) const {

@@ -1,0 +1,109 @@
+#include "freespace/topology/slice_faces.h"
+
+#include <map>
+#include <stdexcept>
+
+#include "freespace/topology/slice_pieces.h"
+#include "slice_loops.h"
+
+namespace freespace {
+
+namespace {
+
+using cellgraph::IntervalLoops;
+using cellgraph::Piece;
+
+/// The free pieces at the angle: for every patch whose range holds it, the gaps of
+/// the slab holding it whose sub-faces bound a free cell.
+IntervalLoops piecesAt(const Arrangement& arrangement, const CellGraph& graph, const CellGraph::CellOfFace& cellOf,
+                       const AlgebraicAngle& angle, AngleAlgebra& algebra) {
+  IntervalLoops loops;
+  loops.sample = angle;
+  for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
+    if (!algebra.contains(arrangement.patches[patch].patch.range, angle)) continue;
+    const PatchSubdivision& subdivision = arrangement.subdivisions[patch];
+    const PatchSlab* slab = slabAt(subdivision, angle, algebra);
+    if (!slab) throw std::invalid_argument("sliceFaces: the angle is critical");
+    const auto slabIndex = static_cast<std::uint32_t>(slab - subdivision.slabs.data());
+    bool free = false;
+    for (std::uint32_t gap = 0; gap < slab->faces.size(); ++gap) {
+      if (!cellOf({patch, slab->faces[gap]})) continue;
+      loops.pieces.push_back({patch, slabIndex, gap});
+      loops.pieceIndices.push_back(graph.pieceIndex(patch, slabIndex, gap));
+      free = true;
+    }
+    if (free) loops.slabs.push_back({patch, slabIndex});
+  }
+  return loops;
+}
+
+/// The ends of a piece at the angle (low lambda, then high), rounded to doubles.
+std::array<std::array<double, 2>, 2> endsOf(const Arrangement& arrangement, const slices::IntervalSlice& slice,
+                                            const Piece& piece) {
+  const RoundingScope rounding;
+  const PatchGeometry& patch = arrangement.patches[piece.patch];
+  const std::array<Interval, 2> end0 = slice.end(patch, 0), end1 = slice.end(patch, 1);
+  const auto lambdas =
+      slice.pieceOf(arrangement, piece.patch, arrangement.subdivisions[piece.patch].slabs[piece.slab], piece.gap);
+  const Interval low = lambdas ? lambdas->first : Interval(0), high = lambdas ? lambdas->second : Interval(1);
+  std::array<std::array<double, 2>, 2> ends{};
+  for (int k : {0, 1}) {
+    const Interval& lambda = k == 0 ? low : high;
+    for (int axis : {0, 1}) ends[k][axis] = (end0[axis] + lambda * (end1[axis] - end0[axis])).midpoint();
+  }
+  return ends;
+}
+
+/// One loop from a piece, walked from end to end: each piece is entered at the end
+/// its predecessor left it by.
+std::vector<std::size_t> walkLoop(const cellgraph::PieceNeighbours& neighbours, const IntervalLoops& loops,
+                                  std::size_t first, std::vector<char>& seen, std::vector<int>& entry) {
+  std::vector<std::size_t> loop;
+  std::size_t at = first;
+  int enteredBy = 0;
+  while (!seen[at]) {
+    seen[at] = 1;
+    entry[at] = enteredBy;
+    loop.push_back(at);
+    const std::optional<std::size_t> next = neighbours.neighbour(loops, at, 1 - enteredBy);
+    if (!next) throw std::logic_error("sliceFaces: a loop does not close");
+    enteredBy = neighbours.neighbour(loops, *next, 0) == at ? 0 : 1;
+    at = *next;
+  }
+  return loop;
+}
+
+}  // namespace
+
+std::vector<SliceFace> sliceFaces(const Arrangement& arrangement, const CellGraph& graph,
+                                  const CellGraph::CellOfFace& cellOf, const AlgebraicAngle& rationalAngle,
+                                  AngleAlgebra& algebra) {
+  const IntervalLoops loops = piecesAt(arrangement, graph, cellOf, rationalAngle, algebra);
+  const std::uint32_t interval = graph.intervalOf(rationalAngle, algebra);
+  const cellgraph::PieceNeighbours neighbours(arrangement, graph);
+  const slices::IntervalSlice slice = *slices::IntervalSlice::at(rationalAngle);
+  std::map<std::uint32_t, SliceFace> faces;
+  if (const std::optional<std::uint32_t> node = graph.unboundedNode(interval)) {
+    faces[*node] = SliceFace{*node, 0, true, {}};
+  }
+  std::vector<char> seen(loops.pieces.size(), 0);
+  std::vector<int> entry(loops.pieces.size(), 0);
+  for (std::size_t first = 0; first < loops.pieces.size(); ++first) {
+    if (seen[first]) continue;
+    const std::vector<std::size_t> members = walkLoop(neighbours, loops, first, seen, entry);
+    const std::optional<std::uint32_t> node = graph.nodeOfPiece(loops.pieceIndices[first], interval);
+    if (!node) throw std::logic_error("sliceFaces: a free piece has no node");
+    SliceLoop loop;
+    for (std::size_t member : members)
+      loop.corners.push_back(endsOf(arrangement, slice, loops.pieces[member])[entry[member]]);
+    SliceFace& face = faces[*node];
+    face.node = *node;
+    face.cell = graph.nodes()[*node].cell;
+    face.loops.push_back(std::move(loop));
+  }
+  std::vector<SliceFace> result;
+  for (auto& [node, face] : faces) result.push_back(std::move(face));
+  return result;
+}
+
+}  // namespace freespace
