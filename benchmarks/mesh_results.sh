@@ -71,9 +71,9 @@ for cfg in "$@"; do
   [ -f "$path" ] || path="$folder/${name%_*}_planar.path"
   waypoints="-"
   if [ -f "$path" ]; then
-    start=$("$build/bin/freespace" locate "$space" --at "$(state start x)" "$(state start y)" "$(state start theta)" 2> /dev/null | sed -n 's/.*free, cell \([0-9]*\)$/\1/p')
+    start=$("$build/bin/freespace" locate "$space" --at "$(state start x)" "$(state start y)" "$(state start theta)" 2> /dev/null | sed -n 's/.*free, cell \([0-9]*\).*/\1/p')
     answers=$("$build/bin/freespace" locate "$space" --batch "$path" 2> /dev/null)
-    waypoints="$(echo "$answers" | grep -c "free, cell $start\$") of $(echo "$answers" | grep -c .) ($(basename "$path"))"
+    waypoints="$(echo "$answers" | grep -c "free, cell $start\(,.*\)\?\$") of $(echo "$answers" | grep -c .) ($(basename "$path"))"
   fi
   printf '| %s | yes | %s | %.2f s, %s free cells | %s |\n' "$name" "$ends" "$seconds" "$cells" "$waypoints"
 done
