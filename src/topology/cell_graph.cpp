@@ -4,11 +4,9 @@
 #include <cmath>
 #include <iterator>
 #include <map>
-#include <numeric>
 #include <set>
 #include <stdexcept>
 #include <unordered_map>
-#include <unordered_set>
 
 #include "../geometry/disjoint_sets.h"
 #include "face_placement.h"
