@@ -192,6 +192,31 @@ TEST(CliFreeSpace, SliceDrawsTheCellsAndNeverOverwrites) {
   EXPECT_EQ(readWholeFile(svg), picture);
 }
 
+// The graph as JSON: edges join nodes of one cell, every cell has a node, and the
+// keyhole's start and goal (the bar along the wall, theta 0, on either side of it)
+// lie in two nodes whose angles hold 0.
+TEST(CliFreeSpace, GraphPrintsNodesAndEdges) {
+  const CommandResult result = runFreespace("graph --json --cfg '" + kProblems + "keyhole.cfg'");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const nlohmann::json graph = nlohmann::json::parse(result.out);
+  const nlohmann::json& nodes = graph["nodes"];
+  std::set<int> cells;
+  for (const nlohmann::json& node : nodes) cells.insert(node["cell"].get<int>());
+  EXPECT_EQ(cells, (std::set<int>{0, 1}));
+  for (const nlohmann::json& edge : graph["edges"]) {
+    EXPECT_EQ(nodes[edge["from"].get<int>()]["cell"], nodes[edge["to"].get<int>()]["cell"]);
+  }
+  const std::vector<nlohmann::json> ends = batchAnswers("locate", "keyhole.cfg", "0 -2.25 0\n0 2.25 0\n");
+  ASSERT_EQ(ends.size(), 2u);
+  EXPECT_NE(ends[0]["node"], ends[1]["node"]);
+  for (const nlohmann::json& end : ends) {
+    const nlohmann::json& node = nodes[end["node"].get<int>()];
+    ASSERT_FALSE(node["from"].is_null());
+    EXPECT_LT(node["from"].get<double>(), 0);
+    EXPECT_GT(node["to"].get<double>(), 0);
+  }
+}
+
 // The keyhole at theta 0 has three faces (outside, and the bar lying along the wall on
 // either side of it: the slot lets it through only end first); at a quarter turn the
 // two sides are one face.

@@ -16,5 +16,6 @@ void addSliceCommand(CLI::App& app);
 void addExportCommand(CLI::App& app);
 void addRepairCommand(CLI::App& app);
 void addClearanceCommand(CLI::App& app);
+void addGraphCommand(CLI::App& app);
 
 }  // namespace freespace::cli
