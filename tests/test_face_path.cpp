@@ -1,0 +1,74 @@
+// Translations inside one face of a slice (pathInFace) on the bundled scenes: every
+// motion of every path between two configurations of one node, at their angle, is
+// certified free by the clearance (MotionChecker), an independent measure.
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <map>
+#include <string>
+
+#include "freespace/problem/planar_problem.h"
+#include "freespace/space/face_path.h"
+#include "freespace/space/motion_checker.h"
+#include "random_configurations.h"
+
+using namespace freespace;
+using namespace freespace::testing;
+
+namespace {
+
+class BundledFacePaths : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BundledFacePaths, EveryMotionIsCertifiedFree) {
+  const LoadedProblem loaded =
+      loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + GetParam() + ".cfg");
+  const FreeSpace space(loaded.robot, loaded.world);
+  const MotionChecker checker(space);
+  const double scale = space.meshes().scale;
+  RandomConfigurations random(space, 5);
+  int paths = 0, motions = 0, uncertified = 0;
+  for (int slice = 0; slice < 4; ++slice) {
+    const double theta = random.next().theta;
+    std::vector<SliceFace> faces;
+    try {
+      faces = sliceFaces(
+          space.arrangement(), space.cellGraph(), [&](SubFaceId face) { return space.cellOfSubFace(face); },
+          AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space.algebra());
+    } catch (const std::invalid_argument&) {
+      continue;  // a critical angle
+    }
+    std::map<std::uint32_t, Pose2> previousInNode;
+    for (int sample = 0; sample < 150; ++sample) {
+      Pose2 pose = random.next();
+      pose.theta = theta;
+      const std::optional<std::uint32_t> node = space.nodeOf(pose);
+      if (!node || space.clearance(pose).lower < 1e-6) continue;
+      const auto found = previousInNode.find(*node);
+      const std::optional<Pose2> previous =
+          found == previousInNode.end() ? std::nullopt : std::optional<Pose2>(found->second);
+      previousInNode[*node] = pose;
+      if (!previous) continue;
+      const SliceFace& face =
+          *std::find_if(faces.begin(), faces.end(), [&](const SliceFace& f) { return f.node == *node; });
+      const auto path = pathInFace(face, {previous->x * scale, previous->y * scale}, {pose.x * scale, pose.y * scale});
+      ASSERT_TRUE(path) << "node " << *node << " at theta " << theta;
+      ++paths;
+      for (std::size_t i = 0; i + 1 < path->size(); ++i) {
+        const Pose2 a{(*path)[i][0] / scale, (*path)[i][1] / scale, theta};
+        const Pose2 b{(*path)[i + 1][0] / scale, (*path)[i + 1][1] / scale, theta};
+        ++motions;
+        uncertified += !checker.check(a, b).free;
+      }
+    }
+  }
+  std::cout << GetParam() << ": " << paths << " paths, " << motions << " motions, " << uncertified
+            << " not certified free\n";
+  EXPECT_GT(paths, 20);
+  EXPECT_EQ(uncertified, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scenes, BundledFacePaths,
+                         ::testing::Values("keyhole", "keyhole_wide", "flip_window", "maze", "overhang", "table",
+                                           "room_door", "random_polyhedra", "turn_around"));
+
+}  // namespace
