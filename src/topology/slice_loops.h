@@ -1,7 +1,8 @@
 #pragma once
 
 // The boundary of the free slices over one interval between critical angles, as the
-// cell graph's sweep sees it (cell_graph.cpp, face_placement.cpp).
+// cell graph's sweep (cell_graph.cpp, face_placement.cpp) and the faces of one slice
+// (slice_faces.cpp) see it: its pieces, and how they join into loops.
 
 #include <algorithm>
 #include <array>
