@@ -3,9 +3,7 @@
 #include <cstdlib>
 #include <iostream>
 
-#include <freespace/collision/exact_collision_checker.h>
-#include <freespace/input_error.h>
-#include <freespace/io/mesh_reader.h>
+#include <freespace/freespace.h>
 
 int main(int argc, char** argv) {
   if (argc != 6) {
