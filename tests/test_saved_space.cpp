@@ -4,7 +4,11 @@
 // truncated, altered, or already present are clear errors naming the file.
 #include <gtest/gtest.h>
 
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+
 #include <chrono>
+#include <functional>
 #include <fstream>
 #include <random>
 #include <sstream>
@@ -12,6 +16,7 @@
 #include "freespace/input_error.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/space/free_space.h"
+#include "space/saved_space.h"
 #include "fuzz/saved_space_file.h"
 #include "temp_dir.h"
 
@@ -256,4 +261,55 @@ TEST(SavedSpace, AlteredLengthsAreRefusedWithPlainMessages) {
     }
   }
   EXPECT_GE(altered, 100);
+}
+
+namespace {
+
+/// The payload of a saved file's `bytes` decoded, its graph altered by `alter`, and
+/// written again into a file with a valid checksum; returns the loader's complaint.
+std::string errorWithGraphAltered(const TempDir& dir, const std::string& bytes,
+                                  const std::function<void(saved::Graph&)>& alter) {
+  saved::Space space;
+  {
+    std::istringstream in(bytes.substr(payloadStartOf(bytes)));
+    boost::archive::binary_iarchive archive(in);
+    archive >> space;
+  }
+  alter(space.graph);
+  std::ostringstream out;
+  {
+    boost::archive::binary_oarchive archive(out);
+    archive << space;
+  }
+  const std::string file = dir.file("altered_graph.fspace");
+  write(file, savedSpaceFileAround(out.str()));
+  return loadError(file);
+}
+
+}  // namespace
+
+// A graph whose parts do not fit the rest is refused naming the part.
+TEST(SavedSpace, ADamagedGraphIsRefusedNamingThePart) {
+  TempDir dir;
+  const std::string bytes = savedBytes(dir);
+  const std::vector<std::pair<std::function<void(saved::Graph&)>, std::string>> cases{
+      {[](saved::Graph& graph) { graph.nodes[0] = 1000; }, "a node of the graph"},
+      {[](saved::Graph& graph) { graph.nodes[2] = 1u << 30; }, "a node of the graph"},
+      {[](saved::Graph& graph) {
+         graph.edges.insert(graph.edges.end(), {0, 999, 0});
+       },
+       "an edge of the graph"},
+      {[](saved::Graph& graph) { graph.runCounts.pop_back(); }, "the graph's pieces"},
+      {[](saved::Graph& graph) {
+         graph.runs.insert(graph.runs.end(), {0, 0});
+       },
+       "the graph's runs"},
+      {[](saved::Graph& graph) { graph.nodes.pop_back(); }, "the graph's nodes"},
+      {[](saved::Graph& graph) { std::swap(graph.criticalAngles[0], graph.criticalAngles[1]); },
+       "the graph's critical angles"},
+  };
+  for (const auto& [alter, part] : cases) {
+    const std::string error = errorWithGraphAltered(dir, bytes, alter);
+    EXPECT_NE(error.find("inconsistent saved free space at " + part), std::string::npos) << error;
+  }
 }
