@@ -305,6 +305,13 @@ class AngleTable {
   std::vector<std::optional<AlgebraicAngle>> read_;
 };
 
+/// Frees a part of the decoded payload once it is read, so that the memory is used
+/// again by what is built from the next parts (fresh pages cost the kernel's zeroing).
+template <class T>
+void release(std::vector<T>& part) {
+  std::vector<T>().swap(part);
+}
+
 saved::Mesh savedMesh(const Mesh& mesh) {
   saved::Mesh stored;
   for (const Point3& p : mesh.vertices()) stored.vertices.insert(stored.vertices.end(), {p.x(), p.y(), p.z()});
@@ -680,6 +687,7 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
     impl->meshes.scale = space.scale;
     Arrangement& arrangement = impl->arrangement;
     for (const saved::Patch& patch : space.patches) arrangement.patches.push_back(patchOf(patch, angles));
+    release(space.patches);
     arrangement.boxIndex = std::make_shared<const PatchBoxIndex>(arrangement.patches);
     for (const saved::Curve& stored : space.curves) {
       PatchCurve curve{stored.first, stored.second, angles.set(stored.angles), {}};
@@ -695,6 +703,7 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
       }
       arrangement.curves.push_back(std::move(curve));
     }
+    release(space.curves);
     for (const saved::Overlap& stored : space.overlaps) {
       if (stored.patches.size() != 2 || stored.reachesEnd.size() != 4) throw DamagedPart("an overlap");
       arrangement.overlaps.push_back({{stored.patches[0], stored.patches[1]},
@@ -717,6 +726,7 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
       }
       arrangement.subdivisions.push_back(std::move(subdivision));
     }
+    release(space.subdivisions);
     if (space.gluings.size() != 3) throw DamagedPart("gluings");
     arrangement.acrossCurves = gluingOf(space.gluings[0], angles);
     arrangement.aroundSpirals = gluingOf(space.gluings[1], angles);
