@@ -17,31 +17,13 @@ using namespace freespace;
 
 namespace {
 
-/// Whether a path of edges joins two nodes (breadth-first search).
-bool joined(const CellGraph& graph, std::uint32_t from, std::uint32_t to) {
-  std::vector<std::vector<std::uint32_t>> next(graph.nodes().size());
-  for (const CellGraphEdge& edge : graph.edges()) {
-    next[edge.from].push_back(edge.to);
-    next[edge.to].push_back(edge.from);
-  }
-  std::vector<bool> reached(graph.nodes().size(), false);
-  std::vector<std::uint32_t> queue{from};
-  reached[from] = true;
-  for (std::size_t at = 0; at < queue.size(); ++at) {
-    for (std::uint32_t node : next[queue[at]]) {
-      if (!reached[node]) reached[node] = true, queue.push_back(node);
-    }
-  }
-  return reached[to];
-}
-
 /// "yes" or "no" when the graph joins the start's and the goal's nodes or not, then
 /// whether they share a cell; "blocked" when one of them is.
 std::string startAndGoal(const FreeSpace& space, const PlanarProblem& problem) {
   const std::optional<std::uint32_t> start = space.nodeOf(problem.start), goal = space.nodeOf(problem.goal);
   if (!start || !goal) return "blocked";
   const bool sameCell = space.locate(problem.start).cell == space.locate(problem.goal).cell;
-  return std::string(joined(space.cellGraph(), *start, *goal) ? "yes" : "no") + " (" +
+  return std::string(space.cellGraph().route(*start, *goal) ? "yes" : "no") + " (" +
          (sameCell ? "one cell" : "two cells") + ")";
 }
 

@@ -209,6 +209,16 @@ TEST(CliFreeSpace, GraphPrintsNodesAndEdges) {
   const std::vector<nlohmann::json> ends = batchAnswers("locate", "keyhole.cfg", "0 -2.25 0\n0 2.25 0\n");
   ASSERT_EQ(ends.size(), 2u);
   EXPECT_NE(ends[0]["node"], ends[1]["node"]);
+  // The route from the start's node to the goal's: the bar must turn to pass the slot,
+  // so it leaves the start's node (theta about 0) and comes back to theta about 0.
+  const nlohmann::json& route = graph["problem"]["route"];
+  ASSERT_TRUE(route.is_array());
+  EXPECT_EQ(route.front(), ends[0]["node"]);
+  EXPECT_EQ(route.back(), ends[1]["node"]);
+  EXPECT_GE(route.size(), 3u);
+  const CommandResult narrow = runFreespace("graph --cfg '" + kProblems + "keyhole_narrow.cfg'");
+  ASSERT_EQ(narrow.status, 0) << narrow.err;
+  EXPECT_NE(narrow.out.find("no route (they lie in different cells"), std::string::npos) << narrow.out;
   for (const nlohmann::json& end : ends) {
     const nlohmann::json& node = nodes[end["node"].get<int>()];
     ASSERT_FALSE(node["from"].is_null());

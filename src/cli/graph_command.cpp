@@ -45,6 +45,34 @@ nlohmann::json graphJson(const FreeSpace& space) {
   return {{"critical_angles", critical.size()}, {"nodes", nodes}, {"edges", edges}};
 }
 
+/// The problem's start and goal (with --cfg): their nodes, and the route of nodes the
+/// graph joins them by (null when none: they lie in different cells, or one is
+/// blocked).
+nlohmann::json routeJson(const FreeSpace& space, const PlanarProblem& problem) {
+  const std::optional<std::uint32_t> start = space.nodeOf(problem.start), goal = space.nodeOf(problem.goal);
+  nlohmann::json answer = {{"start_node", start ? nlohmann::json(*start) : nlohmann::json()},
+                           {"goal_node", goal ? nlohmann::json(*goal) : nlohmann::json()},
+                           {"route", nlohmann::json()}};
+  if (start && goal) {
+    if (const auto route = space.cellGraph().route(*start, *goal)) answer["route"] = *route;
+  }
+  return answer;
+}
+
+void printRoute(const nlohmann::json& route) {
+  const auto node = [](const nlohmann::json& value) {
+    return value.is_null() ? std::string("blocked") : "node " + value.dump();
+  };
+  std::cout << "start: " << node(route["start_node"]) << ", goal: " << node(route["goal_node"]) << "; ";
+  if (route["route"].is_null()) {
+    std::cout << "no route (they lie in different cells, or one is blocked)\n";
+    return;
+  }
+  std::cout << "route:";
+  for (const nlohmann::json& step : route["route"]) std::cout << " " << step;
+  std::cout << "\n";
+}
+
 }  // namespace
 
 void addGraphCommand(CLI::App& app) {
@@ -54,13 +82,16 @@ void addGraphCommand(CLI::App& app) {
   };
   auto options = std::make_shared<Options>();
   CLI::App* command = app.add_subcommand(
-      "graph", "Print the free cell graph: faces of the slices over angle intervals (nodes) and where they meet");
+      "graph",
+      "Print the free cell graph: faces of the slices over angle intervals (nodes) and where they meet; with --cfg, "
+      "the route of nodes from the start to the goal");
   options->input.addOptions(*command);
   command->add_flag("--json", options->json, "print JSON");
   command->callback([options]() {
     LoadedProblem loaded;
     const std::unique_ptr<FreeSpace> space = options->input.build(loaded);
-    const nlohmann::json graph = graphJson(*space);
+    nlohmann::json graph = graphJson(*space);
+    if (!loaded.cfgPath.empty()) graph["problem"] = routeJson(*space, loaded.problem);
     if (options->json) {
       std::cout << graph.dump(2) << "\n";
       return;
@@ -80,6 +111,7 @@ void addGraphCommand(CLI::App& app) {
     for (const nlohmann::json& edge : graph["edges"]) {
       std::cout << "edge " << edge["from"] << " - " << edge["to"] << " at theta " << edge["angle"] << "\n";
     }
+    if (graph.contains("problem")) printRoute(graph["problem"]);
   });
 }
 

@@ -777,6 +777,30 @@ void CellGraph::checkParts(std::size_t cellCount, AngleAlgebra& algebra) const {
   checkRuns(parts_.unboundedRuns);
 }
 
+std::optional<std::vector<std::uint32_t>> CellGraph::route(std::uint32_t from, std::uint32_t to) const {
+  std::vector<std::vector<std::uint32_t>> next(parts_.nodes.size());
+  for (const CellGraphEdge& edge : parts_.edges) {
+    next[edge.from].push_back(edge.to);
+    next[edge.to].push_back(edge.from);
+  }
+  // Breadth first from `from`, each node reached once, with the node it was reached from.
+  constexpr std::uint32_t kUnreached = ~std::uint32_t{0};
+  std::vector<std::uint32_t> reachedFrom(parts_.nodes.size(), kUnreached);
+  std::vector<std::uint32_t> queue{from};
+  reachedFrom[from] = from;
+  for (std::size_t at = 0; at < queue.size() && reachedFrom[to] == kUnreached; ++at) {
+    for (std::uint32_t node : next[queue[at]]) {
+      if (reachedFrom[node] != kUnreached) continue;
+      reachedFrom[node] = queue[at];
+      queue.push_back(node);
+    }
+  }
+  if (reachedFrom[to] == kUnreached) return std::nullopt;
+  std::vector<std::uint32_t> nodes{to};
+  while (nodes.back() != from) nodes.push_back(reachedFrom[nodes.back()]);
+  return std::vector<std::uint32_t>(nodes.rbegin(), nodes.rend());
+}
+
 std::uint32_t CellGraph::intervalOf(const AlgebraicAngle& angle, AngleAlgebra& algebra) const {
   const std::vector<AlgebraicAngle>& angles = parts_.criticalAngles;
   if (angles.empty()) return 0;

@@ -92,6 +92,10 @@ class CellGraph {
   const std::vector<CellGraphNode>& nodes() const { return parts_.nodes; }
   const std::vector<CellGraphEdge>& edges() const { return parts_.edges; }
 
+  /// The fewest nodes from `from` to `to` joined by edges (both included), or none
+  /// when no path of edges joins them (then they lie in different cells).
+  std::optional<std::vector<std::uint32_t>> route(std::uint32_t from, std::uint32_t to) const;
+
   /// The interval whose open arc holds an angle; a critical angle gets the interval
   /// it starts.
   std::uint32_t intervalOf(const AlgebraicAngle& angle, AngleAlgebra& algebra) const;
