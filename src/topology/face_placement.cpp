@@ -77,10 +77,9 @@ std::optional<std::pair<slices::Point, int>> FacePlacement::nearMiddle(const Alg
   const std::optional<Sign> side = certainSign(slice.line(patch).nx);
   const auto lambdas = slice.pieceOf(arrangement_, piece.patch, slabOf(piece), piece.gap);
   if (!side || *side == Sign::Zero || !lambdas) return std::nullopt;
-  const Interval middle = (lambdas->first + lambdas->second) / Interval(2);
-  const std::array<Interval, 2> end0 = slice.end(patch, 0), end1 = slice.end(patch, 1);
-  const Interval x = end0[0] + middle * (end1[0] - end0[0]), y = end0[1] + middle * (end1[1] - end0[1]);
-  return std::pair(Point{Rational(x.midpoint()), Rational(y.midpoint())}, *side == Sign::Positive ? 1 : -1);
+  const std::array<Interval, 2> middle = slice.pointOn(patch, (lambdas->first + lambdas->second) / Interval(2));
+  return std::pair(Point{Rational(middle[0].midpoint()), Rational(middle[1].midpoint())},
+                   *side == Sign::Positive ? 1 : -1);
 }
 
 std::array<double, 4> FacePlacement::boxOf(const IntervalLoops& loops,
@@ -90,15 +89,10 @@ std::array<double, 4> FacePlacement::boxOf(const IntervalLoops& loops,
   std::array<double, 4> box{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   for (std::uint32_t index : members) {
     const Piece& piece = loops.pieces[index];
-    const PatchGeometry& patch = arrangement_.patches[piece.patch];
-    const std::array<Interval, 2> end0 = slice.end(patch, 0), end1 = slice.end(patch, 1);
-    const auto lambdas = slice.pieceOf(arrangement_, piece.patch, slabOf(piece), piece.gap);
-    const Interval low = lambdas ? lambdas->first : Interval(0), high = lambdas ? lambdas->second : Interval(1);
-    for (const Interval& lambda : {low, high}) {
+    for (const std::array<Interval, 2>& point : slice.pieceEnds(arrangement_, piece.patch, slabOf(piece), piece.gap)) {
       for (int axis : {0, 1}) {
-        const Interval value = end0[axis] + lambda * (end1[axis] - end0[axis]);
-        box[axis] = std::min(box[axis], value.lower());
-        box[axis + 2] = std::max(box[axis + 2], value.upper());
+        box[axis] = std::min(box[axis], point[axis].lower());
+        box[axis + 2] = std::max(box[axis + 2], point[axis].upper());
       }
     }
   }

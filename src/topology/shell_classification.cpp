@@ -36,12 +36,10 @@ std::optional<PieceMiddle> middleInDoubles(const Arrangement& arrangement, SubFa
   const auto piece = slice.pieceOf(arrangement, face.patch, slab, gap);
   if (!piece || !(piece->first.upper() < piece->second.lower())) return std::nullopt;
   const double lambda = 0.5 * piece->first.upper() + 0.5 * piece->second.lower();
-  const std::array<Interval, 2> end0 = slice.end(patch, 0), end1 = slice.end(patch, 1);
+  const std::array<Interval, 2> middle = slice.pointOn(patch, Interval(lambda));
   const LineAtAngle<Interval> line = slice.line(patch);
   PieceMiddle result;
-  for (int axis = 0; axis < 2; ++axis) {
-    result.middle[axis] = (end0[axis] + Interval(lambda) * (end1[axis] - end0[axis])).midpoint();
-  }
+  for (int axis = 0; axis < 2; ++axis) result.middle[axis] = middle[axis].midpoint();
   result.nx = line.nx.midpoint();
   result.ny = line.ny.midpoint();
   if (result.nx == 0 && result.ny == 0) return std::nullopt;

@@ -41,15 +41,11 @@ IntervalLoops piecesAt(const Arrangement& arrangement, const CellGraph& graph, c
 std::array<std::array<double, 2>, 2> endsOf(const Arrangement& arrangement, const slices::IntervalSlice& slice,
                                             const Piece& piece) {
   const RoundingScope rounding;
-  const PatchGeometry& patch = arrangement.patches[piece.patch];
-  const std::array<Interval, 2> end0 = slice.end(patch, 0), end1 = slice.end(patch, 1);
-  const auto lambdas =
-      slice.pieceOf(arrangement, piece.patch, arrangement.subdivisions[piece.patch].slabs[piece.slab], piece.gap);
-  const Interval low = lambdas ? lambdas->first : Interval(0), high = lambdas ? lambdas->second : Interval(1);
+  const auto interval =
+      slice.pieceEnds(arrangement, piece.patch, arrangement.subdivisions[piece.patch].slabs[piece.slab], piece.gap);
   std::array<std::array<double, 2>, 2> ends{};
   for (int k : {0, 1}) {
-    const Interval& lambda = k == 0 ? low : high;
-    for (int axis : {0, 1}) ends[k][axis] = (end0[axis] + lambda * (end1[axis] - end0[axis])).midpoint();
+    for (int axis : {0, 1}) ends[k][axis] = interval[k][axis].midpoint();
   }
   return ends;
 }

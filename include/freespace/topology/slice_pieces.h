@@ -73,6 +73,12 @@ struct SliceIn {
 
   LineAtAngle<T> line(const PatchGeometry& patch) const { return lineAtAngle(lineOf<T>(patch.line), cosine, sine); }
 
+  /// The point a fraction lambda along a patch's segment, from end 0.
+  std::array<T, 2> pointOn(const PatchGeometry& patch, const T& lambda) const {
+    const std::array<T, 2> end0 = end(patch, 0), end1 = end(patch, 1);
+    return {end0[0] + lambda * (end1[0] - end0[0]), end0[1] + lambda * (end1[1] - end0[1])};
+  }
+
   /// Where another patch's line crosses a patch's segment, as lambda; nothing when
   /// the segment may be parallel to it.
   std::optional<T> crossingLambda(const PatchGeometry& segment, const PatchGeometry& other) const {
@@ -97,6 +103,19 @@ struct SliceIn {
     const std::optional<T> high = gap == slab.curves.size() ? T(1) : lambdaOf(slab.curves[gap]);
     if (!low || !high) return std::nullopt;
     return std::make_pair(*low, *high);
+  }
+
+  /// The ends of the piece at index `gap` of `slab` (low lambda, then high); the
+  /// segment's ends when a crossing is uncertain (they hold the piece).
+  std::array<std::array<T, 2>, 2> pieceEnds(const Arrangement& arrangement, std::uint32_t patch,
+                                            const PatchSlab& slab, std::size_t gap) const {
+    const PatchGeometry& geometry = arrangement.patches[patch];
+    const std::array<T, 2> end0 = end(geometry, 0), end1 = end(geometry, 1);
+    const auto lambdas = pieceOf(arrangement, patch, slab, gap);
+    const auto at = [&](const T& lambda) {
+      return std::array<T, 2>{end0[0] + lambda * (end1[0] - end0[0]), end0[1] + lambda * (end1[1] - end0[1])};
+    };
+    return {at(lambdas ? lambdas->first : T(0)), at(lambdas ? lambdas->second : T(1))};
   }
 };
 
