@@ -92,12 +92,7 @@ class CellGraphSweep {
     }
   }
 
-  bool hasFreePiece(std::uint32_t patch, std::uint32_t slab) const {
-    const std::size_t first = graph_.pieceIndex(patch, slab, 0);
-    const std::size_t gaps = arrangement_.subdivisions[patch].slabs[slab].faces.size();
-    return std::any_of(cellOfPiece_.begin() + first, cellOfPiece_.begin() + first + gaps,
-                       [](std::uint32_t cell) { return cell != kNotFree; });
-  }
+  bool hasFreePiece(std::uint32_t patch, std::uint32_t slab) const { return !freePiecesOf(patch, slab).empty(); }
 
   /// A slab over the whole circle: from an event back to it, or without events.
   bool wholeCircle(const PatchSlab& slab) { return algebra_.compare(slab.from, slab.to) == 0; }
@@ -205,12 +200,9 @@ class CellGraphSweep {
   }
 
   void appendFreePieces(IntervalLoops& loops, std::uint32_t patch, std::uint32_t slab) const {
-    const std::size_t gaps = arrangement_.subdivisions[patch].slabs[slab].faces.size();
-    for (std::uint32_t gap = 0; gap < gaps; ++gap) {
-      const std::size_t index = graph_.pieceIndex(patch, slab, gap);
-      if (cellOfPiece_[index] == kNotFree) continue;
+    for (std::size_t index : freePiecesOf(patch, slab)) {
       loops.pieceIndices.push_back(index);
-      loops.pieces.push_back({patch, slab, gap});
+      loops.pieces.push_back(pieceOfIndex_[index]);
     }
   }
 
@@ -820,9 +812,9 @@ std::optional<std::uint32_t> CellGraph::nodeAtRun(const std::vector<NodeRun>& ru
 std::optional<std::uint32_t> CellGraph::nodeOf(const RayHit& hit, const AlgebraicAngle& rationalAngle,
                                                AngleAlgebra& algebra) const {
   const std::uint32_t interval = intervalOf(rationalAngle, algebra);
-  if (hit.kind == RayHit::Kind::Nothing) return nodeAtRun(parts_.unboundedRuns, interval);
+  if (hit.kind == RayHit::Kind::Nothing) return unboundedNode(interval);
   if (hit.kind != RayHit::Kind::SubFace || !hit.fromPositiveSide) return std::nullopt;
-  return nodeAtRun(parts_.runsOfPiece[pieceIndex(hit.face.patch, hit.slab, hit.gap)], interval);
+  return nodeOfPiece(pieceIndex(hit.face.patch, hit.slab, hit.gap), interval);
 }
 
 }  // namespace freespace
