@@ -12,9 +12,10 @@ void addLocateCommand(CLI::App& app) {
       app, "locate",
       "Locate configurations: free (with the free cell and the node of the cell graph) or blocked, decided exactly",
       [](const FreeSpace& space, const Pose2& pose, bool json) {
-        const Location location = space.locate(pose);
+        const NodeLocation located = space.locateNode(pose);
+        const Location& location = located.location;
         std::int64_t node = -1;  // none
-        if (const std::optional<std::uint32_t> found = location.free ? space.nodeOf(pose) : std::nullopt) node = *found;
+        if (located.node) node = *located.node;
         if (json) {
           nlohmann::json answer = {{"x", pose.x}, {"y", pose.y}, {"theta", pose.theta}, {"free", location.free}};
           if (location.free) answer["cell"] = location.cell;

@@ -64,12 +64,11 @@ PixelsMet writePixels(const FreeSpace& space, const View& view, double theta, st
       std::string colour;
       if (column < view.columns) {
         const Pose2 pose{view.left + (column + 0.5) * pixelWidth, y, theta};
-        const Location location = space.locate(pose);
+        const NodeLocation located = space.locateNode(pose);
+        const Location& location = located.location;
         colour = location.free ? cellColour(location.cell, false) : kBlocked;
         if (location.free) met.cells.insert(location.cell);
-        if (const std::optional<std::uint32_t> node = location.free ? space.nodeOf(pose) : std::nullopt) {
-          met.nodes[*node].push_back({pose.x, pose.y});
-        }
+        if (located.node) met.nodes[*located.node].push_back({pose.x, pose.y});
       }
       if (colour == runColour) continue;
       if (!runColour.empty()) {

@@ -125,12 +125,15 @@ const CellGraph& FreeSpace::cellGraph() const {
   return *impl_->graph;
 }
 
-std::optional<std::uint32_t> FreeSpace::nodeOf(const Pose2& pose) const {
+std::optional<std::uint32_t> FreeSpace::nodeOf(const Pose2& pose) const { return locateNode(pose).node; }
+
+NodeLocation FreeSpace::locateNode(const Pose2& pose) const {
   const CellGraph& graph = cellGraph();
   const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
   const RayHit hit = impl_->firstHit(pose, at);
-  if (!impl_->locationOf(hit).free) return std::nullopt;
-  return graph.nodeOf(hit, at, impl_->algebra);
+  NodeLocation answer{impl_->locationOf(hit), std::nullopt};
+  if (answer.location.free) answer.node = graph.nodeOf(hit, at, impl_->algebra);
+  return answer;
 }
 
 Clearance FreeSpace::clearance(const Pose2& pose) const {

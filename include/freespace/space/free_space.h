@@ -41,6 +41,12 @@ struct Location {
   std::uint32_t cell = 0;
 };
 
+/// Where a configuration lies, with its node of the cell graph when it is free.
+struct NodeLocation {
+  Location location;
+  std::optional<std::uint32_t> node;
+};
+
 /// The clearance of a configuration (docs/design.md section 7): how far the robot can
 /// slide horizontally, in any direction, before it touches the environment; for a
 /// blocked configuration minus the shortest horizontal slide that frees it.
@@ -107,6 +113,8 @@ class FreeSpace {
   /// The node of the cell graph whose face holds a configuration; none when it is
   /// blocked.
   std::optional<std::uint32_t> nodeOf(const Pose2& pose) const;
+  /// locate and nodeOf from one ray.
+  NodeLocation locateNode(const Pose2& pose) const;
 
   /// The number of free cells, the unbounded one included.
   std::size_t cellCount() const;
