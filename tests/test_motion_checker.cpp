@@ -110,6 +110,21 @@ TEST(MotionChecker, ASlideIntoAWallStopsBeforeIt) {
   EXPECT_GE(free.minClearance, 0.98 * left);
 }
 
+// keepsClearance on a slide toward the contact: a level the slide keeps (below
+// the clearance left at its end) is certified, one above it never is.
+TEST(MotionChecker, KeepsClearanceOnlyAboveTheLeastAlongTheMotion) {
+  const LoadedProblem problem = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/keyhole.cfg");
+  const FreeSpace space(problem.robot, problem.world);
+  const MotionChecker motions(space);
+  const Pose2 start = problem.problem.start;
+  const Clearance clearance = space.clearance(start);
+  const double slide = 0.6 * clearance.upper;  // toward the contact
+  const Pose2 to{start.x + slide * clearance.direction[0], start.y + slide * clearance.direction[1], start.theta};
+  const double left = clearance.upper - slide;  // at its end, the least along it
+  EXPECT_TRUE(motions.keepsClearance(start, to, 0.95 * left));
+  EXPECT_FALSE(motions.keepsClearance(start, to, 1.01 * left));
+}
+
 // Where the environment lies above the robot's heights nothing can be touched: the
 // clearance is unbounded and any motion is free at once (an unbounded clearance once
 // made the check halve the motion without end).

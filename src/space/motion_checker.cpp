@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace freespace {
@@ -10,13 +11,6 @@ namespace {
 
 /// The smallest fraction of a motion a part is halved down to.
 constexpr double kShortestPart = 1e-12;
-
-/// A part of the motion between fractions `from` and `to`, with the clearances there
-/// (certified lower bounds; 0 or less where the configuration is not free).
-struct Part {
-  double from, to;
-  double clearanceFrom, clearanceTo;
-};
 
 /// Theta's change along the shorter arc, as OMPL's SO(2) space interpolates (half a
 /// turn goes the direct way).
@@ -44,8 +38,16 @@ Pose2 MotionChecker::interpolate(const Pose2& from, const Pose2& to, double t) {
   return {from.x + t * (to.x - from.x), from.y + t * (to.y - from.y), from.theta + t * shorterTurn(from.theta, to.theta)};
 }
 
-MotionCheck MotionChecker::check(const Pose2& from, const Pose2& to, double clearanceSlack) const {
-  MotionCheck result;
+/// A part of the motion between fractions `from` and `to`, with the clearances there
+/// (certified lower bounds; 0 or less where the configuration is not free).
+struct MotionChecker::Part {
+  double from, to;
+  double clearanceFrom, clearanceTo;
+};
+
+template <typename Certain, typename Hopeless>
+void MotionChecker::certify(const Pose2& from, const Pose2& to, Certain certain, Hopeless hopeless,
+                            std::size_t queryLimit, MotionCheck& result) const {
   const auto clearanceAt = [&](double t) {
     ++result.clearanceQueries;
     const Clearance clearance = space_.clearance(interpolate(from, to, t));
@@ -61,25 +63,40 @@ MotionCheck MotionChecker::check(const Pose2& from, const Pose2& to, double clea
   std::vector<Part> parts{{0, 1, clearanceAt(0), clearanceAt(1)}};
   while (!parts.empty()) {
     const Part part = parts.back();
-    parts.pop_back();
-    if (part.clearanceFrom <= 0) break;  // blocked at its start
+    if (part.clearanceFrom <= 0 || hopeless(part.clearanceFrom) || hopeless(part.clearanceTo)) break;
     const double least = leastClearanceOn(part.clearanceFrom, part.clearanceTo, (part.to - part.from) * length);
-    // (Without a slack, an unbounded clearance, where nothing can be touched, needs no comparison.)
-    const bool certain =
-        least > 0 && (clearanceSlack >= 1 || least >= (1 - clearanceSlack) * std::min(part.clearanceFrom, part.clearanceTo));
-    if (certain) {
+    if (certain(least, part.clearanceFrom, part.clearanceTo)) {
+      parts.pop_back();
       result.lastFreeFraction = part.to;
       result.minClearance = std::min(result.minClearance, least);
       continue;
     }
-    if (part.to - part.from < kShortestPart) break;
+    if (part.to - part.from < kShortestPart || result.clearanceQueries >= queryLimit) break;
+    parts.pop_back();
     const double middle = 0.5 * (part.from + part.to), clearanceMiddle = clearanceAt(middle);
     parts.push_back({middle, part.to, clearanceMiddle, part.clearanceTo});
     parts.push_back({part.from, middle, part.clearanceFrom, clearanceMiddle});
   }
   result.free = parts.empty() && result.lastFreeFraction == 1;
   if (!result.free) result.minClearance = 0;
+}
+
+MotionCheck MotionChecker::check(const Pose2& from, const Pose2& to, double clearanceSlack) const {
+  MotionCheck result;
+  // (Without a slack, an unbounded clearance, where nothing can be touched, needs no comparison.)
+  const auto certain = [&](double least, double clearanceFrom, double clearanceTo) {
+    return least > 0 && (clearanceSlack >= 1 || least >= (1 - clearanceSlack) * std::min(clearanceFrom, clearanceTo));
+  };
+  certify(from, to, certain, [](double) { return false; }, SIZE_MAX, result);
   return result;
+}
+
+bool MotionChecker::keepsClearance(const Pose2& from, const Pose2& to, double level, std::size_t queryLimit) const {
+  MotionCheck result;
+  const auto certain = [&](double least, double, double) { return least >= level; };
+  const auto hopeless = [&](double clearance) { return clearance < level; };
+  certify(from, to, certain, hopeless, queryLimit, result);
+  return result.free;
 }
 
 }  // namespace freespace

@@ -38,7 +38,25 @@ class MotionChecker {
   /// certify freedom; 0.02 for a bound on the clearance within 2%).
   MotionCheck check(const Pose2& from, const Pose2& to, double clearanceSlack = 1) const;
 
+  /// Whether the clearance stays at least `level` (> 0) along the whole motion,
+  /// certified; false as soon as a configuration on it has less, or when certifying
+  /// would take more than `queryLimit` clearances (false is not a proof).
+  bool keepsClearance(const Pose2& from, const Pose2& to, double level, std::size_t queryLimit = 256) const;
+
+  /// The robot's largest distance from its vertical axis, rounded up: the clearance's
+  /// Lipschitz constant in theta.
+  double reach() const { return reach_; }
+
  private:
+  struct Part;
+  /// Halves the motion's parts, the nearest first, until `certain` accepts each
+  /// (given the least clearance the Lipschitz bound guarantees on it and its ends'
+  /// clearances), a part starts blocked, `hopeless` rejects one, or the parts or
+  /// queries run out; fills `result` (free when every part was accepted).
+  template <typename Certain, typename Hopeless>
+  void certify(const Pose2& from, const Pose2& to, Certain certain, Hopeless hopeless, std::size_t queryLimit,
+               MotionCheck& result) const;
+
   const FreeSpace& space_;
   double reach_;  // the robot's largest distance from its vertical axis, rounded up
 };
