@@ -300,3 +300,59 @@ TEST(CliFreeSpace, LocateReadsASavedFreeSpace) {
   EXPECT_EQ(again.status, 2);
   EXPECT_EQ(again.err, "error: " + saved + ": already exists (not overwritten)\n");
 }
+
+// plan: a solved problem's JSON (the keys the issue names), its path file read back
+// equal to the waypoints; an infeasible one exits 0 with its proof; bad starts, and
+// a saved space of other meshes, exit 2 naming them.
+TEST(CliFreeSpace, PlanPrintsThePathAndItsBoundsAndWritesThePathFile) {
+  TempDir dir;
+  const std::string pathFile = dir.file("flip.path");
+  const CommandResult result =
+      runFreespace("plan --json --cfg '" + kProblems + "flip_window.cfg' --path-out '" + pathFile + "'");
+  ASSERT_EQ(result.status, 0) << result.err;
+  const nlohmann::json plan = nlohmann::json::parse(result.out);
+  EXPECT_EQ(plan["status"], "solved");
+  for (const char* key : {"clearance_lower", "clearance_upper", "length", "waypoints", "seconds"}) {
+    EXPECT_TRUE(plan.contains(key)) << key;
+  }
+  EXPECT_GE(plan["clearance_lower"].get<double>(), 0.98 * plan["clearance_upper"].get<double>());
+  std::ifstream in(pathFile);
+  std::size_t lines = 0;
+  for (double x, y, theta; in >> x >> y >> theta; ++lines) {
+    ASSERT_LT(lines, plan["waypoints"].size());
+    EXPECT_EQ(x, plan["waypoints"][lines][0].get<double>());
+    EXPECT_EQ(theta, plan["waypoints"][lines][2].get<double>());
+  }
+  EXPECT_EQ(lines, plan["waypoints"].size());
+  const CommandResult again =
+      runFreespace("plan --cfg '" + kProblems + "flip_window.cfg' --path-out '" + pathFile + "'");
+  EXPECT_EQ(again.status, 2);
+  EXPECT_EQ(again.err, "error: " + pathFile + ": already exists (not overwritten)\n");
+}
+
+TEST(CliFreeSpace, PlanProvesInfeasibilityAndRefusesBadInput) {
+  const CommandResult infeasible = runFreespace("plan --cfg '" + kProblems + "keyhole_narrow.cfg'");
+  EXPECT_EQ(infeasible.status, 0) << infeasible.err;
+  EXPECT_EQ(infeasible.out.rfind("infeasible: the start lies in free cell ", 0), 0u) << infeasible.out;
+  const std::string meshes = "'" + kProblems + "flip_window_robot.obj' '" + kProblems + "flip_window_world.obj'";
+  const CommandResult blocked = runFreespace("plan " + meshes + " --start 0 0 1.5707963 --goal 0 0 3.0790926535897931");
+  EXPECT_EQ(blocked.status, 2);
+  EXPECT_EQ(blocked.err.rfind("error: --start: the robot at (0, 0, 1.5707963", 0), 0u) << blocked.err;
+  const CommandResult noGoal = runFreespace("plan " + meshes + " --start 0 0 3");
+  EXPECT_EQ(noGoal.status, 2);
+  const CommandResult outside = runFreespace("plan --cfg '" + kProblems + "flip_window.cfg' --goal 50 0 3");
+  EXPECT_EQ(outside.status, 2);
+  EXPECT_NE(outside.err.find("--goal: (50, 0, 3) lies outside the volume"), std::string::npos) << outside.err;
+  const CommandResult notANumber = runFreespace("plan --cfg '" + kProblems + "flip_window.cfg' --goal nan 0 3");
+  EXPECT_EQ(notANumber.status, 2);
+
+  TempDir dir;
+  const std::string saved = dir.file("keyhole_narrow.fspace");
+  ASSERT_EQ(runFreespace("build --cfg '" + kProblems + "keyhole_narrow.cfg' --save '" + saved + "'").status, 0);
+  const CommandResult other = runFreespace("plan --cfg '" + kProblems + "flip_window.cfg' --space '" + saved + "'");
+  EXPECT_EQ(other.status, 2);
+  EXPECT_EQ(other.err.rfind("error: " + saved + ": was built from another robot", 0), 0u) << other.err;
+  const CommandResult same = runFreespace("plan --cfg '" + kProblems + "keyhole_narrow.cfg' --space '" + saved + "'");
+  EXPECT_EQ(same.status, 0) << same.err;
+  EXPECT_EQ(same.out.rfind("infeasible", 0), 0u);
+}

@@ -12,6 +12,7 @@
 #include "freespace/problem/planar_problem.h"
 #include "freespace/space/face_path.h"
 #include "freespace/space/free_space.h"
+#include "freespace/space/max_clearance_path.h"
 #include "freespace/space/motion_checker.h"
 #include "freespace/topology/cell_graph.h"
 #include "freespace/topology/slice_faces.h"

@@ -17,5 +17,6 @@ void addExportCommand(CLI::App& app);
 void addRepairCommand(CLI::App& app);
 void addClearanceCommand(CLI::App& app);
 void addGraphCommand(CLI::App& app);
+void addPlanCommand(CLI::App& app);
 
 }  // namespace freespace::cli

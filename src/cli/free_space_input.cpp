@@ -7,6 +7,7 @@
 #include <iostream>
 #include <string>
 
+#include "freespace/input_error.h"
 #include "number_checks.h"
 #include "stop_signals.h"
 
@@ -21,7 +22,33 @@ std::string shortest(double value) {
   return std::string(text.data(), end);
 }
 
+/// An InputError naming `file` unless `saved` was built from `loaded`: the same
+/// vertices and triangles, each vertex moved by no more than the perturbation.
+void checkBuiltFrom(const PerturbedMeshes& saved, const Mesh& loaded, const std::string& which,
+                    const std::string& file) {
+  const Mesh& built = which == "robot" ? saved.robot : saved.world;
+  if (built.vertices().size() != loaded.vertices().size() || built.triangles().size() != loaded.triangles().size()) {
+    throw InputError(file, "was built from another " + which + " (" + std::to_string(built.triangles().size()) +
+                               " triangles, " + std::to_string(built.vertices().size()) + " vertices; the " + which +
+                               " given has " + std::to_string(loaded.triangles().size()) + " and " +
+                               std::to_string(loaded.vertices().size()) + ")");
+  }
+  const double moved = 2 * saved.record.absoluteSize / saved.scale;
+  for (std::size_t vertex = 0; vertex < built.vertices().size(); ++vertex) {
+    const Point3 original = loaded.vertices()[vertex], position = built.vertices()[vertex] / saved.scale;
+    if ((position - original).norm() > moved + 1e-12 * (1 + original.norm())) {
+      throw InputError(file, "was built from another " + which + ": its vertex " + std::to_string(vertex) +
+                                 " lies elsewhere than the " + which + "'s given");
+    }
+  }
+}
+
 }  // namespace
+
+void FreeSpaceInput::addSpaceFileOption(CLI::App& command) {
+  command.add_option("--space", spaceFile_,
+                     "free space saved by build --save from the same meshes: read instead of built");
+}
 
 void FreeSpaceInput::addOptions(CLI::App& command) {
   scene_.addOptions(command, true);
@@ -38,6 +65,12 @@ void FreeSpaceInput::addOptions(CLI::App& command) {
 std::unique_ptr<FreeSpace> FreeSpaceInput::build(LoadedProblem& loaded) const {
   if (const std::optional<std::string> saved = scene_.savedSpaceFile()) return FreeSpace::load(*saved);
   loaded = scene_.load();
+  if (!spaceFile_.empty()) {
+    std::unique_ptr<FreeSpace> space = FreeSpace::load(spaceFile_);
+    checkBuiltFrom(space->meshes(), loaded.robot, "robot", spaceFile_);
+    checkBuiltFrom(space->meshes(), loaded.world, "world", spaceFile_);
+    return space;
+  }
   FreeSpaceOptions options;
   options.perturbation.seed = seed_;
   options.perturbation.relativeSize = perturbation_;

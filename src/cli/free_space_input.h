@@ -16,11 +16,15 @@ namespace freespace::cli {
 class FreeSpaceInput {
  public:
   void addOptions(CLI::App& command);
+  /// Adds "--space FILE": the meshes (and problem) are loaded as without it, the free
+  /// space is read from FILE, which must have been built from those meshes.
+  void addSpaceFileOption(CLI::App& command);
   std::unique_ptr<FreeSpace> build(LoadedProblem& loaded) const;
   std::optional<std::string> savedSpaceFile() const { return scene_.savedSpaceFile(); }
 
  private:
   SceneInput scene_;
+  std::string spaceFile_;
   std::uint64_t seed_ = PerturbationSettings{}.seed;
   double perturbation_ = PerturbationSettings{}.relativeSize;
   double memoryLimitGigabytes_ = 0;  // 0: the machine's memory

@@ -31,6 +31,7 @@ int run(int argc, char** argv) {
   freespace::cli::addLocateCommand(app);
   freespace::cli::addClearanceCommand(app);
   freespace::cli::addGraphCommand(app);
+  freespace::cli::addPlanCommand(app);
   freespace::cli::addSliceCommand(app);
   freespace::cli::addExportCommand(app);
   freespace::cli::addRepairCommand(app);

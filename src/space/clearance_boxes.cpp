@@ -1,0 +1,290 @@
+#include "clearance_boxes.h"
+
+#include <algorithm>
+#include <cmath>
+#include <queue>
+
+#include "freespace/numbers/angle_reduction.h"
+
+namespace freespace {
+
+namespace {
+
+/// `count` + 1 edges from `low` to `high`, the last exactly `high` (boxes that touch
+/// share their edges' values exactly, and halving keeps them exact).
+std::vector<double> edgesBetween(double low, double high, int count) {
+  std::vector<double> edges(count + 1);
+  for (int i = 0; i < count; ++i) edges[i] = low + (high - low) * i / count;
+  edges[count] = high;
+  return edges;
+}
+
+/// The index of the interval between consecutive edges that holds `value` (clamped).
+std::size_t intervalOf(const std::vector<double>& edges, double value) {
+  const auto above = std::upper_bound(edges.begin(), edges.end(), value);
+  const std::ptrdiff_t index = (above - edges.begin()) - 1;
+  return static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(index, 0, static_cast<std::ptrdiff_t>(edges.size()) - 2));
+}
+
+bool closedOverlap(double lowA, double highA, double lowB, double highB) { return lowA <= highB && lowB <= highA; }
+
+}  // namespace
+
+ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 2>& low,
+                               const std::array<double, 2>& high, double reach, int across)
+    : space_(space), reach_(reach) {
+  const double side = std::max(high[0] - low[0], high[1] - low[1]) / across;
+  const int countX = std::max(1, static_cast<int>(std::ceil((high[0] - low[0]) / side)));
+  const int countY = std::max(1, static_cast<int>(std::ceil((high[1] - low[1]) / side)));
+  // At least four across theta, so that a box's theta range is shorter than half a
+  // turn and a motion between two of its configurations stays inside it.
+  const int countTheta = std::clamp(static_cast<int>(std::ceil(2 * M_PI * reach / side)), 4, 4 * across);
+  rootEdges_ = {edgesBetween(low[0], high[0], countX), edgesBetween(low[1], high[1], countY),
+                edgesBetween(-M_PI, M_PI, countTheta)};
+  for (int i = 0; i < countX; ++i) {
+    for (int j = 0; j < countY; ++j) {
+      for (int k = 0; k < countTheta; ++k) {
+        addBox({rootEdges_[0][i], rootEdges_[1][j], rootEdges_[2][k]},
+               {rootEdges_[0][i + 1], rootEdges_[1][j + 1], rootEdges_[2][k + 1]});
+      }
+    }
+  }
+  // Neighbours among the first boxes: those at most one step away along each axis
+  // (theta wrapping around).
+  for (int i = 0; i < countX; ++i) {
+    for (int j = 0; j < countY; ++j) {
+      for (int k = 0; k < countTheta; ++k) {
+        const std::uint32_t index = (i * countY + j) * countTheta + k;
+        for (int di = -1; di <= 1; ++di) {
+          for (int dj = -1; dj <= 1; ++dj) {
+            for (int dk = -1; dk <= 1; ++dk) {
+              const int ni = i + di, nj = j + dj, nk = (k + dk + countTheta) % countTheta;
+              if (ni < 0 || ni >= countX || nj < 0 || nj >= countY) continue;
+              const std::uint32_t other = (ni * countY + nj) * countTheta + nk;
+              auto& list = boxes_[index].neighbours;
+              if (other != index && std::find(list.begin(), list.end(), other) == list.end()) list.push_back(other);
+            }
+          }
+        }
+      }
+    }
+  }
+  for (ClearanceBox& box : boxes_) {
+    std::vector<ClearanceAnchor> candidates = box.own;
+    for (std::uint32_t neighbour : box.neighbours) {
+      candidates.insert(candidates.end(), boxes_[neighbour].own.begin(), boxes_[neighbour].own.end());
+    }
+    bound(box, std::move(candidates));
+  }
+}
+
+std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std::array<double, 3>& high) {
+  ClearanceBox box;
+  box.low = low;
+  box.high = high;
+  const Pose2 centre = ClearanceBoxes::centre(box);
+  const Clearance clearance = space_.clearance(centre);
+  // The farthest a configuration of the box is from its centre in |dxy| + r |dtheta|,
+  // rounded up (with room for the centre's rounding and for the sliver between the
+  // doubles nearest -pi and pi).
+  const double across = std::hypot(high[0] - low[0], high[1] - low[1]) / 2 * (1 + 1e-12) +
+                        reach_ * ((high[2] - low[2]) / 2 * (1 + 1e-12) + 1e-15) +
+                        1e-13 * (1 + std::fabs(centre.x) + std::fabs(centre.y));
+  // Within a slice the signed clearance is 1-Lipschitz, but across angles only its
+  // free side is r-Lipschitz (a pocket of free space may close as the robot turns):
+  // a blocked centre bounds the clearance nearby as a contact would, by 0.
+  const double upper = std::max(clearance.upper, 0.0);
+  box.lower = clearance.lower - across;
+  box.upper = upper + across;
+  if (clearance.location.free) box.centreCell = clearance.location.cell;
+  if (std::isfinite(upper)) {
+    box.own.push_back({{centre.x, centre.y, centre.theta}, upper});
+    if (clearance.contact) {
+      // The contact reached: clearance 0 but for the rounding of its position.
+      const double rounding = (clearance.upper - clearance.lower) +
+                              1e-12 * (1 + std::fabs(upper) + std::fabs(centre.x) + std::fabs(centre.y));
+      box.own.push_back({{clearance.nearest[0], clearance.nearest[1], centre.theta}, rounding});
+    }
+  }
+  boxes_.push_back(std::move(box));
+  return static_cast<std::uint32_t>(boxes_.size() - 1);
+}
+
+double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const {
+  const auto farthest = [&](int axis) {
+    return std::max(std::fabs(anchor.at[axis] - box.low[axis]), std::fabs(anchor.at[axis] - box.high[axis]));
+  };
+  // Along theta, the farthest point of the box's range from the anchor's angle round
+  // the circle: half a turn when the range holds the opposite angle.
+  const double opposite = std::remainder(anchor.at[2] + M_PI, 2 * M_PI);
+  double turn = M_PI;
+  if (opposite < box.low[2] || opposite > box.high[2]) {
+    turn = std::max(std::fabs(std::remainder(anchor.at[2] - box.low[2], 2 * M_PI)),
+                    std::fabs(std::remainder(anchor.at[2] - box.high[2], 2 * M_PI)));
+  }
+  return anchor.upper + std::hypot(farthest(0), farthest(1)) * (1 + 1e-12) + reach_ * (turn * (1 + 1e-12) + 1e-15) +
+         1e-13 * (1 + std::fabs(anchor.at[0]) + std::fabs(anchor.at[1]));
+}
+
+void ClearanceBoxes::bound(ClearanceBox& box, std::vector<ClearanceAnchor> candidates) const {
+  constexpr std::size_t kAnchorsKept = 6;
+  std::vector<std::pair<double, std::size_t>> bounds;
+  for (std::size_t k = 0; k < candidates.size(); ++k) bounds.push_back({upperBoundFrom(candidates[k], box), k});
+  std::sort(bounds.begin(), bounds.end());
+  box.anchors.clear();
+  for (std::size_t k = 0; k < std::min(kAnchorsKept, bounds.size()); ++k) {
+    box.anchors.push_back(candidates[bounds[k].second]);
+  }
+  if (!bounds.empty()) box.upper = std::min(box.upper, bounds.front().first);
+}
+
+Pose2 ClearanceBoxes::centre(const ClearanceBox& box) {
+  return {0.5 * (box.low[0] + box.high[0]), 0.5 * (box.low[1] + box.high[1]), 0.5 * (box.low[2] + box.high[2])};
+}
+
+bool ClearanceBoxes::touch(const ClearanceBox& a, const ClearanceBox& b) const {
+  if (!closedOverlap(a.low[0], a.high[0], b.low[0], b.high[0])) return false;
+  if (!closedOverlap(a.low[1], a.high[1], b.low[1], b.high[1])) return false;
+  const double thetaLow = rootEdges_[2].front(), thetaHigh = rootEdges_[2].back();
+  return closedOverlap(a.low[2], a.high[2], b.low[2], b.high[2]) || (a.low[2] == thetaLow && b.high[2] == thetaHigh) ||
+         (b.low[2] == thetaLow && a.high[2] == thetaHigh);
+}
+
+std::uint32_t ClearanceBoxes::leafAt(const Pose2& pose) const {
+  const std::array<double, 3> at{pose.x, pose.y, reducedAngle(pose.theta)};
+  const std::size_t countY = rootEdges_[1].size() - 1, countTheta = rootEdges_[2].size() - 1;
+  std::uint32_t index = static_cast<std::uint32_t>(
+      (intervalOf(rootEdges_[0], at[0]) * countY + intervalOf(rootEdges_[1], at[1])) * countTheta +
+      intervalOf(rootEdges_[2], at[2]));
+  while (boxes_[index].split) {
+    const ClearanceBox& box = boxes_[index];
+    std::uint32_t child = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (at[axis] > 0.5 * (box.low[axis] + box.high[axis])) child |= 1u << axis;
+    }
+    index = box.firstChild + child;
+  }
+  return index;
+}
+
+void ClearanceBoxes::split(std::uint32_t index) {
+  const std::uint32_t first = static_cast<std::uint32_t>(boxes_.size());
+  for (std::uint32_t child = 0; child < 8; ++child) {
+    std::array<double, 3> low = boxes_[index].low, high = boxes_[index].high;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double middle = 0.5 * (low[axis] + high[axis]);
+      (child >> axis & 1 ? low : high)[axis] = middle;
+    }
+    addBox(low, high);
+  }
+  boxes_[index].split = true;
+  boxes_[index].firstChild = first;
+  // The halves touch one another (they share the centre) and each of the box's
+  // neighbours (not split, not dropped) they touch, both ways.
+  const std::vector<std::uint32_t> neighbours = boxes_[index].neighbours;
+  for (std::uint32_t child = first; child < first + 8; ++child) {
+    for (std::uint32_t sibling = first; sibling < first + 8; ++sibling) {
+      if (sibling != child) boxes_[child].neighbours.push_back(sibling);
+    }
+  }
+  for (std::uint32_t neighbour : neighbours) {
+    if (boxes_[neighbour].split || boxes_[neighbour].dropped) continue;
+    for (std::uint32_t child = first; child < first + 8; ++child) {
+      if (!touch(boxes_[child], boxes_[neighbour])) continue;
+      boxes_[child].neighbours.push_back(neighbour);
+      boxes_[neighbour].neighbours.push_back(child);
+    }
+  }
+  // Each half is bounded by the best of the parent's anchors and the halves' and
+  // neighbours' own.
+  std::vector<ClearanceAnchor> candidates = boxes_[index].anchors;
+  for (std::uint32_t child = first; child < first + 8; ++child) {
+    candidates.insert(candidates.end(), boxes_[child].own.begin(), boxes_[child].own.end());
+  }
+  for (std::uint32_t neighbour : neighbours) {
+    if (boxes_[neighbour].split || boxes_[neighbour].dropped) continue;
+    candidates.insert(candidates.end(), boxes_[neighbour].own.begin(), boxes_[neighbour].own.end());
+  }
+  for (std::uint32_t child = first; child < first + 8; ++child) bound(boxes_[child], candidates);
+}
+
+void ClearanceBoxes::dropBelow(double level) {
+  for (ClearanceBox& box : boxes_) {
+    if (!box.split && box.upper < level) box.dropped = true;
+  }
+}
+
+namespace {
+
+/// Widest chains from `from` (breadth by `boundOf`, through the boxes `usable`
+/// accepts), by Dijkstra's method with the bottleneck for length, stopping once `to`
+/// is reached (never when it is UINT32_MAX): each box's bottleneck and predecessor.
+template <typename BoundOf, typename Usable>
+void widestFrom(const std::vector<ClearanceBox>& boxes, std::uint32_t from, std::uint32_t to, BoundOf boundOf,
+                Usable usable, std::vector<double>& widest, std::vector<std::uint32_t>& previous) {
+  widest.assign(boxes.size(), -HUGE_VAL);
+  previous.assign(boxes.size(), UINT32_MAX);
+  std::priority_queue<std::pair<double, std::uint32_t>> open;
+  widest[from] = boundOf(from);
+  open.push({widest[from], from});
+  while (!open.empty()) {
+    const auto [width, index] = open.top();
+    open.pop();
+    if (width < widest[index]) continue;
+    if (index == to) break;
+    for (std::uint32_t neighbour : boxes[index].neighbours) {
+      if (!usable(boxes[neighbour])) continue;
+      const double through = std::min(width, boundOf(neighbour));
+      if (through <= widest[neighbour]) continue;
+      widest[neighbour] = through;
+      previous[neighbour] = index;
+      open.push({through, neighbour});
+    }
+  }
+}
+
+}  // namespace
+
+ClearanceBoxes::Chain ClearanceBoxes::widestChain(std::uint32_t from, std::uint32_t to, Bound bound,
+                                                  double upperAtLeast, std::optional<std::uint32_t> centreCell) const {
+  std::vector<double> widest;
+  std::vector<std::uint32_t> previous;
+  widestFrom(
+      boxes_, from, to,
+      [&](std::uint32_t index) { return bound == Bound::Lower ? boxes_[index].lower : boxes_[index].upper; },
+      [&](const ClearanceBox& box) {
+        return !box.split && !box.dropped && box.upper >= upperAtLeast && (!centreCell || box.centreCell == centreCell);
+      },
+      widest, previous);
+  Chain chain;
+  if (widest[to] == -HUGE_VAL) return chain;
+  chain.bottleneck = widest[to];
+  for (std::uint32_t index = to; index != UINT32_MAX; index = previous[index]) chain.boxes.push_back(index);
+  std::reverse(chain.boxes.begin(), chain.boxes.end());
+  return chain;
+}
+
+std::vector<double> ClearanceBoxes::widestUpperFrom(std::uint32_t from) const {
+  std::vector<double> widest;
+  std::vector<std::uint32_t> previous;
+  widestFrom(
+      boxes_, from, UINT32_MAX, [&](std::uint32_t index) { return boxes_[index].upper; },
+      [](const ClearanceBox& box) { return !box.split && !box.dropped; }, widest, previous);
+  return widest;
+}
+
+Pose2 ClearanceBoxes::meeting(std::uint32_t index, std::uint32_t nextIndex) const {
+  const ClearanceBox &box = boxes_[index], &next = boxes_[nextIndex];
+  const auto middleOfCommon = [&](int axis) {
+    return 0.5 * (std::max(box.low[axis], next.low[axis]) + std::min(box.high[axis], next.high[axis]));
+  };
+  double theta;
+  if (closedOverlap(box.low[2], box.high[2], next.low[2], next.high[2])) {
+    theta = middleOfCommon(2);
+  } else {
+    theta = box.low[2] == rootEdges_[2].front() ? box.low[2] : box.high[2];
+  }
+  return {middleOfCommon(0), middleOfCommon(1), theta};
+}
+
+}  // namespace freespace

@@ -1,0 +1,105 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "freespace/space/free_space.h"
+
+namespace freespace {
+
+/// A configuration with a certified upper bound on its clearance: the clearance of any
+/// configuration is at most that plus its distance to it in |dxy| + r |dtheta|.
+struct ClearanceAnchor {
+  std::array<double, 3> at;
+  double upper;
+};
+
+/// A box of configurations [low, high] in (x, y, theta), with bounds on the clearance
+/// at every configuration in it.
+struct ClearanceBox {
+  std::array<double, 3> low, high;
+  double lower = 0, upper = 0;
+  /// Its centre and the contact its clearance reaches there (the witness, clearance
+  /// 0), then the anchors that bound it best among its own, its neighbours' and its
+  /// parent's (upper is the least of their bounds).
+  std::vector<ClearanceAnchor> own, anchors;
+  /// Once split, its eight halves are boxes firstChild to firstChild + 7.
+  std::uint32_t firstChild = 0;
+  bool split = false;
+  /// Never useful again: its clearance is below a bottleneck already reached.
+  bool dropped = false;
+  /// The free cell holding the box's centre (none when it is blocked).
+  std::optional<std::uint32_t> centreCell;
+  /// Boxes it touches (closed boxes, theta wrapping around); some may be split since.
+  std::vector<std::uint32_t> neighbours;
+};
+
+/// The free space's clearance over a domain of (x, y, theta) bounded by boxes that are
+/// halved where needed (docs/design.md section 7): the clearance is certified at each
+/// box's centre, and is 1-Lipschitz in (x, y) and r-Lipschitz in theta, so it lies
+/// above the centre's lower bound minus |half diagonal in (x, y)| + r (half width in
+/// theta) everywhere in the box, and below the least, over configurations of known
+/// clearance nearby (centres, and the contacts their witnesses reach), of that
+/// clearance plus the distance to the box's farthest corner: with contacts on both
+/// sides of a passage, about the passage's half width however long the box. Any continuous path passes through a chain
+/// of touching boxes, so the widest chain by upper bounds bounds every path's
+/// bottleneck from above, and a chain by lower bounds gives a path whose bottleneck
+/// is at least its value.
+class ClearanceBoxes {
+ public:
+  /// Boxes covering x in [low[0], high[0]], y in [low[1], high[1]] and every theta,
+  /// nearly cubes in the metric |dxy| + reach |dtheta|, about `across` along the
+  /// longer side.
+  ClearanceBoxes(const FreeSpace& space, const std::array<double, 2>& low, const std::array<double, 2>& high,
+                 double reach, int across = 16);
+
+  /// A chain of touching boxes and the least of their bounds (the lower or upper
+  /// ones): its bottleneck.
+  struct Chain {
+    double bottleneck = -HUGE_VAL;
+    std::vector<std::uint32_t> boxes;
+  };
+  enum class Bound { Lower, Upper };
+  /// The chain of boxes neither split nor dropped from `from` to `to` whose least
+  /// bound is largest (empty when none joins them), through boxes whose upper bound
+  /// is at least `upperAtLeast`, and whose centres lie in `centreCell` when given,
+  /// only.
+  Chain widestChain(std::uint32_t from, std::uint32_t to, Bound bound, double upperAtLeast = -HUGE_VAL,
+                    std::optional<std::uint32_t> centreCell = std::nullopt) const;
+
+  /// For every box, the widest chain's bottleneck by upper bounds from `from` to it
+  /// (-infinity where none reaches).
+  std::vector<double> widestUpperFrom(std::uint32_t from) const;
+
+  /// The box (not split) holding a configuration of the domain.
+  std::uint32_t leafAt(const Pose2& pose) const;
+  /// Halves a box along every axis (eight clearances).
+  void split(std::uint32_t box);
+  /// Drops every box whose upper bound is below `level`.
+  void dropBelow(double level);
+
+  const ClearanceBox& box(std::uint32_t index) const { return boxes_[index]; }
+  std::size_t size() const { return boxes_.size(); }
+  /// The configuration at a box's centre.
+  static Pose2 centre(const ClearanceBox& box);
+  /// A configuration both (touching) boxes hold: the centre of their common part,
+  /// theta taken from `box`'s range where they touch across theta = pi.
+  Pose2 meeting(std::uint32_t box, std::uint32_t next) const;
+
+ private:
+  std::uint32_t addBox(const std::array<double, 3>& low, const std::array<double, 3>& high);
+  /// The bound an anchor gives on the clearance in a box.
+  double upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
+  /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.
+  void bound(ClearanceBox& box, std::vector<ClearanceAnchor> candidates) const;
+  bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
+
+  const FreeSpace& space_;
+  double reach_;
+  std::array<std::vector<double>, 3> rootEdges_;  // the first boxes' edges along each axis
+  std::vector<ClearanceBox> boxes_;
+};
+
+}  // namespace freespace

@@ -1,0 +1,277 @@
+#include "freespace/space/max_clearance_path.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <set>
+#include <sstream>
+
+#include "clearance_boxes.h"
+#include "freespace/input_error.h"
+#include "freespace/numbers/angle_reduction.h"
+#include "freespace/space/motion_checker.h"
+
+namespace freespace {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+std::string poseText(const Pose2& pose) {
+  std::ostringstream text;
+  text.precision(17);
+  text << "(" << pose.x << ", " << pose.y << ", " << pose.theta << ")";
+  return text.str();
+}
+
+/// The x and y range paths may use.
+struct Domain {
+  std::array<double, 2> low, high;
+  bool holds(const Pose2& pose) const {
+    return pose.x >= low[0] && pose.x <= high[0] && pose.y >= low[1] && pose.y <= high[1];
+  }
+};
+
+/// The clearance of a start or goal; an InputError naming it when it is not finite,
+/// outside the volume, or not free.
+Clearance checkedEnd(const FreeSpace& space, const Pose2& pose, const std::string& name,
+                     const MaxClearancePathOptions& options) {
+  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.theta)) {
+    throw InputError(name, "x, y and theta must be finite numbers, not " + poseText(pose));
+  }
+  if (options.volumeLow && !Domain{*options.volumeLow, *options.volumeHigh}.holds(pose)) {
+    throw InputError(name, poseText(pose) + " lies outside the volume");
+  }
+  const Clearance clearance = space.clearance(pose);
+  if (!clearance.location.free) {
+    std::ostringstream text;
+    text << "the robot at " << poseText(pose) << " touches or overlaps the environment (clearance " << clearance.upper
+         << ")";
+    throw InputError(name, text.str());
+  }
+  return clearance;
+}
+
+/// Where paths may go: the volume, within the bounded cell's box; in the unbounded
+/// cell without a volume, the environment's box with room for the robot around it.
+Domain domainOf(const FreeSpace& space, std::uint32_t cell, const MaxClearancePathOptions& options) {
+  Domain domain{{-HUGE_VAL, -HUGE_VAL}, {HUGE_VAL, HUGE_VAL}};
+  if (options.volumeLow) domain = {*options.volumeLow, *options.volumeHigh};
+  const std::optional<PatchBox> cellBox = space.cellBoxes()[cell];
+  if (cellBox) {
+    for (int axis = 0; axis < 2; ++axis) {
+      domain.low[axis] = std::max(domain.low[axis], cellBox->low[axis]);
+      domain.high[axis] = std::min(domain.high[axis], cellBox->high[axis]);
+    }
+  } else if (!options.volumeLow) {
+    const double scale = space.meshes().scale;
+    const double room = 2 * space.meshes().robot.horizontalReach() / scale;
+    for (const Point3& vertex : space.meshes().world.vertices()) {
+      for (int axis = 0; axis < 2; ++axis) {
+        domain.low[axis] = std::min(domain.low[axis], vertex[axis] / scale - room);
+        domain.high[axis] = std::max(domain.high[axis], vertex[axis] / scale + room);
+      }
+    }
+  }
+  return domain;
+}
+
+/// A first (or, reversed, last) motion: straight away from the nearest contact, as
+/// far as the clearance grows at doubling steps, kept when certified to keep 99% of
+/// the clearance it starts with.
+struct Climb {
+  Pose2 to;
+  double clearance;  // certified along the motion (the start's when it has none)
+};
+
+Climb climbFrom(const FreeSpace& space, const MotionChecker& checker, const Pose2& from, const Clearance& clearance,
+                const Domain& domain) {
+  const Climb none{from, clearance.lower};
+  if (!std::isfinite(clearance.lower) || (clearance.direction[0] == 0 && clearance.direction[1] == 0)) return none;
+  double best = 0, bestClearance = clearance.lower;
+  for (double step = clearance.lower / 2; step < 1e3 * clearance.lower; step *= 2) {
+    const Pose2 at{from.x - step * clearance.direction[0], from.y - step * clearance.direction[1], from.theta};
+    if (!domain.holds(at)) break;
+    const Clearance there = space.clearance(at);
+    if (!there.location.free || there.lower <= bestClearance) break;
+    best = step;
+    bestClearance = there.lower;
+  }
+  if (best == 0) return none;
+  const Pose2 to{from.x - best * clearance.direction[0], from.y - best * clearance.direction[1], from.theta};
+  const MotionCheck check = checker.check(from, to, 0.002);
+  if (!check.free || check.minClearance < 0.99 * clearance.lower) return none;
+  return {to, check.minClearance};
+}
+
+/// The waypoints through a chain of boxes from `from` (in its first box) to `to`
+/// (in its last), through the middles of the common parts of consecutive boxes, each
+/// motion inside one box, with the box's lower bound as its certified clearance.
+void appendChainPath(const ClearanceBoxes& boxes, const std::vector<std::uint32_t>& chain, const Pose2& to,
+                     MaxClearancePath& path) {
+  for (std::size_t k = 0; k < chain.size(); ++k) {
+    path.waypoints.push_back(k + 1 < chain.size() ? boxes.meeting(chain[k], chain[k + 1]) : to);
+    path.motionClearance.push_back(boxes.box(chain[k]).lower);
+  }
+}
+
+/// Replaces runs of waypoints between `first` and `last` by single motions certified
+/// to keep at least `level`, the longest found by doubling jumps from each waypoint.
+void shorten(const MotionChecker& checker, std::size_t first, std::size_t last, double level, MaxClearancePath& path) {
+  std::vector<Pose2> waypoints(path.waypoints.begin(), path.waypoints.begin() + first + 1);
+  std::vector<double> clearances(path.motionClearance.begin(), path.motionClearance.begin() + first);
+  for (std::size_t at = first; at < last;) {
+    std::size_t reach = at + 1;
+    double reachClearance = path.motionClearance[at];
+    for (std::size_t jump = 2; at + jump / 2 < last; jump *= 2) {
+      const std::size_t to = std::min(last, at + jump);
+      if (!checker.keepsClearance(path.waypoints[at], path.waypoints[to], level, 64)) break;
+      reach = to;
+      reachClearance = level;
+    }
+    waypoints.push_back(path.waypoints[reach]);
+    clearances.push_back(reachClearance);
+    at = reach;
+  }
+  waypoints.insert(waypoints.end(), path.waypoints.begin() + last + 1, path.waypoints.end());
+  clearances.insert(clearances.end(), path.motionClearance.begin() + last, path.motionClearance.end());
+  path.waypoints = std::move(waypoints);
+  path.motionClearance = std::move(clearances);
+}
+
+void measure(MaxClearancePath& path) {
+  for (std::size_t k = 0; k + 1 < path.waypoints.size(); ++k) {
+    const Pose2 &from = path.waypoints[k], &to = path.waypoints[k + 1];
+    path.length += std::hypot(to.x - from.x, to.y - from.y);
+    path.turn += std::fabs(std::remainder(to.theta - from.theta, 2 * M_PI));
+  }
+}
+
+}  // namespace
+
+MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, const Pose2& goal,
+                                  const MaxClearancePathOptions& options) {
+  const Clock::time_point began = Clock::now();
+  const Clearance startClearance = checkedEnd(space, start, options.startName, options);
+  const Clearance goalClearance = checkedEnd(space, goal, options.goalName, options);
+  MaxClearancePath path;
+  path.startCell = startClearance.location.cell;
+  path.goalCell = goalClearance.location.cell;
+  path.startClearance = startClearance.lower;
+  path.goalClearance = goalClearance.lower;
+  if (path.startCell != path.goalCell) {
+    path.status = PathStatus::infeasible;
+    path.proof = "the start lies in free cell " + std::to_string(path.startCell) + " and the goal in free cell " +
+                 std::to_string(path.goalCell);
+    path.seconds = secondsSince(began);
+    return path;
+  }
+  const MotionChecker checker(space);
+  const Domain domain = domainOf(space, path.startCell, options);
+  const Climb leave = climbFrom(space, checker, start, startClearance, domain);
+  const Climb arrive = climbFrom(space, checker, goal, goalClearance, domain);
+  const Pose2 passageStart{leave.to.x, leave.to.y, reducedAngle(leave.to.theta)};
+  const Pose2 passageEnd{arrive.to.x, arrive.to.y, reducedAngle(arrive.to.theta)};
+  const double passageStartUpper = space.clearance(passageStart).upper;
+  const double passageEndUpper = space.clearance(passageEnd).upper;
+
+  // Halve the boxes that keep the bounds apart (not yet certain at the ratio asked):
+  // those that limit the upper bound (reached from both ends at its level, with an
+  // upper bound near it), and the worse half of the widest chain by lower bounds
+  // among the boxes that could hold a path at the ratio asked; until a chain's lower
+  // bounds reach that ratio of the upper bound.
+  ClearanceBoxes boxes(space, domain.low, domain.high, checker.reach());
+  ClearanceBoxes::Chain lowerChain;
+  for (;;) {
+    options.cancellation.check();
+    const std::uint32_t from = boxes.leafAt(passageStart), to = boxes.leafAt(passageEnd);
+    const std::vector<double> fromStart = boxes.widestUpperFrom(from), fromGoal = boxes.widestUpperFrom(to);
+    if (fromStart[to] == -HUGE_VAL) {
+      path.status = PathStatus::infeasible;
+      path.proof = "no path of free cell " + std::to_string(path.startCell) + " stays inside the volume";
+      break;
+    }
+    path.passage.upper = std::min({fromStart[to], passageStartUpper, passageEndUpper});
+    const double target = options.clearanceRatio * path.passage.upper;
+    const ClearanceBoxes::Chain promising =
+        boxes.widestChain(from, to, ClearanceBoxes::Bound::Lower, target, path.startCell);
+    if (promising.bottleneck > 0 && path.secondsToFirstPath == 0) path.secondsToFirstPath = secondsSince(began);
+    if (promising.bottleneck >= target) {
+      lowerChain = promising;
+      path.converged = true;
+      break;
+    }
+    if (secondsSince(began) > options.secondsLimit || boxes.size() > options.boxLimit) break;
+    std::vector<std::uint32_t> uncertain;
+    for (std::uint32_t box = 0; box < boxes.size(); ++box) {
+      const ClearanceBox& candidate = boxes.box(box);
+      if (candidate.split || candidate.dropped || candidate.lower >= target) continue;
+      const bool limitsUpper =
+          std::min(fromStart[box], fromGoal[box]) >= fromStart[to] && candidate.upper <= (1 + 1e-3) * fromStart[to];
+      if (limitsUpper) uncertain.push_back(box);
+    }
+    for (std::uint32_t box : promising.boxes) {
+      if (boxes.box(box).lower <= 0.5 * (promising.bottleneck + target)) uncertain.push_back(box);
+    }
+    if (promising.boxes.empty()) {
+      // None could hold a path at that ratio yet: halve the boxes not yet certified
+      // free of the widest chain by lower bounds of boxes centred in the cell, or, when
+      // there is none, the boxes not centred in it of the widest by upper bounds.
+      const ClearanceBoxes::Chain inCell =
+          boxes.widestChain(from, to, ClearanceBoxes::Bound::Lower, -HUGE_VAL, path.startCell);
+      for (std::uint32_t box : inCell.boxes) {
+        if (boxes.box(box).lower <= 0) uncertain.push_back(box);
+      }
+      if (inCell.boxes.empty()) {
+        for (std::uint32_t box : boxes.widestChain(from, to, ClearanceBoxes::Bound::Upper).boxes) {
+          if (boxes.box(box).centreCell != path.startCell) uncertain.push_back(box);
+        }
+      }
+    }
+    std::sort(uncertain.begin(), uncertain.end());
+    uncertain.erase(std::unique(uncertain.begin(), uncertain.end()), uncertain.end());
+    if (uncertain.empty()) break;
+    for (std::uint32_t box : uncertain) boxes.split(box);
+    ++path.refinements;
+  }
+  if (!path.converged && path.status != PathStatus::infeasible) {
+    lowerChain = boxes.widestChain(boxes.leafAt(passageStart), boxes.leafAt(passageEnd), ClearanceBoxes::Bound::Lower);
+  }
+  path.passage.lower = lowerChain.bottleneck;
+  path.boxes = boxes.size();
+  if (path.status == PathStatus::infeasible || !(path.passage.lower > 0)) {
+    path.seconds = secondsSince(began);
+    return path;
+  }
+  path.status = PathStatus::solved;
+
+  // start, leaving, the chain's meeting points, arriving, goal.
+  path.waypoints = {start};
+  if (leave.to.x != start.x || leave.to.y != start.y) {
+    path.waypoints.push_back(passageStart);
+    path.motionClearance.push_back(leave.clearance);
+  }
+  const std::size_t first = path.waypoints.size() - 1;
+  appendChainPath(boxes, lowerChain.boxes, passageEnd, path);
+  const std::size_t last = path.waypoints.size() - 1;
+  if (arrive.to.x != goal.x || arrive.to.y != goal.y) {
+    path.waypoints.push_back(goal);
+    path.motionClearance.push_back(arrive.clearance);
+  }
+  shorten(checker, first, last, path.passage.lower, path);
+
+  path.whole.lower = *std::min_element(path.motionClearance.begin(), path.motionClearance.end());
+  const ClearanceBoxes::Chain wholeChain =
+      boxes.widestChain(boxes.leafAt(start), boxes.leafAt(goal), ClearanceBoxes::Bound::Upper);
+  // Boxes below the passage's lower bound were dropped: a path through them has a
+  // smaller bottleneck than that bound anyway.
+  path.whole.upper =
+      std::min({startClearance.upper, goalClearance.upper, std::max(wholeChain.bottleneck, path.passage.lower)});
+  measure(path);
+  path.seconds = secondsSince(began);
+  return path;
+}
+
+}  // namespace freespace

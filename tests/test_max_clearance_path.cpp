@@ -1,0 +1,130 @@
+// Maximum clearance path queries (docs/design.md section 7) on bundled problems,
+// checked by oracles independent of the boxes: the exact collision test at 10,000
+// configurations per motion and FCL on the input meshes, the certified clearance at
+// 200 configurations per motion (never below the path's certified bound), and the
+// motion checker on each motion. Problems whose start and goal lie in different
+// cells are infeasible with that proof; bad starts and goals are InputErrors naming
+// them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "freespace/collision/exact_collision_checker.h"
+#include "freespace/collision/fcl_collision_checker.h"
+#include "freespace/input_error.h"
+#include "freespace/space/max_clearance_path.h"
+#include "freespace/space/motion_checker.h"
+
+using namespace freespace;
+
+namespace {
+
+struct Problem {
+  LoadedProblem loaded;
+  std::unique_ptr<FreeSpace> space;
+  MaxClearancePathOptions options;
+};
+
+Problem bundled(const std::string& name) {
+  Problem problem;
+  problem.loaded = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + name + ".cfg");
+  problem.space = std::make_unique<FreeSpace>(problem.loaded.robot, problem.loaded.world);
+  const auto& volume = problem.loaded.problem.volume;
+  problem.options.volumeLow = std::array<double, 2>{volume->min().x(), volume->min().y()};
+  problem.options.volumeHigh = std::array<double, 2>{volume->max().x(), volume->max().y()};
+  return problem;
+}
+
+class SolvedProblems : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(SolvedProblems, PathsAreFreeAndKeepTheirCertifiedClearance) {
+  const Problem problem = bundled(GetParam());
+  const FreeSpace& space = *problem.space;
+  const MaxClearancePath path =
+      maxClearancePath(space, problem.loaded.problem.start, problem.loaded.problem.goal, problem.options);
+  ASSERT_EQ(path.status, PathStatus::solved);
+  EXPECT_TRUE(path.converged);
+  EXPECT_GE(path.passage.lower, problem.options.clearanceRatio * path.passage.upper);
+  EXPECT_LE(path.whole.lower, path.whole.upper);
+  EXPECT_LE(path.whole.upper, std::min(path.startClearance, path.goalClearance) * (1 + 1e-12));
+  ASSERT_GE(path.waypoints.size(), 2u);
+  ASSERT_EQ(path.motionClearance.size(), path.waypoints.size() - 1);
+  EXPECT_EQ(path.waypoints.front().x, problem.loaded.problem.start.x);
+  EXPECT_EQ(path.waypoints.back().y, problem.loaded.problem.goal.y);
+
+  const double scale = space.meshes().scale;
+  const ExactCollisionChecker exact(space.meshes().robot, space.meshes().world);
+  const FclCollisionChecker fcl(problem.loaded.robot, problem.loaded.world);
+  const MotionChecker motions(space);
+  double leastSeen = HUGE_VAL;
+  for (std::size_t k = 0; k + 1 < path.waypoints.size(); ++k) {
+    const Pose2 &from = path.waypoints[k], &to = path.waypoints[k + 1];
+    EXPECT_TRUE(motions.check(from, to).free) << "motion " << k;
+    for (int i = 0; i <= 10000; ++i) {
+      const Pose2 pose = MotionChecker::interpolate(from, to, i / 10000.0);
+      ASSERT_FALSE(exact.inCollision({pose.x * scale, pose.y * scale, pose.theta})) << "motion " << k << " at " << i;
+      // Away from contact (the path keeps its clearance), FCL agrees.
+      ASSERT_FALSE(fcl.inCollision(pose)) << "motion " << k << " at " << i;
+    }
+    for (int i = 0; i <= 200; ++i) {
+      const Clearance clearance = space.clearance(MotionChecker::interpolate(from, to, i / 200.0));
+      ASSERT_TRUE(clearance.location.free);
+      EXPECT_GE(clearance.upper, path.motionClearance[k]) << "motion " << k << " at " << i;
+      leastSeen = std::min(leastSeen, clearance.upper);
+    }
+  }
+  // The bounds hold this path: its clearance seen lies between them.
+  EXPECT_GE(leastSeen, path.whole.lower);
+  EXPECT_LE(leastSeen * (1 - 1e-12), path.whole.upper);
+}
+
+INSTANTIATE_TEST_SUITE_P(Bundled, SolvedProblems, ::testing::Values("flip_window", "random_polyhedra"));
+
+class InfeasibleProblems : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(InfeasibleProblems, DifferentCellsAreTheProof) {
+  const Problem problem = bundled(GetParam());
+  const MaxClearancePath path =
+      maxClearancePath(*problem.space, problem.loaded.problem.start, problem.loaded.problem.goal, problem.options);
+  EXPECT_EQ(path.status, PathStatus::infeasible);
+  EXPECT_NE(path.startCell, path.goalCell);
+  EXPECT_EQ(path.startCell, problem.space->locate(problem.loaded.problem.start).cell);
+  EXPECT_EQ(path.goalCell, problem.space->locate(problem.loaded.problem.goal).cell);
+  EXPECT_NE(path.proof.find("free cell"), std::string::npos) << path.proof;
+  EXPECT_TRUE(path.waypoints.empty());
+}
+
+INSTANTIATE_TEST_SUITE_P(Bundled, InfeasibleProblems,
+                         ::testing::Values("cage", "keyhole_narrow", "keyhole_tight", "table_tall"));
+
+TEST(MaxClearancePathInput, BadStartsAndGoalsAreNamed) {
+  const Problem problem = bundled("flip_window");
+  const Pose2 goal = problem.loaded.problem.goal;
+  const auto errorFor = [&](const Pose2& start) -> std::string {
+    try {
+      maxClearancePath(*problem.space, start, goal, problem.options);
+    } catch (const InputError& error) {
+      return error.what();
+    }
+    return "";
+  };
+  EXPECT_NE(errorFor({NAN, 0, 0}).find("start: x, y and theta must be finite"), std::string::npos);
+  EXPECT_NE(errorFor({0, 0, INFINITY}).find("must be finite"), std::string::npos);
+  EXPECT_NE(errorFor({100, 0, 0}).find("outside the volume"), std::string::npos);
+  // The bar turned across the window's walls.
+  EXPECT_NE(errorFor({0, 0, M_PI / 2}).find("touches or overlaps"), std::string::npos);
+}
+
+TEST(MaxClearancePathInput, ALimitStopsTheRefinementWithValidBounds) {
+  Problem problem = bundled("random_polyhedra");
+  problem.options.secondsLimit = 0;
+  const MaxClearancePath path =
+      maxClearancePath(*problem.space, problem.loaded.problem.start, problem.loaded.problem.goal, problem.options);
+  EXPECT_FALSE(path.converged);
+  EXPECT_GT(path.passage.upper, 0);
+  if (path.status == PathStatus::solved) EXPECT_LE(path.passage.lower, path.passage.upper);
+}
+
+}  // namespace
