@@ -20,8 +20,8 @@ using namespace freespace;
 namespace {
 
 struct DenseCheck {
-  bool collides = false;       // somewhere along the motion
-  double firstCollision = 2;   // the fraction of the first colliding sample
+  bool collides = false;      // somewhere along the motion
+  double firstCollision = 2;  // the fraction of the first colliding sample
 };
 
 DenseCheck denseCollisions(const FreeSpace& space, const ExactCollisionChecker& collision, const Pose2& from,
@@ -85,13 +85,18 @@ TEST_P(BundledMotions, CertifiedMotionsPassTheExactCollisionTest) {
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledMotions, ::testing::Values("keyhole", "maze", "table", "room_door"));
 
-// A straight slide across a wall is never free; its free prefix ends before the wall.
-TEST(MotionChecker, ASlideIntoAWallStopsBeforeIt) {
+/// The keyhole's start, its clearance and witness: slides toward the contact.
+class KeyholeSlides : public ::testing::Test {
+ protected:
   const LoadedProblem problem = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/keyhole.cfg");
-  const FreeSpace space(problem.robot, problem.world);
-  const MotionChecker motions(space);
+  const FreeSpace space{problem.robot, problem.world};
+  const MotionChecker motions{space};
   const Pose2 start = problem.problem.start;
   const Clearance clearance = space.clearance(start);
+};
+
+// A straight slide across a wall is never free; its free prefix ends before the wall.
+TEST_F(KeyholeSlides, ASlideIntoAWallStopsBeforeIt) {
   ASSERT_TRUE(clearance.contact.has_value());
   // Slide toward the nearest contact, twice as far as the clearance.
   const double reach = 2 * clearance.upper;
@@ -112,12 +117,7 @@ TEST(MotionChecker, ASlideIntoAWallStopsBeforeIt) {
 
 // keepsClearance on a slide toward the contact: a level the slide keeps (below
 // the clearance left at its end) is certified, one above it never is.
-TEST(MotionChecker, KeepsClearanceOnlyAboveTheLeastAlongTheMotion) {
-  const LoadedProblem problem = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/keyhole.cfg");
-  const FreeSpace space(problem.robot, problem.world);
-  const MotionChecker motions(space);
-  const Pose2 start = problem.problem.start;
-  const Clearance clearance = space.clearance(start);
+TEST_F(KeyholeSlides, KeepsClearanceOnlyAboveTheLeastAlongTheMotion) {
   const double slide = 0.6 * clearance.upper;  // toward the contact
   const Pose2 to{start.x + slide * clearance.direction[0], start.y + slide * clearance.direction[1], start.theta};
   const double left = clearance.upper - slide;  // at its end, the least along it
