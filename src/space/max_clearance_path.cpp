@@ -240,6 +240,7 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     lowerChain = boxes.widestChain(boxes.leafAt(passageStart), boxes.leafAt(passageEnd), ClearanceBoxes::Bound::Lower);
   }
   path.passage.lower = lowerChain.bottleneck;
+  if (path.passage.lower > 0 && path.secondsToFirstPath == 0) path.secondsToFirstPath = secondsSince(began);
   path.boxes = boxes.size();
   if (path.status == PathStatus::infeasible || !(path.passage.lower > 0)) {
     path.seconds = secondsSince(began);
