@@ -5,6 +5,7 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 
 #include <algorithm>
+#include <cmath>
 #include <deque>
 #include <map>
 
@@ -53,10 +54,17 @@ void markNesting(Triangulation& triangulation) {
 
 }  // namespace
 
-std::optional<std::vector<std::array<double, 2>>> pathInFace(const SliceFace& face, const std::array<double, 2>& from,
-                                                             const std::array<double, 2>& to) {
-  if (face.loops.empty()) return std::vector<std::array<double, 2>>{from, to};
+struct FaceTriangulation::Impl {
   Triangulation triangulation;
+  int inside = 1;
+  std::array<Kernel::Point_2, 4> boxCorners;
+
+  bool inFace(Face face) const { return !triangulation.is_infinite(face) && face->info() == inside; }
+};
+
+FaceTriangulation::FaceTriangulation(const SliceFace& face, const std::vector<std::array<double, 2>>& alsoHolding)
+    : impl_(std::make_unique<Impl>()) {
+  Triangulation& triangulation = impl_->triangulation;
   for (const SliceLoop& loop : face.loops) {
     for (std::size_t i = 0; i < loop.corners.size(); ++i) {
       const auto& a = loop.corners[i];
@@ -64,25 +72,37 @@ std::optional<std::vector<std::array<double, 2>>> pathInFace(const SliceFace& fa
       if (a != b) triangulation.insert_constraint(pointOf(a), pointOf(b));
     }
   }
-  // Corners of a box around everything, so that both ends lie inside the hull (the
-  // unbounded face reaches past its loops).
-  double low[2] = {std::min(from[0], to[0]), std::min(from[1], to[1])};
-  double high[2] = {std::max(from[0], to[0]), std::max(from[1], to[1])};
+  // Corners of a box around everything, so that the points given lie inside the hull
+  // (the unbounded face reaches past its loops).
+  double low[2] = {HUGE_VAL, HUGE_VAL}, high[2] = {-HUGE_VAL, -HUGE_VAL};
+  const auto hold = [&](const std::array<double, 2>& point) {
+    for (int axis : {0, 1})
+      low[axis] = std::min(low[axis], point[axis]), high[axis] = std::max(high[axis], point[axis]);
+  };
   for (const SliceLoop& loop : face.loops) {
-    for (const auto& corner : loop.corners) {
-      for (int axis : {0, 1})
-        low[axis] = std::min(low[axis], corner[axis]), high[axis] = std::max(high[axis], corner[axis]);
+    for (const auto& corner : loop.corners) hold(corner);
+  }
+  for (const auto& point : alsoHolding) hold(point);
+  if (low[0] > high[0]) low[0] = low[1] = high[0] = high[1] = 0;
+  const double margin = 1 + (high[0] - low[0]) + (high[1] - low[1]);
+  int corner = 0;
+  for (const double x : {low[0] - margin, high[0] + margin}) {
+    for (const double y : {low[1] - margin, high[1] + margin}) {
+      impl_->boxCorners[corner++] = Kernel::Point_2(x, y);
+      triangulation.insert(Kernel::Point_2(x, y));
     }
   }
-  const double margin = 1 + (high[0] - low[0]) + (high[1] - low[1]);
-  for (const double x : {low[0] - margin, high[0] + margin}) {
-    for (const double y : {low[1] - margin, high[1] + margin}) triangulation.insert(Kernel::Point_2(x, y));
-  }
   markNesting(triangulation);
-  const int inside = face.unbounded ? 0 : 1;
-  const auto inFace = [&](Face f) { return !triangulation.is_infinite(f) && f->info() == inside; };
+  impl_->inside = face.unbounded ? 0 : 1;
+}
+
+FaceTriangulation::~FaceTriangulation() = default;
+
+std::optional<std::vector<std::array<double, 2>>> FaceTriangulation::path(const std::array<double, 2>& from,
+                                                                          const std::array<double, 2>& to) const {
+  const Triangulation& triangulation = impl_->triangulation;
   const Face first = triangulation.locate(pointOf(from)), last = triangulation.locate(pointOf(to));
-  if (!inFace(first) || !inFace(last)) return std::nullopt;
+  if (!impl_->inFace(first) || !impl_->inFace(last)) return std::nullopt;
   // Breadth-first over the triangles of the face, across edges off its boundary.
   std::map<Face, std::pair<Face, int>> reachedFrom{{first, {first, -1}}};
   std::deque<Face> queue{first};
@@ -91,7 +111,7 @@ std::optional<std::vector<std::array<double, 2>>> pathInFace(const SliceFace& fa
     queue.pop_front();
     for (int i = 0; i < 3; ++i) {
       const Face next = f->neighbor(i);
-      if (f->is_constrained(i) || !inFace(next) || reachedFrom.count(next)) continue;
+      if (f->is_constrained(i) || !impl_->inFace(next) || reachedFrom.count(next)) continue;
       reachedFrom[next] = {f, i};
       queue.push_back(next);
     }
@@ -107,6 +127,46 @@ std::optional<std::vector<std::array<double, 2>>> pathInFace(const SliceFace& fa
   }
   path.push_back(from);
   return std::vector<std::array<double, 2>>(path.rbegin(), path.rend());
+}
+
+std::vector<std::array<double, 2>> FaceTriangulation::roomyPoints(bool everyTriangle) const {
+  std::vector<std::pair<double, std::array<double, 2>>> points;
+  for (Face face : impl_->triangulation.finite_face_handles()) {
+    if (!everyTriangle && !impl_->inFace(face)) continue;
+    std::array<std::array<double, 2>, 3> corner;
+    bool onBox = false;
+    for (int i = 0; i < 3; ++i) {
+      const Kernel::Point_2& p = face->vertex(i)->point();
+      onBox |= std::find(impl_->boxCorners.begin(), impl_->boxCorners.end(), p) != impl_->boxCorners.end();
+      corner[i] = {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
+    }
+    if (onBox) continue;
+    // The incentre: the corners weighted by the lengths of the sides facing them.
+    std::array<double, 3> side;
+    for (int i = 0; i < 3; ++i) {
+      const auto &a = corner[(i + 1) % 3], &b = corner[(i + 2) % 3];
+      side[i] = std::hypot(a[0] - b[0], a[1] - b[1]);
+    }
+    const double perimeter = side[0] + side[1] + side[2];
+    if (!(perimeter > 0)) continue;
+    std::array<double, 2> centre{0, 0};
+    for (int i = 0; i < 3; ++i) {
+      for (int axis : {0, 1}) centre[axis] += side[i] * corner[i][axis] / perimeter;
+    }
+    const double twiceArea = std::fabs((corner[1][0] - corner[0][0]) * (corner[2][1] - corner[0][1]) -
+                                       (corner[2][0] - corner[0][0]) * (corner[1][1] - corner[0][1]));
+    points.push_back({twiceArea / perimeter, centre});  // the inradius
+  }
+  std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<std::array<double, 2>> roomy;
+  for (const auto& point : points) roomy.push_back(point.second);
+  return roomy;
+}
+
+std::optional<std::vector<std::array<double, 2>>> pathInFace(const SliceFace& face, const std::array<double, 2>& from,
+                                                             const std::array<double, 2>& to) {
+  if (face.loops.empty()) return std::vector<std::array<double, 2>>{from, to};
+  return FaceTriangulation(face, {from, to}).path(from, to);
 }
 
 }  // namespace freespace

@@ -10,6 +10,7 @@
 #include "freespace/input_error.h"
 #include "freespace/numbers/angle_reduction.h"
 #include "freespace/space/motion_checker.h"
+#include "route_path.h"
 
 namespace freespace {
 
@@ -106,15 +107,43 @@ Climb climbFrom(const FreeSpace& space, const MotionChecker& checker, const Pose
   return {to, check.minClearance};
 }
 
-/// The waypoints through a chain of boxes from `from` (in its first box) to `to`
-/// (in its last), through the middles of the common parts of consecutive boxes, each
+/// A path between the climbs' ends, each motion with a certified lower bound on its
+/// clearance, and the least of them.
+struct Passage {
+  std::vector<Pose2> waypoints;
+  std::vector<double> motionClearance;
+  double lower = HUGE_VAL;
+};
+
+/// The waypoints through a chain of boxes from `from` (in its first box) to `to` (in
+/// its last), through the middles of the common parts of consecutive boxes: each
 /// motion inside one box, with the box's lower bound as its certified clearance.
-void appendChainPath(const ClearanceBoxes& boxes, const std::vector<std::uint32_t>& chain, const Pose2& to,
-                     MaxClearancePath& path) {
-  for (std::size_t k = 0; k < chain.size(); ++k) {
-    path.waypoints.push_back(k + 1 < chain.size() ? boxes.meeting(chain[k], chain[k + 1]) : to);
-    path.motionClearance.push_back(boxes.box(chain[k]).lower);
+Passage chainPath(const ClearanceBoxes& boxes, const ClearanceBoxes::Chain& chain, const Pose2& from, const Pose2& to) {
+  Passage passage{{from}, {}, chain.bottleneck};
+  for (std::size_t k = 0; k < chain.boxes.size(); ++k) {
+    passage.waypoints.push_back(k + 1 < chain.boxes.size() ? boxes.meeting(chain.boxes[k], chain.boxes[k + 1]) : to);
+    passage.motionClearance.push_back(boxes.box(chain.boxes[k]).lower);
   }
+  return passage;
+}
+
+/// The path along the cell graph's route (routePath), each motion certified free by
+/// the motion checker with the clearance bound that took (halving a motion that
+/// passes near a contact until its bound is near the true least clearance could take
+/// billions of parts); none when one is not.
+std::optional<Passage> certifiedRoutePath(const FreeSpace& space, const MotionChecker& checker, const Pose2& from,
+                                          const Pose2& to, const MaxClearancePathOptions& options) {
+  std::optional<std::vector<Pose2>> waypoints = routePath(space, from, to, options.cancellation);
+  if (!waypoints) return std::nullopt;
+  Passage passage{std::move(*waypoints), {}, HUGE_VAL};
+  for (std::size_t k = 0; k + 1 < passage.waypoints.size(); ++k) {
+    options.cancellation.check();
+    const MotionCheck check = checker.check(passage.waypoints[k], passage.waypoints[k + 1]);
+    if (!check.free) return std::nullopt;
+    passage.motionClearance.push_back(check.minClearance);
+    passage.lower = std::min(passage.lower, check.minClearance);
+  }
+  return passage;
 }
 
 /// Replaces runs of waypoints between `first` and `last` by single motions certified
@@ -177,15 +206,22 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   const double passageStartUpper = space.clearance(passageStart).upper;
   const double passageEndUpper = space.clearance(passageEnd).upper;
 
+  // The first path: along the cell graph's route.
+  const std::optional<Passage> routed = certifiedRoutePath(space, checker, passageStart, passageEnd, options);
+  if (routed) path.secondsToFirstPath = secondsSince(began);
+  const double routedLower = routed ? routed->lower : -HUGE_VAL;
+
   // Halve the boxes that keep the bounds apart (not yet certain at the ratio asked):
   // those that limit the upper bound (reached from both ends at its level, with an
   // upper bound near it), and the worse half of the widest chain by lower bounds
   // among the boxes that could hold a path at the ratio asked; until a chain's lower
-  // bounds reach that ratio of the upper bound.
+  // bounds (or the routed path's clearance) reach that ratio of the upper bound.
   ClearanceBoxes boxes(space, domain.low, domain.high, checker.reach());
   ClearanceBoxes::Chain lowerChain;
   for (;;) {
     options.cancellation.check();
+    // Paths through boxes below the clearance of a path already found are worse.
+    if (routedLower > 0) boxes.dropBelow(routedLower);
     const std::uint32_t from = boxes.leafAt(passageStart), to = boxes.leafAt(passageEnd);
     const std::vector<double> fromStart = boxes.widestUpperFrom(from), fromGoal = boxes.widestUpperFrom(to);
     if (fromStart[to] == -HUGE_VAL) {
@@ -195,15 +231,10 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     }
     path.passage.upper = std::min({fromStart[to], passageStartUpper, passageEndUpper});
     const double target = options.clearanceRatio * path.passage.upper;
-    const ClearanceBoxes::Chain promising =
-        boxes.widestChain(from, to, ClearanceBoxes::Bound::Lower, target, path.startCell);
-    if (promising.bottleneck > 0 && path.secondsToFirstPath == 0) path.secondsToFirstPath = secondsSince(began);
-    if (promising.bottleneck >= target) {
-      lowerChain = promising;
-      path.converged = true;
-      break;
-    }
-    if (secondsSince(began) > options.secondsLimit || boxes.size() > options.boxLimit) break;
+    lowerChain = boxes.widestChain(from, to, ClearanceBoxes::Bound::Lower, target, path.startCell);
+    if (lowerChain.bottleneck > 0 && path.secondsToFirstPath == 0) path.secondsToFirstPath = secondsSince(began);
+    path.converged = std::max(lowerChain.bottleneck, routedLower) >= target;
+    if (path.converged || secondsSince(began) > options.secondsLimit || boxes.size() > options.boxLimit) break;
     std::vector<std::uint32_t> uncertain;
     for (std::uint32_t box = 0; box < boxes.size(); ++box) {
       const ClearanceBox& candidate = boxes.box(box);
@@ -212,23 +243,8 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
           std::min(fromStart[box], fromGoal[box]) >= fromStart[to] && candidate.upper <= (1 + 1e-3) * fromStart[to];
       if (limitsUpper) uncertain.push_back(box);
     }
-    for (std::uint32_t box : promising.boxes) {
-      if (boxes.box(box).lower <= 0.5 * (promising.bottleneck + target)) uncertain.push_back(box);
-    }
-    if (promising.boxes.empty()) {
-      // None could hold a path at that ratio yet: halve the boxes not yet certified
-      // free of the widest chain by lower bounds of boxes centred in the cell, or, when
-      // there is none, the boxes not centred in it of the widest by upper bounds.
-      const ClearanceBoxes::Chain inCell =
-          boxes.widestChain(from, to, ClearanceBoxes::Bound::Lower, -HUGE_VAL, path.startCell);
-      for (std::uint32_t box : inCell.boxes) {
-        if (boxes.box(box).lower <= 0) uncertain.push_back(box);
-      }
-      if (inCell.boxes.empty()) {
-        for (std::uint32_t box : boxes.widestChain(from, to, ClearanceBoxes::Bound::Upper).boxes) {
-          if (boxes.box(box).centreCell != path.startCell) uncertain.push_back(box);
-        }
-      }
+    for (std::uint32_t box : lowerChain.boxes) {
+      if (boxes.box(box).lower <= 0.5 * (lowerChain.bottleneck + target)) uncertain.push_back(box);
     }
     std::sort(uncertain.begin(), uncertain.end());
     uncertain.erase(std::unique(uncertain.begin(), uncertain.end()), uncertain.end());
@@ -236,26 +252,38 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     for (std::uint32_t box : uncertain) boxes.split(box);
     ++path.refinements;
   }
-  if (!path.converged && path.status != PathStatus::infeasible) {
-    lowerChain = boxes.widestChain(boxes.leafAt(passageStart), boxes.leafAt(passageEnd), ClearanceBoxes::Bound::Lower);
-  }
-  path.passage.lower = lowerChain.bottleneck;
-  if (path.passage.lower > 0 && path.secondsToFirstPath == 0) path.secondsToFirstPath = secondsSince(began);
   path.boxes = boxes.size();
-  if (path.status == PathStatus::infeasible || !(path.passage.lower > 0)) {
+  if (path.status == PathStatus::infeasible) {
     path.seconds = secondsSince(began);
     return path;
   }
+  if (!path.converged) {
+    lowerChain = boxes.widestChain(boxes.leafAt(passageStart), boxes.leafAt(passageEnd), ClearanceBoxes::Bound::Lower);
+  }
+  // The better of the routed path and the chain's.
+  std::optional<Passage> passage = routed;
+  if (lowerChain.bottleneck > 0 && lowerChain.bottleneck > routedLower) {
+    passage = chainPath(boxes, lowerChain, passageStart, passageEnd);
+  }
+  if (!passage) {
+    path.seconds = secondsSince(began);
+    return path;
+  }
+  if (path.secondsToFirstPath == 0) path.secondsToFirstPath = secondsSince(began);
   path.status = PathStatus::solved;
+  path.passage.lower = passage->lower;
 
-  // start, leaving, the chain's meeting points, arriving, goal.
+  // start, leaving, the passage, arriving, goal.
   path.waypoints = {start};
+  path.motionClearance.clear();
   if (leave.to.x != start.x || leave.to.y != start.y) {
     path.waypoints.push_back(passageStart);
     path.motionClearance.push_back(leave.clearance);
   }
   const std::size_t first = path.waypoints.size() - 1;
-  appendChainPath(boxes, lowerChain.boxes, passageEnd, path);
+  path.waypoints.insert(path.waypoints.end(), passage->waypoints.begin() + 1, passage->waypoints.end());
+  path.motionClearance.insert(path.motionClearance.end(), passage->motionClearance.begin(),
+                              passage->motionClearance.end());
   const std::size_t last = path.waypoints.size() - 1;
   if (arrive.to.x != goal.x || arrive.to.y != goal.y) {
     path.waypoints.push_back(goal);

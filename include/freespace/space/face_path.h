@@ -1,12 +1,41 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 #include <vector>
 
 #include "freespace/topology/slice_faces.h"
 
 namespace freespace {
+
+/// The constrained Delaunay triangulation of a face of a slice (sliceFaces): its
+/// loops are the constraints (CGAL, exact constructions), inside a box around them and
+/// the points given; a triangle belongs to the face when the number of constraints
+/// crossed to reach it from outside is 1 (0 for an unbounded face). In the face's (the
+/// construction's) coordinates.
+class FaceTriangulation {
+ public:
+  explicit FaceTriangulation(const SliceFace& face, const std::vector<std::array<double, 2>>& alsoHolding = {});
+  ~FaceTriangulation();
+  FaceTriangulation(const FaceTriangulation&) = delete;
+  FaceTriangulation& operator=(const FaceTriangulation&) = delete;
+
+  /// Straight translations from triangle to triangle across edges that are not on the
+  /// face's boundary (breadth first), by the middles of the edges crossed; none when an
+  /// end lies outside the face or on its boundary, or no chain of triangles joins them.
+  std::optional<std::vector<std::array<double, 2>>> path(const std::array<double, 2>& from,
+                                                         const std::array<double, 2>& to) const;
+  /// The incentres of the face's triangles (of an unbounded face, those off the box
+  /// around it), the widest inscribed circles first: points well inside the face.
+  /// With `everyTriangle`, of every triangle off the box, in the face or not (a
+  /// triangulation of several faces' loops: each triangle lies inside or outside each).
+  std::vector<std::array<double, 2>> roomyPoints(bool everyTriangle = false) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 /// A path of straight translations inside one face of a slice (sliceFaces), from
 /// `from` to `to`: through the constrained Delaunay triangulation of the face's loops,

@@ -1,0 +1,262 @@
+#include "route_path.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "freespace/numbers/angle_reduction.h"
+#include "freespace/numbers/half_angle.h"
+#include "freespace/space/face_path.h"
+#include "freespace/space/motion_checker.h"
+#include "freespace/topology/slice_faces.h"
+
+namespace freespace {
+
+namespace {
+
+/// At most this many turning steps along a whole route.
+constexpr int kMostSteps = 20000;
+
+class RouteWalker {
+ public:
+  RouteWalker(const FreeSpace& space, const Cancellation& cancellation)
+      : space_(space),
+        graph_(space.cellGraph()),
+        checker_(space),
+        scale_(space.meshes().scale),
+        cancellation_(cancellation) {}
+
+  std::optional<std::vector<Pose2>> walk(const Pose2& from, const Pose2& to) {
+    const std::optional<std::uint32_t> first = space_.nodeOf(from), last = space_.nodeOf(to);
+    if (!first || !last) return std::nullopt;
+    const std::optional<std::vector<std::uint32_t>> route = graph_.route(*first, *last);
+    if (!route) return std::nullopt;
+    waypoints_ = {from};
+    for (std::size_t at = 0; at + 1 < route->size();) {
+      const std::optional<std::size_t> reached = crossFrom(*route, at);
+      if (!reached) return std::nullopt;
+      at = *reached;
+    }
+    if (!arriveAt(route->back(), to)) return std::nullopt;
+    return waypoints_;
+  }
+
+ private:
+  const Pose2& current() const { return waypoints_.back(); }
+  std::array<double, 2> scaled(const Pose2& pose) const { return {pose.x * scale_, pose.y * scale_}; }
+
+  /// The node's face in the slice at theta (none at a critical angle).
+  std::optional<SliceFace> faceAt(std::uint32_t node, double theta) const {
+    std::vector<SliceFace> faces;
+    try {
+      faces = sliceFaces(
+          space_.arrangement(), graph_, [&](SubFaceId face) { return space_.cellOfSubFace(face); },
+          AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space_.algebra());
+    } catch (const std::invalid_argument&) {
+      return std::nullopt;
+    }
+    for (SliceFace& face : faces) {
+      if (face.node == node) return std::move(face);
+    }
+    return std::nullopt;
+  }
+
+  /// Translations at the current angle to `target` (construction coordinates) inside
+  /// the face's triangulation.
+  bool translateTo(const FaceTriangulation& triangulation, const std::array<double, 2>& target) {
+    const std::optional<std::vector<std::array<double, 2>>> path = triangulation.path(scaled(current()), target);
+    if (!path) return false;
+    const double theta = current().theta;
+    for (std::size_t k = 1; k < path->size(); ++k)
+      waypoints_.push_back({(*path)[k][0] / scale_, (*path)[k][1] / scale_, theta});
+    return true;
+  }
+
+  /// Moves to the roomiest part of the node's face at the current angle, when the face
+  /// is found there.
+  void recentre(std::uint32_t node) {
+    const std::optional<SliceFace> face = faceAt(node, current().theta);
+    if (!face || face->loops.empty()) return;
+    const FaceTriangulation triangulation(*face, {scaled(current())});
+    const std::vector<std::array<double, 2>> roomy = triangulation.roomyPoints();
+    if (!roomy.empty()) translateTo(triangulation, roomy.front());
+  }
+
+  /// Whether an interval lies in the node's run of intervals.
+  bool runHolds(const CellGraphNode& node, std::uint32_t interval) const {
+    const std::uint32_t count = graph_.intervalCount();
+    return (interval + count - node.firstInterval) % count <= (node.lastInterval + count - node.firstInterval) % count;
+  }
+
+  /// The signed turn from the current angle to `theta` staying inside the node's arc
+  /// of angles (the shorter one when the node holds every angle).
+  double turnInside(const CellGraphNode& node, double theta) const {
+    const std::uint32_t count = graph_.intervalCount();
+    if (graph_.criticalAngles().empty() || (node.lastInterval + 1) % count == node.firstInterval) {
+      return std::remainder(theta - current().theta, 2 * M_PI);
+    }
+    const double arcStart = graph_.criticalAngles()[node.firstInterval].radians();
+    const auto along = [&](double angle) {
+      const double u = std::fmod(angle - arcStart, 2 * M_PI);
+      return u < 0 ? u + 2 * M_PI : u;
+    };
+    return along(theta) - along(current().theta);
+  }
+
+  /// Turns to `theta` inside the node by steps of half the current clearance's
+  /// allowance, moving to the face's roomiest part after each.
+  bool turnTo(std::uint32_t node, double theta) {
+    const CellGraphNode& graphNode = graph_.nodes()[node];
+    for (;;) {
+      cancellation_.check();
+      if (++steps_ > kMostSteps) return false;
+      const double remaining = turnInside(graphNode, theta);
+      if (remaining == 0) return true;
+      const double clearance = space_.clearance(current()).lower;
+      if (!(clearance > 0)) return false;
+      const double step = 0.5 * clearance / checker_.reach();
+      if (step >= std::fabs(remaining)) {
+        waypoints_.push_back({current().x, current().y, theta});
+        return true;
+      }
+      waypoints_.push_back({current().x, current().y, reducedAngle(current().theta + std::copysign(step, remaining))});
+      recentre(node);
+    }
+  }
+
+  /// An angle of the node's run near critical angle `index`, before it or after it:
+  /// in the first interval of the run from there on at least 1e-9 wide (the slices of
+  /// thinner ones are too close to the critical ones: faces pinched to rounding), at
+  /// most 1e-4 inside it.
+  std::optional<double> nextToCritical(std::uint32_t index, bool before, std::uint32_t node) const {
+    const std::vector<AlgebraicAngle>& critical = graph_.criticalAngles();
+    const std::uint32_t count = graph_.intervalCount();
+    const CellGraphNode& run = graph_.nodes()[node];
+    for (std::uint32_t step = 0; step < count; ++step) {
+      // The interval `step` away from the critical angle, and its end nearer to it.
+      const std::uint32_t interval = before ? (index + 2 * count - 1 - step) % count : (index + step) % count;
+      if (!runHolds(run, interval)) return std::nullopt;
+      const double low = critical[interval].radians(), high = critical[(interval + 1) % count].radians();
+      const double width = count == 1 ? 2 * M_PI : std::fmod(high - low + 4 * M_PI, 2 * M_PI);
+      if (width < 1e-9) continue;
+      const double inside = std::min(1e-4, width / 2);
+      return reducedAngle(before ? high - inside : low + inside);
+    }
+    return std::nullopt;
+  }
+
+  /// Crosses from route[at] to the next node through one of the edges joining them:
+  /// turns to the critical angle's side in the node, moves to a point whose turn through
+  /// it lands in the next node, and turns there. A next node without an interval
+  /// 1e-9 wide (see nextToCritical) is turned through, to the node after it. The index of the route's node reached;
+  /// none when no crossing is found.
+  std::optional<std::size_t> crossFrom(const std::vector<std::uint32_t>& route, std::size_t at) {
+    for (const CellGraphEdge& edge : graph_.edges()) {
+      if (!joins(edge, route[at], route[at + 1])) continue;
+      const std::optional<bool> upward = crossesUpward(route[at], route[at + 1], edge.angle);
+      if (!upward) continue;
+      const std::optional<double> exit = nextToCritical(edge.angle, *upward, route[at]);
+      if (!exit) continue;
+      // The entry, past nodes without an interval wide enough.
+      std::size_t reached = at + 1;
+      std::optional<double> entry = nextToCritical(edge.angle, !*upward, route[reached]);
+      while (!entry && reached + 1 < route.size()) {
+        const CellGraphNode& thin = graph_.nodes()[route[reached]];
+        const std::uint32_t end = *upward ? (thin.lastInterval + 1) % graph_.intervalCount() : thin.firstInterval;
+        if (!std::any_of(graph_.edges().begin(), graph_.edges().end(), [&](const CellGraphEdge& e) {
+              return e.angle == end && joins(e, route[reached], route[reached + 1]);
+            })) {
+          break;
+        }
+        ++reached;
+        entry = nextToCritical(end, !*upward, route[reached]);
+      }
+      if (!entry || !turnTo(route[at], *exit)) continue;
+      if (turnThroughAt(route[at], *exit, *entry, route[reached])) return reached;
+    }
+    return std::nullopt;
+  }
+
+  static bool joins(const CellGraphEdge& edge, std::uint32_t a, std::uint32_t b) {
+    return (edge.from == a && edge.to == b) || (edge.from == b && edge.to == a);
+  }
+
+  /// Whether an edge at a critical angle is crossed upward (counterclockwise: `node`
+  /// holds the interval before the angle and `next` the one after it) or downward;
+  /// none when neither.
+  std::optional<bool> crossesUpward(std::uint32_t node, std::uint32_t next, std::uint32_t angle) const {
+    const std::uint32_t count = graph_.intervalCount();
+    const std::uint32_t before = (angle + count - 1) % count, after = angle;
+    const CellGraphNode &from = graph_.nodes()[node], &to = graph_.nodes()[next];
+    if (runHolds(from, before) && runHolds(to, after)) return true;
+    if (runHolds(from, after) && runHolds(to, before)) return false;
+    return std::nullopt;
+  }
+
+  /// Moves, at angle `exit` in `node`, to a point (the current one, or the roomiest
+  /// of the triangles of both faces) where turning to `entry` is certified free and
+  /// lands in `next`, and turns there.
+  bool turnThroughAt(std::uint32_t node, double exit, double entry, std::uint32_t next) {
+    const std::optional<SliceFace> face = faceAt(node, exit);
+    if (!face) return false;
+    const FaceTriangulation triangulation(*face, {scaled(current())});
+    // The current point, then the roomiest of the triangles of both faces' loops
+    // together (each lies inside or outside each face; where the faces overlap only a
+    // little, the faces' own triangles may all miss the overlap).
+    std::vector<std::array<double, 2>> candidates{scaled(current())};
+    if (const std::optional<SliceFace> nextFace = faceAt(next, entry)) {
+      SliceFace both = *face;
+      both.loops.insert(both.loops.end(), nextFace->loops.begin(), nextFace->loops.end());
+      const std::vector<std::array<double, 2>> roomy = FaceTriangulation(both).roomyPoints(true);
+      candidates.insert(candidates.end(), roomy.begin(), roomy.end());
+    }
+    for (const std::array<double, 2>& point : candidates) {
+      const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
+      if (space_.nodeOf(turned) != next || space_.nodeOf(there) != node) continue;
+      if (!checker_.check(there, turned).free) continue;
+      if (point != candidates.front() && !translateTo(triangulation, point)) continue;
+      waypoints_.push_back(turned);
+      return true;
+    }
+    return false;
+  }
+
+  /// Turns to the goal's angle (beside it, if that angle is critical) inside its node,
+  /// translates to it, and turns onto its angle.
+  bool arriveAt(std::uint32_t node, const Pose2& goal) {
+    double theta = reducedAngle(goal.theta);
+    std::optional<SliceFace> face = faceAt(node, theta);
+    for (double offset = 1e-9; !face && offset < 1e-3; offset *= 4) {
+      theta = reducedAngle(goal.theta + offset);
+      face = faceAt(node, theta);
+    }
+    if (!face || !turnTo(node, theta)) return false;
+    face = faceAt(node, theta);
+    if (!face) return false;
+    if (face->loops.empty()) {
+      waypoints_.push_back({goal.x, goal.y, theta});
+    } else {
+      const FaceTriangulation triangulation(*face, {scaled(current()), scaled(goal)});
+      if (!translateTo(triangulation, scaled(goal))) return false;
+    }
+    waypoints_.back() = goal;
+    return true;
+  }
+
+  const FreeSpace& space_;
+  const CellGraph& graph_;
+  const MotionChecker checker_;
+  const double scale_;
+  const Cancellation& cancellation_;
+  std::vector<Pose2> waypoints_;
+  int steps_ = 0;
+};
+
+}  // namespace
+
+std::optional<std::vector<Pose2>> routePath(const FreeSpace& space, const Pose2& from, const Pose2& to,
+                                            const Cancellation& cancellation) {
+  return RouteWalker(space, cancellation).walk(from, to);
+}
+
+}  // namespace freespace
