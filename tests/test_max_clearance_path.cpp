@@ -91,20 +91,30 @@ TEST_P(SolvedProblems, PathsAreFreeAndKeepTheirCertifiedClearance) {
 
 INSTANTIATE_TEST_SUITE_P(Bundled, SolvedProblems, ::testing::Values("flip_window", "random_polyhedra"));
 
-class RoutedProblems : public ::testing::TestWithParam<std::string> {};
+/// A bundled problem and the seconds its query is given.
+struct TimedProblem {
+  const char* name;
+  double seconds;
+};
 
-// Problems whose first path comes from the cell graph's route within milliseconds,
-// the bounds stopped after half a second.
+class RoutedProblems : public ::testing::TestWithParam<TimedProblem> {};
+
+// Problems whose first path comes from the cell graph's route (the bounds stopped
+// early): within milliseconds, or seconds where its motions pass near contacts.
 TEST_P(RoutedProblems, TheRoutesPathIsCertified) {
-  Problem problem = bundled(GetParam());
-  problem.options.secondsLimit = 0.5;
+  Problem problem = bundled(GetParam().name);
+  problem.options.secondsLimit = GetParam().seconds;
   const MaxClearancePath path =
       maxClearancePath(*problem.space, problem.loaded.problem.start, problem.loaded.problem.goal, problem.options);
   EXPECT_GT(path.passage.lower, 0);
   expectCertifiedPath(problem, path);
 }
 
-INSTANTIATE_TEST_SUITE_P(Bundled, RoutedProblems, ::testing::Values("room_door", "turn_around", "tetra_floorplan"));
+INSTANTIATE_TEST_SUITE_P(Bundled, RoutedProblems,
+                         ::testing::Values(TimedProblem{"room_door", 0.5}, TimedProblem{"turn_around", 0.5},
+                                           TimedProblem{"tetra_floorplan", 0.5}, TimedProblem{"overhang", 0.5},
+                                           TimedProblem{"keyhole", 8}),
+                         [](const auto& info) { return std::string(info.param.name); });
 
 class InfeasibleProblems : public ::testing::TestWithParam<std::string> {};
 

@@ -129,38 +129,58 @@ std::optional<std::vector<std::array<double, 2>>> FaceTriangulation::path(const 
   return std::vector<std::array<double, 2>>(path.rbegin(), path.rend());
 }
 
+namespace {
+
+/// A triangle's incentre (the corners weighted by the lengths of the sides facing
+/// them) and inradius; none for a degenerate one.
+std::optional<std::pair<std::array<double, 2>, double>> incircleOf(Face face) {
+  std::array<std::array<double, 2>, 3> corner;
+  for (int i = 0; i < 3; ++i) {
+    const Kernel::Point_2& p = face->vertex(i)->point();
+    corner[i] = {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
+  }
+  std::array<double, 3> side;
+  for (int i = 0; i < 3; ++i) {
+    const auto &a = corner[(i + 1) % 3], &b = corner[(i + 2) % 3];
+    side[i] = std::hypot(a[0] - b[0], a[1] - b[1]);
+  }
+  const double perimeter = side[0] + side[1] + side[2];
+  if (!(perimeter > 0)) return std::nullopt;
+  std::array<double, 2> centre{0, 0};
+  for (int i = 0; i < 3; ++i) {
+    for (int axis : {0, 1}) centre[axis] += side[i] * corner[i][axis] / perimeter;
+  }
+  const double twiceArea = std::fabs((corner[1][0] - corner[0][0]) * (corner[2][1] - corner[0][1]) -
+                                     (corner[2][0] - corner[0][0]) * (corner[1][1] - corner[0][1]));
+  return std::pair(centre, twiceArea / perimeter);
+}
+
+}  // namespace
+
 std::vector<std::array<double, 2>> FaceTriangulation::roomyPoints(bool everyTriangle) const {
   std::vector<std::pair<double, std::array<double, 2>>> points;
   for (Face face : impl_->triangulation.finite_face_handles()) {
     if (!everyTriangle && !impl_->inFace(face)) continue;
-    std::array<std::array<double, 2>, 3> corner;
     bool onBox = false;
     for (int i = 0; i < 3; ++i) {
       const Kernel::Point_2& p = face->vertex(i)->point();
       onBox |= std::find(impl_->boxCorners.begin(), impl_->boxCorners.end(), p) != impl_->boxCorners.end();
-      corner[i] = {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
     }
     if (onBox) continue;
-    // The incentre: the corners weighted by the lengths of the sides facing them.
-    std::array<double, 3> side;
-    for (int i = 0; i < 3; ++i) {
-      const auto &a = corner[(i + 1) % 3], &b = corner[(i + 2) % 3];
-      side[i] = std::hypot(a[0] - b[0], a[1] - b[1]);
-    }
-    const double perimeter = side[0] + side[1] + side[2];
-    if (!(perimeter > 0)) continue;
-    std::array<double, 2> centre{0, 0};
-    for (int i = 0; i < 3; ++i) {
-      for (int axis : {0, 1}) centre[axis] += side[i] * corner[i][axis] / perimeter;
-    }
-    const double twiceArea = std::fabs((corner[1][0] - corner[0][0]) * (corner[2][1] - corner[0][1]) -
-                                       (corner[2][0] - corner[0][0]) * (corner[1][1] - corner[0][1]));
-    points.push_back({twiceArea / perimeter, centre});  // the inradius
+    if (const auto incircle = incircleOf(face)) points.push_back({incircle->second, incircle->first});
   }
   std::sort(points.begin(), points.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
   std::vector<std::array<double, 2>> roomy;
   for (const auto& point : points) roomy.push_back(point.second);
   return roomy;
+}
+
+std::optional<std::array<double, 2>> FaceTriangulation::incentreAt(const std::array<double, 2>& point) const {
+  const Face face = impl_->triangulation.locate(pointOf(point));
+  if (!impl_->inFace(face)) return std::nullopt;
+  const auto incircle = incircleOf(face);
+  if (!incircle) return std::nullopt;
+  return incircle->first;
 }
 
 std::optional<std::vector<std::array<double, 2>>> pathInFace(const SliceFace& face, const std::array<double, 2>& from,

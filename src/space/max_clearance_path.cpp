@@ -18,6 +18,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// Clearances computed per second, about (for a number of them that takes a time).
+constexpr double kClearancesPerSecond = 20000;
+
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 std::string poseText(const Pose2& pose) {
@@ -130,15 +133,21 @@ Passage chainPath(const ClearanceBoxes& boxes, const ClearanceBoxes::Chain& chai
 /// The path along the cell graph's route (routePath), each motion certified free by
 /// the motion checker with the clearance bound that took (halving a motion that
 /// passes near a contact until its bound is near the true least clearance could take
-/// billions of parts); none when one is not.
+/// billions of parts); none when one is not, or not before `deadline`.
 std::optional<Passage> certifiedRoutePath(const FreeSpace& space, const MotionChecker& checker, const Pose2& from,
-                                          const Pose2& to, const MaxClearancePathOptions& options) {
-  std::optional<std::vector<Pose2>> waypoints = routePath(space, from, to, options.cancellation);
+                                          const Pose2& to, Clock::time_point deadline,
+                                          const MaxClearancePathOptions& options) {
+  std::optional<std::vector<Pose2>> waypoints = routePath(space, from, to, deadline, options.cancellation);
   if (!waypoints) return std::nullopt;
   Passage passage{std::move(*waypoints), {}, HUGE_VAL};
   for (std::size_t k = 0; k + 1 < passage.waypoints.size(); ++k) {
     options.cancellation.check();
-    const MotionCheck check = checker.check(passage.waypoints[k], passage.waypoints[k + 1]);
+    if (Clock::now() > deadline) return std::nullopt;
+    // As many clearances as the time left allows (a motion passing very near a contact
+    // takes many).
+    const double secondsLeft = std::chrono::duration<double>(deadline - Clock::now()).count();
+    const MotionCheck check = checker.check(passage.waypoints[k], passage.waypoints[k + 1], 1,
+                                            static_cast<std::size_t>(1000 + secondsLeft * kClearancesPerSecond));
     if (!check.free) return std::nullopt;
     passage.motionClearance.push_back(check.minClearance);
     passage.lower = std::min(passage.lower, check.minClearance);
@@ -207,7 +216,9 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   const double passageEndUpper = space.clearance(passageEnd).upper;
 
   // The first path: along the cell graph's route.
-  const std::optional<Passage> routed = certifiedRoutePath(space, checker, passageStart, passageEnd, options);
+  const Clock::time_point deadline =
+      began + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.secondsLimit));
+  const std::optional<Passage> routed = certifiedRoutePath(space, checker, passageStart, passageEnd, deadline, options);
   if (routed) path.secondsToFirstPath = secondsSince(began);
   const double routedLower = routed ? routed->lower : -HUGE_VAL;
 

@@ -35,7 +35,8 @@ MotionChecker::MotionChecker(const FreeSpace& space)
     : space_(space), reach_(space.meshes().robot.horizontalReach() / space.meshes().scale * (1 + 1e-12)) {}
 
 Pose2 MotionChecker::interpolate(const Pose2& from, const Pose2& to, double t) {
-  return {from.x + t * (to.x - from.x), from.y + t * (to.y - from.y), from.theta + t * shorterTurn(from.theta, to.theta)};
+  return {from.x + t * (to.x - from.x), from.y + t * (to.y - from.y),
+          from.theta + t * shorterTurn(from.theta, to.theta)};
 }
 
 /// A part of the motion between fractions `from` and `to`, with the clearances there
@@ -55,7 +56,8 @@ void MotionChecker::certify(const Pose2& from, const Pose2& to, Certain certain,
   };
   // The motion's length in |dxy| + r |dtheta|, with room for the rounding of the
   // interpolated configurations' coordinates.
-  const double rounding = 1e-12 * (1 + std::max({std::fabs(from.x), std::fabs(from.y), std::fabs(to.x), std::fabs(to.y)}));
+  const double rounding =
+      1e-12 * (1 + std::max({std::fabs(from.x), std::fabs(from.y), std::fabs(to.x), std::fabs(to.y)}));
   const double length = std::hypot(to.x - from.x, to.y - from.y) * (1 + 1e-12) +
                         reach_ * std::fabs(shorterTurn(from.theta, to.theta)) + rounding;
   result.minClearance = HUGE_VAL;
@@ -81,13 +83,15 @@ void MotionChecker::certify(const Pose2& from, const Pose2& to, Certain certain,
   if (!result.free) result.minClearance = 0;
 }
 
-MotionCheck MotionChecker::check(const Pose2& from, const Pose2& to, double clearanceSlack) const {
+MotionCheck MotionChecker::check(const Pose2& from, const Pose2& to, double clearanceSlack,
+                                 std::size_t queryLimit) const {
   MotionCheck result;
   // (Without a slack, an unbounded clearance, where nothing can be touched, needs no comparison.)
   const auto certain = [&](double least, double clearanceFrom, double clearanceTo) {
     return least > 0 && (clearanceSlack >= 1 || least >= (1 - clearanceSlack) * std::min(clearanceFrom, clearanceTo));
   };
-  certify(from, to, certain, [](double) { return false; }, SIZE_MAX, result);
+  certify(
+      from, to, certain, [](double) { return false; }, queryLimit, result);
   return result;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <stdexcept>
 
 #include "freespace/numbers/angle_reduction.h"
@@ -16,29 +17,43 @@ namespace {
 
 /// At most this many turning steps along a whole route.
 constexpr int kMostSteps = 20000;
+/// At most this many crossings of edges that failed, before giving up.
+constexpr std::size_t kMostFailedCrossings = 200;
 
 class RouteWalker {
  public:
-  RouteWalker(const FreeSpace& space, const Cancellation& cancellation)
+  RouteWalker(const FreeSpace& space, std::chrono::steady_clock::time_point deadline, const Cancellation& cancellation)
       : space_(space),
         graph_(space.cellGraph()),
         checker_(space),
         scale_(space.meshes().scale),
+        deadline_(deadline),
         cancellation_(cancellation) {}
 
   std::optional<std::vector<Pose2>> walk(const Pose2& from, const Pose2& to) {
     const std::optional<std::uint32_t> first = space_.nodeOf(from), last = space_.nodeOf(to);
     if (!first || !last) return std::nullopt;
-    const std::optional<std::vector<std::uint32_t>> route = graph_.route(*first, *last);
-    if (!route) return std::nullopt;
     waypoints_ = {from};
-    for (std::size_t at = 0; at + 1 < route->size();) {
-      const std::optional<std::size_t> reached = crossFrom(*route, at);
-      if (!reached) return std::nullopt;
-      at = *reached;
+    // Where a crossing fails, the route is planned again from the node reached,
+    // without that edge.
+    std::set<std::pair<std::uint32_t, std::uint32_t>> failed;
+    const auto usable = [&](std::uint32_t a, std::uint32_t b) { return !failed.count(std::minmax(a, b)); };
+    for (std::uint32_t node = *first; failed.size() < kMostFailedCrossings;) {
+      const std::optional<std::vector<std::uint32_t>> route = graph_.route(node, *last, usable);
+      if (!route) return std::nullopt;
+      std::size_t at = 0;
+      for (std::optional<std::size_t> reached; at + 1 < route->size(); at = *reached) {
+        reached = crossFrom(*route, at);
+        if (!reached) break;
+      }
+      if (at + 1 == route->size()) {
+        if (!arriveAt(route->back(), to)) return std::nullopt;
+        return waypoints_;
+      }
+      failed.insert(std::minmax((*route)[at], (*route)[at + 1]));
+      node = (*route)[at];
     }
-    if (!arriveAt(route->back(), to)) return std::nullopt;
-    return waypoints_;
+    return std::nullopt;
   }
 
  private:
@@ -72,14 +87,25 @@ class RouteWalker {
     return true;
   }
 
-  /// Moves to the roomiest part of the node's face at the current angle, when the face
-  /// is found there.
+  /// Moves to where the node's face at the current angle is roomier: the middle of the
+  /// triangle holding the current point (a short move), or the middle of the face's
+  /// widest triangle when that has more than four times the clearance (a move across
+  /// the face, maybe through tight passages, where the next turns need room).
   void recentre(std::uint32_t node) {
     const std::optional<SliceFace> face = faceAt(node, current().theta);
     if (!face || face->loops.empty()) return;
     const FaceTriangulation triangulation(*face, {scaled(current())});
+    const auto clearanceAt = [&](const std::array<double, 2>& point) {
+      return space_.clearance({point[0] / scale_, point[1] / scale_, current().theta}).lower;
+    };
+    std::optional<std::array<double, 2>> best = triangulation.incentreAt(scaled(current()));
+    double bestClearance = best ? clearanceAt(*best) : -HUGE_VAL;
     const std::vector<std::array<double, 2>> roomy = triangulation.roomyPoints();
-    if (!roomy.empty()) translateTo(triangulation, roomy.front());
+    if (!roomy.empty() && clearanceAt(roomy.front()) > 4 * std::max(bestClearance, 0.0)) {
+      best = roomy.front();
+      bestClearance = clearanceAt(roomy.front());
+    }
+    if (best && bestClearance > space_.clearance(current()).lower) translateTo(triangulation, *best);
   }
 
   /// Whether an interval lies in the node's run of intervals.
@@ -104,12 +130,12 @@ class RouteWalker {
   }
 
   /// Turns to `theta` inside the node by steps of half the current clearance's
-  /// allowance, moving to the face's roomiest part after each.
+  /// allowance, moving to the middle of the face's triangle after each.
   bool turnTo(std::uint32_t node, double theta) {
     const CellGraphNode& graphNode = graph_.nodes()[node];
     for (;;) {
       cancellation_.check();
-      if (++steps_ > kMostSteps) return false;
+      if (++steps_ > kMostSteps || std::chrono::steady_clock::now() > deadline_) return false;
       const double remaining = turnInside(graphNode, theta);
       if (remaining == 0) return true;
       const double clearance = space_.clearance(current()).lower;
@@ -211,6 +237,8 @@ class RouteWalker {
       candidates.insert(candidates.end(), roomy.begin(), roomy.end());
     }
     for (const std::array<double, 2>& point : candidates) {
+      cancellation_.check();
+      if (std::chrono::steady_clock::now() > deadline_) return false;
       const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
       if (space_.nodeOf(turned) != next || space_.nodeOf(there) != node) continue;
       if (!checker_.check(there, turned).free) continue;
@@ -247,6 +275,7 @@ class RouteWalker {
   const CellGraph& graph_;
   const MotionChecker checker_;
   const double scale_;
+  const std::chrono::steady_clock::time_point deadline_;
   const Cancellation& cancellation_;
   std::vector<Pose2> waypoints_;
   int steps_ = 0;
@@ -255,8 +284,9 @@ class RouteWalker {
 }  // namespace
 
 std::optional<std::vector<Pose2>> routePath(const FreeSpace& space, const Pose2& from, const Pose2& to,
+                                            std::chrono::steady_clock::time_point deadline,
                                             const Cancellation& cancellation) {
-  return RouteWalker(space, cancellation).walk(from, to);
+  return RouteWalker(space, deadline, cancellation).walk(from, to);
 }
 
 }  // namespace freespace

@@ -769,9 +769,11 @@ void CellGraph::checkParts(std::size_t cellCount, AngleAlgebra& algebra) const {
   checkRuns(parts_.unboundedRuns);
 }
 
-std::optional<std::vector<std::uint32_t>> CellGraph::route(std::uint32_t from, std::uint32_t to) const {
+std::optional<std::vector<std::uint32_t>> CellGraph::route(
+    std::uint32_t from, std::uint32_t to, const std::function<bool(std::uint32_t, std::uint32_t)>& usable) const {
   std::vector<std::vector<std::uint32_t>> next(parts_.nodes.size());
   for (const CellGraphEdge& edge : parts_.edges) {
+    if (usable && !usable(edge.from, edge.to)) continue;
     next[edge.from].push_back(edge.to);
     next[edge.to].push_back(edge.from);
   }

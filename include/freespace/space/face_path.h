@@ -31,6 +31,9 @@ class FaceTriangulation {
   /// With `everyTriangle`, of every triangle off the box, in the face or not (a
   /// triangulation of several faces' loops: each triangle lies inside or outside each).
   std::vector<std::array<double, 2>> roomyPoints(bool everyTriangle = false) const;
+  /// The incentre of the face's triangle holding a point (none outside the face): in a
+  /// passage, about its middle across.
+  std::optional<std::array<double, 2>> incentreAt(const std::array<double, 2>& point) const;
 
  private:
   struct Impl;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 
 #include "freespace/space/free_space.h"
 
@@ -35,8 +36,11 @@ class MotionChecker {
 
   /// Checks the motion; `clearanceSlack` (relative) makes the parts shorter until the
   /// bound on each is within that fraction of its ends' smaller clearance (1: only
-  /// certify freedom; 0.02 for a bound on the clearance within 2%).
-  MotionCheck check(const Pose2& from, const Pose2& to, double clearanceSlack = 1) const;
+  /// certify freedom; 0.02 for a bound on the clearance within 2%). A motion that would
+  /// take more than `queryLimit` clearances (one passing within a tiny fraction of its
+  /// length of a contact) is not certified free.
+  MotionCheck check(const Pose2& from, const Pose2& to, double clearanceSlack = 1,
+                    std::size_t queryLimit = SIZE_MAX) const;
 
   /// Whether the clearance stays at least `level` (> 0) along the whole motion,
   /// certified; false as soon as a configuration on it has less, or when certifying

@@ -93,8 +93,11 @@ class CellGraph {
   const std::vector<CellGraphEdge>& edges() const { return parts_.edges; }
 
   /// The fewest nodes from `from` to `to` joined by edges (both included), or none
-  /// when no path of edges joins them (then they lie in different cells).
-  std::optional<std::vector<std::uint32_t>> route(std::uint32_t from, std::uint32_t to) const;
+  /// when no path of edges joins them (then they lie in different cells); with
+  /// `usable`, through the edges it accepts (given their two nodes) only.
+  std::optional<std::vector<std::uint32_t>> route(
+      std::uint32_t from, std::uint32_t to,
+      const std::function<bool(std::uint32_t, std::uint32_t)>& usable = {}) const;
 
   /// The interval whose open arc holds an angle; a critical angle gets the interval
   /// it starts.
