@@ -18,8 +18,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// Clearances computed per second, about (for a number of them that takes a time).
-constexpr double kClearancesPerSecond = 20000;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
@@ -140,14 +138,18 @@ std::optional<Passage> certifiedRoutePath(const FreeSpace& space, const MotionCh
   std::optional<std::vector<Pose2>> waypoints = routePath(space, from, to, deadline, options.cancellation);
   if (!waypoints) return std::nullopt;
   Passage passage{std::move(*waypoints), {}, HUGE_VAL};
+  const Clock::time_point began = Clock::now();
+  double queries = 0;
   for (std::size_t k = 0; k + 1 < passage.waypoints.size(); ++k) {
     options.cancellation.check();
     if (Clock::now() > deadline) return std::nullopt;
-    // As many clearances as the time left allows (a motion passing very near a contact
-    // takes many).
+    // As many clearances as the time left allows at the rate measured so far (a motion
+    // passing very near a contact takes many).
     const double secondsLeft = std::chrono::duration<double>(deadline - Clock::now()).count();
+    const double perSecond = queries > 1000 ? queries / secondsSince(began) : 5000;
     const MotionCheck check = checker.check(passage.waypoints[k], passage.waypoints[k + 1], 1,
-                                            static_cast<std::size_t>(1000 + secondsLeft * kClearancesPerSecond));
+                                            static_cast<std::size_t>(100 + std::max(0.0, secondsLeft) * perSecond));
+    queries += check.clearanceQueries;
     if (!check.free) return std::nullopt;
     passage.motionClearance.push_back(check.minClearance);
     passage.lower = std::min(passage.lower, check.minClearance);
