@@ -330,6 +330,32 @@ TEST(CliFreeSpace, PlanPrintsThePathAndItsBoundsAndWritesThePathFile) {
   EXPECT_EQ(again.err, "error: " + pathFile + ": already exists (not overwritten)\n");
 }
 
+// plan --svg: a picture with its title, the path's line, the robot's outlines along
+// it (coloured, so several fills), the legend and axes; never overwritten without --force.
+TEST(CliFreeSpace, PlanDrawsThePath) {
+  TempDir dir;
+  const std::string svg = dir.file("overhang.svg");
+  const std::string command =
+      "plan --cfg '" + kProblems + "overhang.cfg' --seconds-limit 0.5 --svg '" + svg + "'";
+  const CommandResult result = runFreespace(command);
+  ASSERT_EQ(result.status, 0) << result.err;
+  const std::string picture = readWholeFile(svg);
+  EXPECT_EQ(picture.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
+  EXPECT_NE(picture.find("<title>Path: clearance "), std::string::npos);
+  EXPECT_NE(picture.find("<polyline fill=\"none\""), std::string::npos);
+  EXPECT_NE(picture.find("the robot along it, by clearance:"), std::string::npos);
+  EXPECT_NE(picture.find("x (the meshes' units)"), std::string::npos);
+  std::set<std::string> fills;
+  for (std::size_t at = picture.find("<g fill=\"#"); at != std::string::npos; at = picture.find("<g fill=\"#", at + 1)) {
+    fills.insert(picture.substr(at + 9, 7));
+  }
+  EXPECT_GE(fills.size(), 5u);  // footprint (2), start, goal and outlines of several clearances
+  EXPECT_EQ(picture.substr(picture.size() - 7), "</svg>\n");
+  const CommandResult again = runFreespace(command);
+  EXPECT_EQ(again.status, 2);
+  EXPECT_EQ(readWholeFile(svg), picture);
+}
+
 TEST(CliFreeSpace, PlanProvesInfeasibilityAndRefusesBadInput) {
   const CommandResult infeasible = runFreespace("plan --cfg '" + kProblems + "keyhole_narrow.cfg'");
   EXPECT_EQ(infeasible.status, 0) << infeasible.err;

@@ -5,7 +5,9 @@
 
 #include "commands.h"
 #include "free_space_input.h"
+#include "freespace/exports/path_svg.h"
 #include "freespace/input_error.h"
+#include "freespace/io/output_file.h"
 #include "freespace/problem/path_file.h"
 #include "freespace/space/max_clearance_path.h"
 #include "number_checks.h"
@@ -25,7 +27,7 @@ struct PlanOptions {
   double ratio = MaxClearancePathOptions{}.clearanceRatio;
   double secondsLimit = MaxClearancePathOptions{}.secondsLimit;
   bool json = false, force = false;
-  std::string pathOut;
+  std::string pathOut, svg;
 };
 
 const char* statusName(PathStatus status) {
@@ -131,6 +133,9 @@ void runPlan(const PlanOptions& options) {
   if (!options.pathOut.empty() && path.status == PathStatus::solved) {
     writePath(path.waypoints, options.pathOut, options.force);
   }
+  if (!options.svg.empty()) {
+    writeFile(options.svg, options.force, [&](std::ostream& out) { writePathSvg(*space, start, goal, path, out); });
+  }
   if (options.json) {
     std::cout << plan.dump(2) << "\n";
   } else {
@@ -165,7 +170,10 @@ void addPlanCommand(CLI::App& app) {
                    "stop refining the bounds after this many seconds (default 60)")
       ->check(finiteNonNegative());
   command->add_option("--path-out", options->pathOut, "write the path as an OMPL.app .path file");
-  command->add_flag("--force", options->force, "overwrite an existing --path-out file");
+  command->add_option("--svg", options->svg,
+                      "draw the path as SVG: the environment's footprint, the robot along the path coloured by "
+                      "clearance, start and goal");
+  command->add_flag("--force", options->force, "overwrite an existing --path-out or --svg file");
   command->add_flag("--json", options->json, "print JSON");
   command->callback([options]() { runPlan(*options); });
 }

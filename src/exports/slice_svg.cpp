@@ -1,7 +1,5 @@
 #include "freespace/exports/slice_svg.h"
 
-#include "freespace/topology/slice_pieces.h"
-
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -9,6 +7,9 @@
 #include <set>
 #include <sstream>
 #include <vector>
+
+#include "freespace/topology/slice_pieces.h"
+#include "svg_picture.h"
 
 namespace freespace {
 
@@ -26,23 +27,8 @@ const std::string kBlocked = "#555555", kOtherPiece = "#aaaaaa";
 const std::string kRobotFill = "#000000";
 constexpr double kRobotOpacity = 0.35;
 
-struct View {
-  double left, bottom, width, height;
-  int columns, rows;
-};
-
-// Drawn in the input's coordinates: the construction's are scaled (FreeSpace::meshes).
-View viewOf(const FreeSpace& space, int resolution) {
-  const double scale = space.meshes().scale;
-  const Box3 world = space.meshes().world.bounds();
-  const double reach = space.meshes().robot.bounds().sizes().head<2>().norm() / scale;
-  const Eigen::Vector2d low = world.min().head<2>() / scale, size = world.sizes().head<2>() / scale;
-  View view{low.x() - reach, low.y() - reach, size.x() + 2 * reach, size.y() + 2 * reach, 0, 0};
-  const double pixel = std::max(view.width, view.height) / resolution;
-  view.columns = std::max(1, static_cast<int>(std::ceil(view.width / pixel)));
-  view.rows = std::max(1, static_cast<int>(std::ceil(view.height / pixel)));
-  return view;
-}
+using svg::Frame;
+using svg::View;
 
 /// What the pixels met: the free cells, and for each node of the cell graph the
 /// centres of its pixels.
@@ -124,69 +110,11 @@ void writePieces(const FreeSpace& space, double theta, double strokeWidth, std::
       const std::array<double, 2> a = toDouble(segment.at(low)), b = toDouble(segment.at(high));
       const std::optional<std::uint32_t> cell = space.cellOfSubFace({patch, slab->faces[gap]});
       out << "<line x1=\"" << a[0] << "\" y1=\"" << a[1] << "\" x2=\"" << b[0] << "\" y2=\"" << b[1] << "\" stroke=\""
-          << (cell ? cellColour(*cell, true) : kOtherPiece) << "\" stroke-width=\""
-          << (cell ? 2 : 0.6) * strokeWidth << "\"/>\n";
+          << (cell ? cellColour(*cell, true) : kOtherPiece) << "\" stroke-width=\"" << (cell ? 2 : 0.6) * strokeWidth
+          << "\"/>\n";
     }
   }
   out << "</g>\n";
-}
-
-/// The robot's triangles seen from above, placed at (x, y) turned by theta.
-void writeRobot(const FreeSpace& space, const std::array<double, 2>& at, double theta, std::ostream& out) {
-  const Mesh& robot = space.meshes().robot;
-  const double c = std::cos(theta), s = std::sin(theta), scale = space.meshes().scale;
-  out << "<g fill=\"" << kRobotFill << "\" fill-opacity=\"" << kRobotOpacity << "\" stroke=\"none\">\n";
-  for (const TriangleIndices& triangle : robot.triangles()) {
-    out << "<polygon points=\"";
-    for (std::uint32_t vertex : triangle) {
-      const Point3 p = robot.vertices()[vertex] / scale;
-      out << at[0] + c * p.x() - s * p.y() << "," << at[1] + s * p.x() + c * p.y() << " ";
-    }
-    out << "\"/>\n";
-  }
-  out << "</g>\n";
-}
-
-/// Steps of 1, 2 or 5 times a power of ten, about `count` of them across `span`.
-double tickStep(double span, int count) {
-  const double rough = span / count, power = std::pow(10, std::floor(std::log10(rough)));
-  for (const double factor : {1.0, 2.0, 5.0}) {
-    if (factor * power >= rough) return factor * power;
-  }
-  return 10 * power;
-}
-
-/// The picture's frame in pixels: the plot between margins for the title and the
-/// axes' labels, and the legend on the right.
-struct Frame {
-  double left = 70, top = 40, plotWidth, plotHeight, legendWidth = 230, bottom = 50;
-  double width() const { return left + plotWidth + legendWidth; }
-  double height() const { return top + plotHeight + bottom; }
-};
-
-/// The axes below and left of the plot, with ticks labelled in the input's units.
-void writeAxes(const View& view, const Frame& frame, std::ostream& out) {
-  const double perUnit = frame.plotWidth / view.width;
-  const auto pixelX = [&](double x) { return frame.left + (x - view.left) * perUnit; };
-  const auto pixelY = [&](double y) { return frame.top + frame.plotHeight - (y - view.bottom) * perUnit; };
-  const double step = tickStep(std::max(view.width, view.height), 6), base = frame.top + frame.plotHeight;
-  out << "<g font-family=\"sans-serif\" font-size=\"12\" stroke=\"#000000\">\n"
-      << "<rect x=\"" << frame.left << "\" y=\"" << frame.top << "\" width=\"" << frame.plotWidth << "\" height=\""
-      << frame.plotHeight << "\" fill=\"none\"/>\n";
-  for (double x = std::ceil(view.left / step) * step; x <= view.left + view.width; x += step) {
-    out << "<line x1=\"" << pixelX(x) << "\" y1=\"" << base << "\" x2=\"" << pixelX(x) << "\" y2=\"" << base + 5
-        << "\"/><text x=\"" << pixelX(x) << "\" y=\"" << base + 18 << "\" text-anchor=\"middle\" stroke=\"none\">"
-        << (std::fabs(x) < step / 2 ? 0 : x) << "</text>\n";
-  }
-  for (double y = std::ceil(view.bottom / step) * step; y <= view.bottom + view.height; y += step) {
-    out << "<line x1=\"" << frame.left - 5 << "\" y1=\"" << pixelY(y) << "\" x2=\"" << frame.left << "\" y2=\""
-        << pixelY(y) << "\"/><text x=\"" << frame.left - 8 << "\" y=\"" << pixelY(y) + 4
-        << "\" text-anchor=\"end\" stroke=\"none\">" << (std::fabs(y) < step / 2 ? 0 : y) << "</text>\n";
-  }
-  out << "<text x=\"" << frame.left + frame.plotWidth / 2 << "\" y=\"" << base + 40
-      << "\" text-anchor=\"middle\" stroke=\"none\">x (the meshes' units)</text>\n"
-      << "<text transform=\"translate(" << 18 << "," << frame.top + frame.plotHeight / 2
-      << ") rotate(-90)\" text-anchor=\"middle\" stroke=\"none\">y (the meshes' units)</text>\n</g>\n";
 }
 
 /// What the colours and lines mean: blocked, each free cell met, the boundary
@@ -222,7 +150,7 @@ void writeLegend(const Frame& frame, const std::set<std::uint32_t>& cells, bool 
 }  // namespace
 
 void writeSliceSvg(const FreeSpace& space, const SliceSvgOptions& options, std::ostream& out) {
-  const View view = viewOf(space, options.resolution);
+  const View view = svg::viewOf(space, options.resolution);
   const double pixel = view.width / view.columns;
   Frame frame;
   frame.plotWidth = 3 * view.columns;  // three picture pixels per located pixel
@@ -231,24 +159,19 @@ void writeSliceSvg(const FreeSpace& space, const SliceSvgOptions& options, std::
   std::ostringstream title;
   title << "Free space slice at theta = " << options.theta << " rad (" << options.theta * 180 / M_PI << " degrees), "
         << space.cellCount() << " free cells";
-  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << frame.width() << "\" height=\"" << frame.height()
-      << "\" viewBox=\"0 0 " << frame.width() << " " << frame.height() << "\">\n"
-      << "<title>" << title.str() << "</title>\n"
-      << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n"
-      << "<text x=\"" << frame.left << "\" y=\"24\" font-family=\"sans-serif\" font-size=\"16\">" << title.str()
-      << "</text>\n"
-      // The plot in the input's (x, y), y up.
-      << "<g transform=\"translate(" << frame.left << "," << frame.top + frame.plotHeight << ") scale(" << perUnit << ","
-      << -perUnit << ") translate(" << -view.left << "," << -view.bottom << ")\">\n";
+  svg::openPicture(frame, view, title.str(), out);
   const PixelsMet met = writePixels(space, view, options.theta, out);
   writePieces(space, options.theta, pixel / 3, out);
-  if (options.robotAt) writeRobot(space, *options.robotAt, options.theta, out);
+  if (options.robotAt) svg::writeRobot(space, *options.robotAt, options.theta, kRobotFill, kRobotOpacity, out);
   out << "</g>\n";
-  writeNodeLabels(met, [&](const std::array<double, 2>& p) {
-    return std::array<double, 2>{frame.left + (p[0] - view.left) * perUnit,
-                                 frame.top + frame.plotHeight - (p[1] - view.bottom) * perUnit};
-  }, out);
-  writeAxes(view, frame, out);
+  writeNodeLabels(
+      met,
+      [&](const std::array<double, 2>& p) {
+        return std::array<double, 2>{frame.left + (p[0] - view.left) * perUnit,
+                                     frame.top + frame.plotHeight - (p[1] - view.bottom) * perUnit};
+      },
+      out);
+  svg::writeAxes(view, frame, out);
   writeLegend(frame, met.cells, options.robotAt.has_value(), out);
   out << "</svg>\n";
 }
