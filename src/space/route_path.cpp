@@ -236,11 +236,20 @@ class RouteWalker {
       const std::vector<std::array<double, 2>> roomy = FaceTriangulation(both).roomyPoints(true);
       candidates.insert(candidates.end(), roomy.begin(), roomy.end());
     }
+    // Those in both nodes, the roomiest first (a crossing point near a contact makes
+    // the translations to it and from it tight).
+    std::vector<std::pair<double, std::array<double, 2>>> usable;
     for (const std::array<double, 2>& point : candidates) {
       cancellation_.check();
       if (std::chrono::steady_clock::now() > deadline_) return false;
       const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
       if (space_.nodeOf(turned) != next || space_.nodeOf(there) != node) continue;
+      usable.push_back({std::min(space_.clearance(there).lower, space_.clearance(turned).lower), point});
+    }
+    std::stable_sort(usable.begin(), usable.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    for (const auto& [clearance, point] : usable) {
+      if (std::chrono::steady_clock::now() > deadline_) return false;
+      const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
       if (!checker_.check(there, turned).free) continue;
       if (point != candidates.front() && !translateTo(triangulation, point)) continue;
       waypoints_.push_back(turned);
