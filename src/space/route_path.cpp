@@ -88,24 +88,42 @@ class RouteWalker {
   }
 
   /// Moves to where the node's face at the current angle is roomier: the middle of the
-  /// triangle holding the current point (a short move), or the middle of the face's
-  /// widest triangle when that has more than four times the clearance (a move across
-  /// the face, maybe through tight passages, where the next turns need room).
+  /// face's widest triangle when that has more than four times the clearance and the
+  /// way there keeps half the current clearance (where the robot must turn around, the
+  /// room to do so may lie across the face), otherwise the middle of the triangle
+  /// holding the current point (a short move).
   void recentre(std::uint32_t node) {
     const std::optional<SliceFace> face = faceAt(node, current().theta);
     if (!face || face->loops.empty()) return;
     const FaceTriangulation triangulation(*face, {scaled(current())});
+    const double theta = current().theta, here = space_.clearance(current()).lower;
     const auto clearanceAt = [&](const std::array<double, 2>& point) {
-      return space_.clearance({point[0] / scale_, point[1] / scale_, current().theta}).lower;
+      return space_.clearance({point[0] / scale_, point[1] / scale_, theta}).lower;
     };
-    std::optional<std::array<double, 2>> best = triangulation.incentreAt(scaled(current()));
-    double bestClearance = best ? clearanceAt(*best) : -HUGE_VAL;
     const std::vector<std::array<double, 2>> roomy = triangulation.roomyPoints();
-    if (!roomy.empty() && clearanceAt(roomy.front()) > 4 * std::max(bestClearance, 0.0)) {
-      best = roomy.front();
-      bestClearance = clearanceAt(roomy.front());
+    if (!roomy.empty() && clearanceAt(roomy.front()) > 4 * std::max(here, 0.0) &&
+        followsKeepingClearance(triangulation, roomy.front(), 0.5 * here)) {
+      return;
     }
-    if (best && bestClearance > space_.clearance(current()).lower) translateTo(triangulation, *best);
+    const std::optional<std::array<double, 2>> middle = triangulation.incentreAt(scaled(current()));
+    if (middle && clearanceAt(*middle) > here) translateTo(triangulation, *middle);
+  }
+
+  /// Translates to `target` when every motion of the way there keeps `level`
+  /// (certified, with few clearances each).
+  bool followsKeepingClearance(const FaceTriangulation& triangulation, const std::array<double, 2>& target,
+                               double level) {
+    const std::optional<std::vector<std::array<double, 2>>> path = triangulation.path(scaled(current()), target);
+    if (!path || !(level > 0)) return false;
+    const double theta = current().theta;
+    for (std::size_t k = 1; k < path->size(); ++k) {
+      const Pose2 from{(*path)[k - 1][0] / scale_, (*path)[k - 1][1] / scale_, theta};
+      const Pose2 to{(*path)[k][0] / scale_, (*path)[k][1] / scale_, theta};
+      if (!checker_.keepsClearance(from, to, level, 64)) return false;
+    }
+    for (std::size_t k = 1; k < path->size(); ++k)
+      waypoints_.push_back({(*path)[k][0] / scale_, (*path)[k][1] / scale_, theta});
+    return true;
   }
 
   /// Whether an interval lies in the node's run of intervals.
