@@ -13,12 +13,11 @@
 #include <string>
 #include <vector>
 
+#include "freespace/geometry/stage_clock.h"
+
 namespace freespace::benchmarks {
 
-/// Seconds of wall-clock time since `start`.
-inline double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
+using freespace::secondsSince;
 
 /// Runs `body` (which returns the exit status), reporting any exception as
 /// "program: error: what" with status 1.

@@ -106,8 +106,7 @@ void addBuildCommand(CLI::App& app) {
     const std::unique_ptr<FreeSpace> space = options->input.build(loaded);
     const auto graphStart = std::chrono::steady_clock::now();
     const CellGraph& graph = space->cellGraph();
-    const double graphSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - graphStart).count();
+    const double graphSeconds = secondsSince(graphStart);
     if (!options->save.empty()) space->save(options->save, options->force);
     nlohmann::json statistics = statisticsJson(*space);
     statistics["graph"] = {{"critical_angles", graph.criticalAngles().size()},

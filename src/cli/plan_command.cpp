@@ -6,6 +6,7 @@
 #include "commands.h"
 #include "free_space_input.h"
 #include "freespace/exports/path_svg.h"
+#include "freespace/geometry/stage_clock.h"
 #include "freespace/input_error.h"
 #include "freespace/io/output_file.h"
 #include "freespace/problem/path_file.h"
@@ -18,8 +19,6 @@ namespace freespace::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 struct PlanOptions {
   FreeSpaceInput input;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <vector>
 
 #include "freespace/space/motion_checker.h"
 #include "svg_picture.h"
@@ -54,19 +55,21 @@ void writeFootprint(const FreeSpace& space, std::ostream& out) {
 /// The robot's outline at about kOutlines configurations spread along the path by
 /// length, coloured by their clearance relative to `reference`.
 void writeOutlines(const FreeSpace& space, const MaxClearancePath& path, double reference, std::ostream& out) {
-  double total = 0;
-  for (std::size_t k = 0; k + 1 < path.waypoints.size(); ++k) {
-    total += std::hypot(path.waypoints[k + 1].x - path.waypoints[k].x, path.waypoints[k + 1].y - path.waypoints[k].y) +
-             std::fabs(std::remainder(path.waypoints[k + 1].theta - path.waypoints[k].theta, 2 * M_PI));
-  }
-  const double spacing = std::max(total / kOutlines, 1e-12);
+  // Each motion's length in |dxy| + |dtheta|.
+  std::vector<double> lengths;
   for (std::size_t k = 0; k + 1 < path.waypoints.size(); ++k) {
     const Pose2 &from = path.waypoints[k], &to = path.waypoints[k + 1];
-    const double length =
-        std::hypot(to.x - from.x, to.y - from.y) + std::fabs(std::remainder(to.theta - from.theta, 2 * M_PI));
-    const int steps = std::max(1, static_cast<int>(std::ceil(length / spacing)));
+    lengths.push_back(std::hypot(to.x - from.x, to.y - from.y) +
+                      std::fabs(MotionChecker::shorterTurn(from.theta, to.theta)));
+  }
+  double total = 0;
+  for (double length : lengths) total += length;
+  const double spacing = std::max(total / kOutlines, 1e-12);
+  for (std::size_t k = 0; k < lengths.size(); ++k) {
+    const int steps = std::max(1, static_cast<int>(std::ceil(lengths[k] / spacing)));
     for (int step = 0; step < steps; ++step) {
-      const Pose2 pose = MotionChecker::interpolate(from, to, static_cast<double>(step) / steps);
+      const Pose2 pose =
+          MotionChecker::interpolate(path.waypoints[k], path.waypoints[k + 1], static_cast<double>(step) / steps);
       const double clearance = space.clearance(pose).lower;
       svg::writeRobot(space, {pose.x, pose.y}, pose.theta, clearanceColour(clearance / reference), kOutlineOpacity,
                       out);

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <set>
 #include <sstream>
 
 #include "clearance_boxes.h"
+#include "freespace/geometry/stage_clock.h"
 #include "freespace/input_error.h"
 #include "freespace/numbers/angle_reduction.h"
 #include "freespace/space/motion_checker.h"
@@ -17,9 +17,6 @@ namespace freespace {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 std::string poseText(const Pose2& pose) {
   std::ostringstream text;
@@ -185,7 +182,7 @@ void measure(MaxClearancePath& path) {
   for (std::size_t k = 0; k + 1 < path.waypoints.size(); ++k) {
     const Pose2 &from = path.waypoints[k], &to = path.waypoints[k + 1];
     path.length += std::hypot(to.x - from.x, to.y - from.y);
-    path.turn += std::fabs(std::remainder(to.theta - from.theta, 2 * M_PI));
+    path.turn += std::fabs(MotionChecker::shorterTurn(from.theta, to.theta));
   }
 }
 
@@ -288,7 +285,6 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
 
   // start, leaving, the passage, arriving, goal.
   path.waypoints = {start};
-  path.motionClearance.clear();
   if (leave.to.x != start.x || leave.to.y != start.y) {
     path.waypoints.push_back(passageStart);
     path.motionClearance.push_back(leave.clearance);

@@ -12,14 +12,6 @@ namespace {
 /// The smallest fraction of a motion a part is halved down to.
 constexpr double kShortestPart = 1e-12;
 
-/// Theta's change along the shorter arc, as OMPL's SO(2) space interpolates (half a
-/// turn goes the direct way).
-double shorterTurn(double from, double to) {
-  double turn = to - from;
-  if (std::fabs(turn) > M_PI) turn = std::remainder(turn, 2 * M_PI);
-  return turn;
-}
-
 /// The least clearance the Lipschitz bound guarantees on a part of metric length
 /// `length` between clearances c0 and c1: the lowest point of the upper envelope of
 /// the two cones c0 - s and c1 - (length - s).
@@ -33,6 +25,12 @@ double leastClearanceOn(double c0, double c1, double length) {
 MotionChecker::MotionChecker(const FreeSpace& space)
     // In the input's units, rounded up far beyond the rounding of the hypotenuse.
     : space_(space), reach_(space.meshes().robot.horizontalReach() / space.meshes().scale * (1 + 1e-12)) {}
+
+double MotionChecker::shorterTurn(double from, double to) {
+  double turn = to - from;
+  if (std::fabs(turn) > M_PI) turn = std::remainder(turn, 2 * M_PI);
+  return turn;
+}
 
 Pose2 MotionChecker::interpolate(const Pose2& from, const Pose2& to, double t) {
   return {from.x + t * (to.x - from.x), from.y + t * (to.y - from.y),

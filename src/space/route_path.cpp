@@ -77,13 +77,18 @@ class RouteWalker {
   }
 
   /// Translations at the current angle to `target` (construction coordinates) inside
-  /// the face's triangulation.
-  bool translateTo(const FaceTriangulation& triangulation, const std::array<double, 2>& target) {
+  /// the face's triangulation; with `keeping` (> 0), only when each keeps that much
+  /// clearance (certified, with few clearances each).
+  bool translateTo(const FaceTriangulation& triangulation, const std::array<double, 2>& target, double keeping = 0) {
     const std::optional<std::vector<std::array<double, 2>>> path = triangulation.path(scaled(current()), target);
     if (!path) return false;
     const double theta = current().theta;
-    for (std::size_t k = 1; k < path->size(); ++k)
-      waypoints_.push_back({(*path)[k][0] / scale_, (*path)[k][1] / scale_, theta});
+    std::vector<Pose2> poses;
+    for (const std::array<double, 2>& point : *path) poses.push_back({point[0] / scale_, point[1] / scale_, theta});
+    for (std::size_t k = 1; keeping > 0 && k < poses.size(); ++k) {
+      if (!checker_.keepsClearance(poses[k - 1], poses[k], keeping, 64)) return false;
+    }
+    waypoints_.insert(waypoints_.end(), poses.begin() + 1, poses.end());
     return true;
   }
 
@@ -101,29 +106,12 @@ class RouteWalker {
       return space_.clearance({point[0] / scale_, point[1] / scale_, theta}).lower;
     };
     const std::vector<std::array<double, 2>> roomy = triangulation.roomyPoints();
-    if (!roomy.empty() && clearanceAt(roomy.front()) > 4 * std::max(here, 0.0) &&
-        followsKeepingClearance(triangulation, roomy.front(), 0.5 * here)) {
+    if (here > 0 && !roomy.empty() && clearanceAt(roomy.front()) > 4 * here &&
+        translateTo(triangulation, roomy.front(), 0.5 * here)) {
       return;
     }
     const std::optional<std::array<double, 2>> middle = triangulation.incentreAt(scaled(current()));
     if (middle && clearanceAt(*middle) > here) translateTo(triangulation, *middle);
-  }
-
-  /// Translates to `target` when every motion of the way there keeps `level`
-  /// (certified, with few clearances each).
-  bool followsKeepingClearance(const FaceTriangulation& triangulation, const std::array<double, 2>& target,
-                               double level) {
-    const std::optional<std::vector<std::array<double, 2>>> path = triangulation.path(scaled(current()), target);
-    if (!path || !(level > 0)) return false;
-    const double theta = current().theta;
-    for (std::size_t k = 1; k < path->size(); ++k) {
-      const Pose2 from{(*path)[k - 1][0] / scale_, (*path)[k - 1][1] / scale_, theta};
-      const Pose2 to{(*path)[k][0] / scale_, (*path)[k][1] / scale_, theta};
-      if (!checker_.keepsClearance(from, to, level, 64)) return false;
-    }
-    for (std::size_t k = 1; k < path->size(); ++k)
-      waypoints_.push_back({(*path)[k][0] / scale_, (*path)[k][1] / scale_, theta});
-    return true;
   }
 
   /// Whether an interval lies in the node's run of intervals.
@@ -137,7 +125,7 @@ class RouteWalker {
   double turnInside(const CellGraphNode& node, double theta) const {
     const std::uint32_t count = graph_.intervalCount();
     if (graph_.criticalAngles().empty() || (node.lastInterval + 1) % count == node.firstInterval) {
-      return std::remainder(theta - current().theta, 2 * M_PI);
+      return MotionChecker::shorterTurn(current().theta, theta);
     }
     const double arcStart = graph_.criticalAngles()[node.firstInterval].radians();
     const auto along = [&](double angle) {
@@ -190,10 +178,10 @@ class RouteWalker {
   }
 
   /// Crosses from route[at] to the next node through one of the edges joining them:
-  /// turns to the critical angle's side in the node, moves to a point whose turn through
-  /// it lands in the next node, and turns there. A next node without an interval
-  /// 1e-9 wide (see nextToCritical) is turned through, to the node after it. The index of the route's node reached;
-  /// none when no crossing is found.
+  /// turns to the critical angle's side in the node, moves to a point whose turn
+  /// through it lands in the next node, and turns there. A next node without an
+  /// interval 1e-9 wide (see nextToCritical) is turned through, to the node after it.
+  /// The index of the route's node reached; none when no crossing is found.
   std::optional<std::size_t> crossFrom(const std::vector<std::uint32_t>& route, std::size_t at) {
     for (const CellGraphEdge& edge : graph_.edges()) {
       if (!joins(edge, route[at], route[at + 1])) continue;
@@ -286,8 +274,6 @@ class RouteWalker {
       face = faceAt(node, theta);
     }
     if (!face || !turnTo(node, theta)) return false;
-    face = faceAt(node, theta);
-    if (!face) return false;
     if (face->loops.empty()) {
       waypoints_.push_back({goal.x, goal.y, theta});
     } else {

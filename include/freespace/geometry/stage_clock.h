@@ -10,6 +10,11 @@
 
 namespace freespace {
 
+/// Seconds of wall-clock time since `start`.
+inline double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 struct StageTime {
   std::string stage;
   double seconds = 0;
@@ -29,7 +34,7 @@ class StageClock {
     if (progress_) progress_(stage);
     const auto start = std::chrono::steady_clock::now();
     auto result = work();
-    times_.push_back({stage, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+    times_.push_back({stage, secondsSince(start)});
     return result;
   }
 

@@ -33,6 +33,9 @@ class MotionChecker {
 
   /// The configuration a fraction t of the way from `from` to `to`.
   static Pose2 interpolate(const Pose2& from, const Pose2& to, double t);
+  /// Theta's change along the shorter arc, as OMPL's SO(2) space interpolates (half a
+  /// turn goes the direct way).
+  static double shorterTurn(double from, double to);
 
   /// Checks the motion; `clearanceSlack` (relative) makes the parts shorter until the
   /// bound on each is within that fraction of its ends' smaller clearance (1: only
