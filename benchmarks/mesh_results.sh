@@ -18,9 +18,15 @@ echo "Command: \`benchmarks/mesh_results.sh build\`; machine: $(nproc) cores, $(
 echo
 echo "| mesh | triangles | checks only (Mesh::fromSoup) ms | repaired and interpreted (prepareMesh) ms |"
 echo "| --- | --- | --- | --- |"
-"$build/bin/bench_mesh_preparation" --benchmark_format=csv 2> /dev/null |
-  awk -F, 'NR > 1 {
-    gsub(/"/, "", $1); split($1, part, "/"); name = part[1]; arg = part[2];
+# Closed meshes: medians of 10 interleaved repetitions (the two differ by a few per
+# cent, less than the machine drifts between runs); soups once each.
+{
+  "$build/bin/bench_mesh_preparation" --benchmark_filter=Closed --benchmark_repetitions=10 \
+    --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true --benchmark_format=csv
+  "$build/bin/bench_mesh_preparation" --benchmark_filter=Soup --benchmark_format=csv
+} 2> /dev/null |
+  awk -F, '$1 ~ /^"BM_/ && ($1 ~ /Soup/ || $1 ~ /_median"$/) {
+    gsub(/"/, "", $1); sub(/_median$/, "", $1); split($1, part, "/"); name = part[1]; arg = part[2];
     ms = $3; triangles = $11;
     if (name ~ /ChecksOnly/) { checks["floor plan " arg " rooms"] = ms; count["floor plan " arg " rooms"] = triangles }
     else if (name ~ /ClosedFloorPlanPrepared/) { prepared["floor plan " arg " rooms"] = ms }

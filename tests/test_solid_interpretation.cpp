@@ -297,4 +297,43 @@ TEST(SoupRepair, SnapsTJunctions) {
   EXPECT_DOUBLE_EQ(mesh.volume(), 2);
 }
 
+TEST(SoupRepair, AClosedSurfaceWithNothingToRepairIsKeptAsItIs) {
+  const TriangleSoup soup = joinSoups({soupOf(box(0, 0, 0, 1, 1, 1)), soupOf(box(2, 0, 0, 3, 1, 1))});
+  PreparationReport report;
+  std::vector<std::string> warnings;
+  const Mesh mesh = prepared(soup, &report, &warnings);
+  EXPECT_TRUE(report.changes().empty());
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_EQ(report.solid.closedComponents, 2u);
+  EXPECT_EQ(report.repair.outputVertices, 16u);
+  EXPECT_EQ(mesh.vertices(), soup.vertices);
+  EXPECT_EQ(mesh.triangles(), soup.triangles);
+}
+
+TEST(SoupRepair, FloatNoiseOnAClosedSurfaceIsSnapped) {
+  TriangleSoup soup = soupOf(box(0, 0, 0, 1, 1, 1));
+  for (Point3& vertex : soup.vertices) {
+    if (vertex == Point3(1, 1, 1)) vertex.x() += 3e-8;
+  }
+  PreparationReport report;
+  const Mesh mesh = prepared(soup, &report);
+  EXPECT_EQ(report.repair.coordinatesSnapped, 1u);
+  for (const Point3& vertex : mesh.vertices()) EXPECT_TRUE(vertex.x() == 0 || vertex.x() == 1) << vertex.transpose();
+}
+
+TEST(SoupRepair, AnInsideOutClosedSurfaceIsTurnedAndReported) {
+  TriangleSoup soup = soupOf(box(0, 0, 0, 1, 1, 1));
+  for (TriangleIndices& triangle : soup.triangles) std::swap(triangle[1], triangle[2]);
+  PreparationReport report;
+  const Mesh mesh = prepared(soup, &report);
+  EXPECT_EQ(report.solid.trianglesTurned, 12u);
+  EXPECT_DOUBLE_EQ(mesh.volume(), 1);
+}
+
+TEST(SoupRepair, ClosedSurfacesTouchingAtAVertexGetVerticesOfTheirOwn) {
+  const Mesh mesh = prepared(joinSoups({soupOf(box(0, 0, 0, 1, 1, 1)), soupOf(box(1, 1, 1, 2, 2, 2))}));
+  EXPECT_EQ(mesh.componentCount(), 2u);
+  EXPECT_EQ(mesh.vertices().size(), 16u) << "the shared corner (1, 1, 1) once for each box";
+}
+
 }  // namespace freespace

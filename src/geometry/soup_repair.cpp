@@ -401,21 +401,47 @@ bool snapJunctions(TriangleSoup& soup, std::vector<Index>& pieces, double tolera
   return true;
 }
 
-double toleranceFor(const TriangleSoup& soup, const RepairSettings& settings, RepairReport& report) {
+// Whether the distinct values of each coordinate lie more than the tolerance apart:
+// then no coordinate snaps, and no two distinct points lie within the tolerance of
+// each other (they would differ by at most it on the axis where they differ).
+bool coordinatesApartBeyond(const std::vector<Point3>& vertices, double tolerance) {
+  std::vector<double> values(vertices.size());
+  for (int axis = 0; axis < 3; ++axis) {
+    for (std::size_t v = 0; v < vertices.size(); ++v) values[v] = vertices[v][axis];
+    std::sort(values.begin(), values.end());
+    for (std::size_t i = 1; i < values.size(); ++i) {
+      if (values[i] != values[i - 1] && values[i] - values[i - 1] <= tolerance) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+RepairReport unrepairedReport(const TriangleSoup& soup, const RepairSettings& settings) {
+  RepairReport report;
+  report.inputVertices = report.outputVertices = soup.vertices.size();
+  report.inputTriangles = report.outputTriangles = soup.triangles.size();
   Box3 bounds;
   for (const TriangleIndices& triangle : soup.triangles) {
     for (Index v : triangle) bounds.extend(soup.vertices[v]);
   }
   report.toleranceIsRelative = !settings.absoluteTolerance.has_value();
   report.relativeTolerance = settings.relativeTolerance;
-  const double tolerance = settings.absoluteTolerance.value_or(settings.relativeTolerance * bounds.diagonal().norm());
-  if (!std::isfinite(tolerance) || tolerance < 0) {
+  report.tolerance = settings.absoluteTolerance.value_or(settings.relativeTolerance * bounds.diagonal().norm());
+  if (!std::isfinite(report.tolerance) || report.tolerance < 0) {
     throw std::invalid_argument("repair tolerance must be finite and not negative");
   }
-  return tolerance;
+  return report;
 }
 
-}  // namespace
+bool weldsAndSnapsNothing(const TriangleSoup& soup, double tolerance) {
+  if (tolerance == 0) return true;
+  for (const TriangleIndices& triangle : soup.triangles) {
+    if (flatWithinTolerance(soup.vertices, triangle, tolerance)) return false;
+  }
+  return coordinatesApartBeyond(soup.vertices, tolerance);
+}
 
 bool RepairReport::changedAnything() const {
   return pointsWelded + coordinatesSnapped + verticesSnapped + zeroAreaDropped + duplicatesDropped +
@@ -457,10 +483,7 @@ TriangleSoup repairSoup(const TriangleSoup& soup, const std::string& sourceName,
   detail::requireFiniteCoordinates(soup, sourceName);
   detail::requireTriangles(soup, sourceName);
   detail::requireIndicesInRange(soup, sourceName);
-  RepairReport counts;
-  counts.inputVertices = soup.vertices.size();
-  counts.inputTriangles = soup.triangles.size();
-  counts.tolerance = toleranceFor(soup, settings, counts);
+  RepairReport counts = unrepairedReport(soup, settings);
 
   std::vector<Index> piece = soup.pieces.size() == soup.triangles.size() ? soup.pieces
                                                                          : std::vector<Index>(soup.triangles.size(), 0);

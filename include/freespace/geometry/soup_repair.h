@@ -45,6 +45,17 @@ struct RepairReport {
   std::vector<std::string> describe() const;
 };
 
+/// The report of a repair that changes nothing: the soup's counts and the tolerance
+/// `settings` give it. Throws std::invalid_argument for a negative or non-finite
+/// tolerance.
+RepairReport unrepairedReport(const TriangleSoup& soup, const RepairSettings& settings);
+
+/// Whether repairSoup's welding and snapping within `tolerance` would leave the soup
+/// as it is: the distinct values of each coordinate lie more than the tolerance apart
+/// and no triangle is flatter than it. (Identical points, duplicates and T-junctions
+/// are not looked at: a surface that Mesh::fromSoup accepts has none of them.)
+bool weldsAndSnapsNothing(const TriangleSoup& soup, double tolerance);
+
 /// Repairs a soup before it is interpreted as a solid (docs/design.md section 9):
 /// welds points closer than the tolerance (each cluster of points chained
 /// by distances within it goes to its point that comes first in the soup), moves
