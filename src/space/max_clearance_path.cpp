@@ -256,6 +256,15 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     for (std::uint32_t box : lowerChain.boxes) {
       if (boxes.box(box).lower <= 0.5 * (lowerChain.bottleneck + target)) uncertain.push_back(box);
     }
+    if (lowerChain.boxes.empty()) {
+      // No chain of boxes whose centres lie in the cell joins the ends at the target's
+      // upper bounds: the widest chain by upper bounds passes boxes too coarse to say
+      // (a blocked centre, a neighbouring cell's): halve those.
+      for (std::uint32_t box : boxes.widestChain(from, to, ClearanceBoxes::Bound::Upper).boxes) {
+        const ClearanceBox& candidate = boxes.box(box);
+        if (candidate.centreCell != path.startCell || candidate.lower < target) uncertain.push_back(box);
+      }
+    }
     std::sort(uncertain.begin(), uncertain.end());
     uncertain.erase(std::unique(uncertain.begin(), uncertain.end()), uncertain.end());
     if (uncertain.empty()) break;
