@@ -19,6 +19,8 @@ namespace {
 constexpr int kMostSteps = 20000;
 /// At most this many crossings of edges that failed, before giving up.
 constexpr std::size_t kMostFailedCrossings = 200;
+/// At most this many clearances to certify one step of a turn in place.
+constexpr std::size_t kTurnQueryLimit = 4096;
 
 class RouteWalker {
  public:
@@ -83,13 +85,42 @@ class RouteWalker {
     const std::optional<std::vector<std::array<double, 2>>> path = triangulation.path(scaled(current()), target);
     if (!path) return false;
     const double theta = current().theta;
-    std::vector<Pose2> poses;
-    for (const std::array<double, 2>& point : *path) poses.push_back({point[0] / scale_, point[1] / scale_, theta});
+    std::vector<Pose2> poses{current()};
+    for (std::size_t k = 1; k < path->size(); ++k) {
+      appendRoomier(poses.back(), {(*path)[k][0] / scale_, (*path)[k][1] / scale_, theta}, 0, poses);
+    }
     for (std::size_t k = 1; keeping > 0 && k < poses.size(); ++k) {
       if (!checker_.keepsClearance(poses[k - 1], poses[k], keeping, 64)) return false;
     }
     waypoints_.insert(waypoints_.end(), poses.begin() + 1, poses.end());
     return true;
+  }
+
+  /// Appends the translation from `from` to `to` (at one angle), by a point pushed
+  /// away from its contact where the leg is much tighter than at its ends (a leg
+  /// cutting a corner between the middles of the triangulation's edges): its tightest
+  /// of seven points, pushed as far as the ends' smaller clearance asks, while that
+  /// leaves it roomier and in `from`'s node; up to four times per leg (a retraction
+  /// towards the medial axis).
+  void appendRoomier(const Pose2& from, const Pose2& to, int depth, std::vector<Pose2>& poses) const {
+    const double wanted = std::min(space_.clearance(from).lower, space_.clearance(to).lower);
+    std::optional<std::pair<Pose2, Clearance>> tightest;
+    for (int k = 1; depth < 4 && k < 8; ++k) {
+      const Pose2 at{from.x + (to.x - from.x) * k / 8, from.y + (to.y - from.y) * k / 8, from.theta};
+      Clearance clearance = space_.clearance(at);
+      if (!tightest || clearance.lower < tightest->second.lower) tightest = {at, std::move(clearance)};
+    }
+    if (tightest && tightest->second.lower > 0 && tightest->second.lower < 0.9 * wanted) {
+      const auto& [at, here] = *tightest;
+      const double push = wanted - here.lower;
+      const Pose2 pushed{at.x - here.direction[0] * push, at.y - here.direction[1] * push, from.theta};
+      if (space_.clearance(pushed).lower > here.lower && space_.nodeOf(pushed) == space_.nodeOf(from)) {
+        appendRoomier(from, pushed, depth + 1, poses);
+        appendRoomier(pushed, to, depth + 1, poses);
+        return;
+      }
+    }
+    poses.push_back(to);
   }
 
   /// Moves to where the node's face at the current angle is roomier: the middle of the
@@ -154,6 +185,94 @@ class RouteWalker {
       waypoints_.push_back({current().x, current().y, reducedAngle(current().theta + std::copysign(step, remaining))});
       recentre(node);
     }
+  }
+
+  /// Turns at the current point to `theta` inside the node, in steps shorter than a
+  /// quarter turn, each certified free (no recentring: the point is where a crossing
+  /// or the goal needs it).
+  bool turnInPlace(std::uint32_t node, double theta) {
+    const double turn = turnInside(graph_.nodes()[node], theta);
+    const int steps = static_cast<int>(std::ceil(std::fabs(turn) / (M_PI / 2) * (1 + 1e-9)));
+    const Pose2 from = current();
+    for (int k = 1; k <= steps; ++k) {
+      const Pose2 next{from.x, from.y, k == steps ? theta : reducedAngle(from.theta + turn * k / steps)};
+      if (!checker_.check(current(), next, 1, kTurnQueryLimit).free) return false;
+      waypoints_.push_back(next);
+    }
+    return true;
+  }
+
+  /// Angles of the node's run to translate at: the middles of its intervals (of at
+  /// most eight of them, spread along the run), the current angle and `arrival`.
+  std::vector<double> travelAngleCandidates(std::uint32_t node, double arrival) const {
+    std::vector<double> angles{arrival, current().theta};
+    const std::vector<AlgebraicAngle>& critical = graph_.criticalAngles();
+    if (critical.empty()) {
+      for (int k = 0; k < 8; ++k) angles.push_back(reducedAngle(-M_PI + M_PI * k / 4));
+      return angles;
+    }
+    const std::uint32_t count = graph_.intervalCount();
+    const CellGraphNode& run = graph_.nodes()[node];
+    const std::uint32_t length = (run.lastInterval + count - run.firstInterval) % count + 1;
+    const std::uint32_t stride = (length + 7) / 8;
+    for (std::uint32_t k = 0; k < length; k += stride) {
+      const std::uint32_t interval = (run.firstInterval + k) % count;
+      const double low = critical[interval].radians(), high = critical[(interval + 1) % count].radians();
+      const double width = count == 1 ? 2 * M_PI : std::fmod(high - low + 4 * M_PI, 2 * M_PI);
+      if (width >= 1e-9) angles.push_back(reducedAngle(low + width / 2));
+    }
+    return angles;
+  }
+
+  /// The translation from the current point to `point` in the node's face at `theta`,
+  /// and the least clearance at its corners and the middles of its legs (an estimate,
+  /// not certified); none when the face does not hold both.
+  std::optional<double> estimatedTravel(std::uint32_t node, const std::array<double, 2>& point, double theta) const {
+    const std::optional<SliceFace> face = faceAt(node, theta);
+    if (!face) return std::nullopt;
+    const std::array<double, 2> here = scaled(current());
+    const std::optional<std::vector<std::array<double, 2>>> way =
+        face->loops.empty() ? std::optional<std::vector<std::array<double, 2>>>({here, point})
+                            : FaceTriangulation(*face, {here, point}).path(here, point);
+    if (!way) return std::nullopt;
+    const auto clearanceAt = [&](double x, double y) { return space_.clearance({x / scale_, y / scale_, theta}).lower; };
+    double least = clearanceAt((*way)[0][0], (*way)[0][1]);
+    for (std::size_t k = 1; k < way->size(); ++k) {
+      const std::array<double, 2>&a = (*way)[k - 1], &b = (*way)[k];
+      least = std::min({least, clearanceAt(b[0], b[1]), clearanceAt((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)});
+    }
+    return least;
+  }
+
+  /// Travels inside the node to `point` (construction coordinates), arriving at angle
+  /// `arrival`: turns to the angle of its run where the translation there is roomiest
+  /// (a passage a node opens at one of its critical angles is narrowest next to it),
+  /// translates, and turns back at `point`; the next roomiest angle when a step fails.
+  bool travelTo(std::uint32_t node, const std::array<double, 2>& point, double arrival) {
+    std::vector<std::pair<double, double>> ranked;  // estimated clearance, angle
+    for (double theta : travelAngleCandidates(node, arrival)) {
+      if (std::chrono::steady_clock::now() > deadline_) return false;
+      if (const std::optional<double> estimate = estimatedTravel(node, point, theta)) ranked.push_back({*estimate, theta});
+    }
+    std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    const std::size_t mark = waypoints_.size();
+    for (const auto& [estimate, theta] : ranked) {
+      if (!(estimate > 0)) break;
+      if (turnTo(node, theta) && translateInNode(node, point) && turnInPlace(node, arrival)) return true;
+      waypoints_.resize(mark);
+    }
+    return false;
+  }
+
+  /// Translates at the current angle to `point` inside the node's face.
+  bool translateInNode(std::uint32_t node, const std::array<double, 2>& point) {
+    const std::optional<SliceFace> face = faceAt(node, current().theta);
+    if (!face) return false;
+    if (face->loops.empty()) {
+      waypoints_.push_back({point[0] / scale_, point[1] / scale_, current().theta});
+      return true;
+    }
+    return translateTo(FaceTriangulation(*face, {scaled(current()), point}), point);
   }
 
   /// An angle of the node's run near critical angle `index`, before it or after it:
@@ -231,7 +350,6 @@ class RouteWalker {
   bool turnThroughAt(std::uint32_t node, double exit, double entry, std::uint32_t next) {
     const std::optional<SliceFace> face = faceAt(node, exit);
     if (!face) return false;
-    const FaceTriangulation triangulation(*face, {scaled(current())});
     // The current point, then the roomiest of the triangles of both faces' loops
     // together (each lies inside or outside each face; where the faces overlap only a
     // little, the faces' own triangles may all miss the overlap).
@@ -257,7 +375,7 @@ class RouteWalker {
       if (std::chrono::steady_clock::now() > deadline_) return false;
       const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
       if (!checker_.check(there, turned).free) continue;
-      if (point != candidates.front() && !translateTo(triangulation, point)) continue;
+      if (point != candidates.front() && !travelTo(node, point, exit)) continue;
       waypoints_.push_back(turned);
       return true;
     }
@@ -273,13 +391,7 @@ class RouteWalker {
       theta = reducedAngle(goal.theta + offset);
       face = faceAt(node, theta);
     }
-    if (!face || !turnTo(node, theta)) return false;
-    if (face->loops.empty()) {
-      waypoints_.push_back({goal.x, goal.y, theta});
-    } else {
-      const FaceTriangulation triangulation(*face, {scaled(current()), scaled(goal)});
-      if (!translateTo(triangulation, scaled(goal))) return false;
-    }
+    if (!face || !travelTo(node, scaled(goal), theta)) return false;
     waypoints_.back() = goal;
     return true;
   }
