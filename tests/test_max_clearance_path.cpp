@@ -113,8 +113,24 @@ TEST_P(RoutedProblems, TheRoutesPathIsCertified) {
 INSTANTIATE_TEST_SUITE_P(Bundled, RoutedProblems,
                          ::testing::Values(TimedProblem{"room_door", 0.5}, TimedProblem{"turn_around", 0.5},
                                            TimedProblem{"tetra_floorplan", 0.5}, TimedProblem{"overhang", 0.5},
-                                           TimedProblem{"keyhole", 8}),
+                                           TimedProblem{"keyhole", 2}),
                          [](const auto& info) { return std::string(info.param.name); });
+
+// Keyhole's bar (0.5 wide) passes a slot 0.75 wide, so no path keeps more than 0.125
+// (the bar centred in the slot, along it), and the best keeps that much: both bounds
+// must hold it. The routed path translates through the slot at the node's roomiest
+// angle, keeping at least half of it.
+TEST(MaxClearancePathQuality, KeyholesSlotLiesBetweenTheBounds) {
+  Problem problem = bundled("keyhole");
+  problem.options.secondsLimit = 2;
+  const MaxClearancePath path =
+      maxClearancePath(*problem.space, problem.loaded.problem.start, problem.loaded.problem.goal, problem.options);
+  ASSERT_EQ(path.status, PathStatus::solved);
+  const double slot = (0.75 - 0.5) / 2, rounding = 1e-9;
+  EXPECT_LE(path.passage.lower, slot + rounding);
+  EXPECT_GE(path.passage.upper, slot - rounding);
+  EXPECT_GE(path.passage.lower, slot / 2);
+}
 
 class InfeasibleProblems : public ::testing::TestWithParam<std::string> {};
 
