@@ -174,9 +174,8 @@ void tightenBounds(const MotionChecker& checker, Passage& passage, Clock::time_p
     if (secondsLeft <= 0) break;
     const double perSecond = queries > 1000 ? queries / secondsSince(began) : 5000;
     const std::size_t k = order[done];
-    const MotionCheck check =
-        checker.check(passage.waypoints[k], passage.waypoints[k + 1], 0.02,
-                      static_cast<std::size_t>(100 + secondsLeft * perSecond / 2));
+    const MotionCheck check = checker.check(passage.waypoints[k], passage.waypoints[k + 1], 0.02,
+                                            static_cast<std::size_t>(100 + secondsLeft * perSecond / 2));
     queries += check.clearanceQueries;
     if (check.free) passage.motionClearance[k] = std::max(passage.motionClearance[k], check.minClearance);
   }

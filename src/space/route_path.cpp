@@ -19,6 +19,9 @@ namespace {
 constexpr int kMostSteps = 20000;
 /// At most this many crossings of edges that failed, before giving up.
 constexpr std::size_t kMostFailedCrossings = 200;
+/// The share of a crossing's clearance that the way to it should keep, by estimate,
+/// before crossing points whose ways keep less are tried.
+constexpr double kLeastTravelShare = 1e-4;
 /// At most this many clearances to certify one step of a turn in place.
 constexpr std::size_t kTurnQueryLimit = 4096;
 
@@ -235,7 +238,9 @@ class RouteWalker {
         face->loops.empty() ? std::optional<std::vector<std::array<double, 2>>>({here, point})
                             : FaceTriangulation(*face, {here, point}).path(here, point);
     if (!way) return std::nullopt;
-    const auto clearanceAt = [&](double x, double y) { return space_.clearance({x / scale_, y / scale_, theta}).lower; };
+    const auto clearanceAt = [&](double x, double y) {
+      return space_.clearance({x / scale_, y / scale_, theta}).lower;
+    };
     double least = clearanceAt((*way)[0][0], (*way)[0][1]);
     for (std::size_t k = 1; k < way->size(); ++k) {
       const std::array<double, 2>&a = (*way)[k - 1], &b = (*way)[k];
@@ -247,17 +252,19 @@ class RouteWalker {
   /// Travels inside the node to `point` (construction coordinates), arriving at angle
   /// `arrival`: turns to the angle of its run where the translation there is roomiest
   /// (a passage a node opens at one of its critical angles is narrowest next to it),
-  /// translates, and turns back at `point`; the next roomiest angle when a step fails.
-  bool travelTo(std::uint32_t node, const std::array<double, 2>& point, double arrival) {
+  /// translates, and turns back at `point`; the next roomiest angle when a step fails;
+  /// only angles whose estimate exceeds `leastEstimate`.
+  bool travelTo(std::uint32_t node, const std::array<double, 2>& point, double arrival, double leastEstimate = 0) {
     std::vector<std::pair<double, double>> ranked;  // estimated clearance, angle
     for (double theta : travelAngleCandidates(node, arrival)) {
       if (std::chrono::steady_clock::now() > deadline_) return false;
-      if (const std::optional<double> estimate = estimatedTravel(node, point, theta)) ranked.push_back({*estimate, theta});
+      if (const std::optional<double> estimate = estimatedTravel(node, point, theta))
+        ranked.push_back({*estimate, theta});
     }
     std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     const std::size_t mark = waypoints_.size();
     for (const auto& [estimate, theta] : ranked) {
-      if (!(estimate > 0)) break;
+      if (!(estimate > leastEstimate)) break;
       if (turnTo(node, theta) && translateInNode(node, point) && turnInPlace(node, arrival)) return true;
       waypoints_.resize(mark);
     }
@@ -299,7 +306,10 @@ class RouteWalker {
   /// Crosses from route[at] to the next node through one of the edges joining them:
   /// turns to the critical angle's side in the node, moves to a point whose turn
   /// through it lands in the next node, and turns there. A next node without an
-  /// interval 1e-9 wide (see nextToCritical) is turned through, to the node after it.
+  /// interval 1e-9 wide (see nextToCritical), or whose arc is thinner than CellGraph::kThinArc
+  /// (where its faces may be joined only through passages pinched to rounding), is
+  /// turned through, to the node after it, where the route goes on through its other
+  /// end.
   /// The index of the route's node reached; none when no crossing is found.
   std::optional<std::size_t> crossFrom(const std::vector<std::uint32_t>& route, std::size_t at) {
     for (const CellGraphEdge& edge : graph_.edges()) {
@@ -311,7 +321,7 @@ class RouteWalker {
       // The entry, past nodes without an interval wide enough.
       std::size_t reached = at + 1;
       std::optional<double> entry = nextToCritical(edge.angle, !*upward, route[reached]);
-      while (!entry && reached + 1 < route.size()) {
+      while ((!entry || graph_.arcWidth(route[reached]) < CellGraph::kThinArc) && reached + 1 < route.size()) {
         const CellGraphNode& thin = graph_.nodes()[route[reached]];
         const std::uint32_t end = *upward ? (thin.lastInterval + 1) % graph_.intervalCount() : thin.firstInterval;
         if (!std::any_of(graph_.edges().begin(), graph_.edges().end(), [&](const CellGraphEdge& e) {
@@ -371,13 +381,21 @@ class RouteWalker {
       usable.push_back({std::min(space_.clearance(there).lower, space_.clearance(turned).lower), point});
     }
     std::stable_sort(usable.begin(), usable.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
-    for (const auto& [clearance, point] : usable) {
-      if (std::chrono::steady_clock::now() > deadline_) return false;
-      const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
-      if (!checker_.check(there, turned).free) continue;
-      if (point != candidates.front() && !travelTo(node, point, exit)) continue;
-      waypoints_.push_back(turned);
-      return true;
+    // First only where the way there keeps a share of the crossing's clearance (a far
+    // crossing point may be reached only through a face pinched to rounding), then
+    // anywhere.
+    std::vector<std::optional<bool>> turnsFree(usable.size());
+    for (const double share : {kLeastTravelShare, 0.0}) {
+      for (std::size_t k = 0; k < usable.size(); ++k) {
+        if (std::chrono::steady_clock::now() > deadline_) return false;
+        const auto& [clearance, point] = usable[k];
+        const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
+        if (!turnsFree[k]) turnsFree[k] = checker_.check(there, turned).free;
+        if (!*turnsFree[k]) continue;
+        if (point != candidates.front() && !travelTo(node, point, exit, share * clearance)) continue;
+        waypoints_.push_back(turned);
+        return true;
+      }
     }
     return false;
   }

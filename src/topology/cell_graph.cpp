@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <queue>
 #include <set>
 #include <stdexcept>
 #include <unordered_map>
@@ -769,29 +770,63 @@ void CellGraph::checkParts(std::size_t cellCount, AngleAlgebra& algebra) const {
   checkRuns(parts_.unboundedRuns);
 }
 
+double CellGraph::arcWidth(std::uint32_t node) const {
+  const CellGraphNode& run = parts_.nodes[node];
+  const std::vector<AlgebraicAngle>& angles = parts_.criticalAngles;
+  const std::uint32_t count = static_cast<std::uint32_t>(intervalCount());
+  if (angles.empty() || (run.lastInterval + 1) % count == run.firstInterval) return 2 * M_PI;
+  const double low = angles[run.firstInterval].radians(), high = angles[(run.lastInterval + 1) % count].radians();
+  return std::fmod(high - low + 4 * M_PI, 2 * M_PI);
+}
+
 std::optional<std::vector<std::uint32_t>> CellGraph::route(
     std::uint32_t from, std::uint32_t to, const std::function<bool(std::uint32_t, std::uint32_t)>& usable) const {
-  std::vector<std::vector<std::uint32_t>> next(parts_.nodes.size());
+  // Each node's edges: (the node across, the edge's critical angle).
+  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> next(parts_.nodes.size());
   for (const CellGraphEdge& edge : parts_.edges) {
     if (usable && !usable(edge.from, edge.to)) continue;
-    next[edge.from].push_back(edge.to);
-    next[edge.to].push_back(edge.from);
+    next[edge.from].push_back({edge.to, edge.angle});
+    next[edge.to].push_back({edge.from, edge.angle});
   }
-  // Breadth first from `from`, each node reached once, with the node it was reached from.
-  constexpr std::uint32_t kUnreached = ~std::uint32_t{0};
-  std::vector<std::uint32_t> reachedFrom(parts_.nodes.size(), kUnreached);
-  std::vector<std::uint32_t> queue{from};
-  reachedFrom[from] = from;
-  for (std::size_t at = 0; at < queue.size() && reachedFrom[to] == kUnreached; ++at) {
-    for (std::uint32_t node : next[queue[at]]) {
-      if (reachedFrom[node] != kUnreached) continue;
-      reachedFrom[node] = queue[at];
-      queue.push_back(node);
+  // Least cost first (Dijkstra) over (node, critical angle it was entered through),
+  // each settled once, with the state it was reached from.
+  using State = std::uint64_t;
+  constexpr std::uint32_t kStart = ~std::uint32_t{0};
+  const auto state = [](std::uint32_t node, std::uint32_t angle) { return (State{node} << 32) | angle; };
+  const auto nodeOf = [](State s) { return static_cast<std::uint32_t>(s >> 32); };
+  const auto angleOf = [](State s) { return static_cast<std::uint32_t>(s & 0xFFFFFFFFu); };
+  std::unordered_map<State, std::pair<double, State>> reached{{state(from, kStart), {0, state(from, kStart)}}};
+  using Entry = std::pair<double, State>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  queue.push({0, state(from, kStart)});
+  std::optional<State> arrived;
+  while (!queue.empty()) {
+    const auto [cost, at] = queue.top();
+    queue.pop();
+    if (cost > reached.at(at).first) continue;
+    if (nodeOf(at) == to) {
+      arrived = at;
+      break;
+    }
+    const std::uint32_t node = nodeOf(at);
+    // A thin node left through the angle it was entered by joins its neighbours only
+    // through faces pinched to a sliver of angles.
+    const double pinch = arcWidth(node) < kThinArc ? kThinNodeCost / std::max(arcWidth(node), 1e-12) : 0;
+    for (const auto& [neighbour, angle] : next[node]) {
+      const double through = cost + 1 + (angle == angleOf(at) ? pinch : 0);
+      const State onward = state(neighbour, angle);
+      const auto found = reached.find(onward);
+      if (found != reached.end() && found->second.first <= through) continue;
+      reached[onward] = {through, at};
+      queue.push({through, onward});
     }
   }
-  if (reachedFrom[to] == kUnreached) return std::nullopt;
+  if (!arrived) return std::nullopt;
   std::vector<std::uint32_t> nodes{to};
-  while (nodes.back() != from) nodes.push_back(reachedFrom[nodes.back()]);
+  for (State at = *arrived; nodeOf(at) != from || angleOf(at) != kStart;) {
+    at = reached.at(at).second;
+    nodes.push_back(nodeOf(at));
+  }
   return std::vector<std::uint32_t>(nodes.rbegin(), nodes.rend());
 }
 

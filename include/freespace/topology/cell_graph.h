@@ -92,12 +92,21 @@ class CellGraph {
   const std::vector<CellGraphNode>& nodes() const { return parts_.nodes; }
   const std::vector<CellGraphEdge>& edges() const { return parts_.edges; }
 
-  /// The fewest nodes from `from` to `to` joined by edges (both included), or none
-  /// when no path of edges joins them (then they lie in different cells); with
-  /// `usable`, through the edges it accepts (given their two nodes) only.
+  /// The nodes from `from` to `to` joined by edges (both included) of least cost:
+  /// each edge costs 1, and leaving a node thinner than kThinArc (arcWidth) through the
+  /// critical angle it was entered by costs kThinNodeCost over its arcWidth more (such
+  /// a node joins its neighbours only through faces pinched to a sliver of angles;
+  /// passing it from one end of its arc to the other is harmless); none when no path
+  /// of edges joins them (then they lie in different cells). With `usable`, through
+  /// the edges it accepts (given their two nodes) only.
   std::optional<std::vector<std::uint32_t>> route(
       std::uint32_t from, std::uint32_t to,
       const std::function<bool(std::uint32_t, std::uint32_t)>& usable = {}) const;
+  static constexpr double kThinArc = 1e-4;
+  static constexpr double kThinNodeCost = 0.01;
+
+  /// The length in radians of a node's arc of angles (2 pi for every angle).
+  double arcWidth(std::uint32_t node) const;
 
   /// The interval whose open arc holds an angle; a critical angle gets the interval
   /// it starts.
