@@ -100,7 +100,7 @@ struct TimedProblem {
 class RoutedProblems : public ::testing::TestWithParam<TimedProblem> {};
 
 // Problems whose first path comes from the cell graph's route (the bounds stopped
-// early): within milliseconds, or seconds where its motions pass near contacts.
+// early): within milliseconds (half a second in the maze).
 TEST_P(RoutedProblems, TheRoutesPathIsCertified) {
   Problem problem = bundled(GetParam().name);
   problem.options.secondsLimit = GetParam().seconds;
@@ -113,7 +113,8 @@ TEST_P(RoutedProblems, TheRoutesPathIsCertified) {
 INSTANTIATE_TEST_SUITE_P(Bundled, RoutedProblems,
                          ::testing::Values(TimedProblem{"room_door", 0.5}, TimedProblem{"turn_around", 0.5},
                                            TimedProblem{"tetra_floorplan", 0.5}, TimedProblem{"overhang", 0.5},
-                                           TimedProblem{"keyhole", 2}),
+                                           TimedProblem{"keyhole", 2}, TimedProblem{"keyhole_wide", 2},
+                                           TimedProblem{"maze", 3}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // Keyhole's bar (0.5 wide) passes a slot 0.75 wide, so no path keeps more than 0.125
