@@ -98,16 +98,43 @@ std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std
   box.upper = upper + across;
   if (clearance.location.free) box.centreCell = clearance.location.cell;
   if (std::isfinite(upper)) {
-    box.own.push_back({{centre.x, centre.y, centre.theta}, upper});
+    box.own.push_back({{centre.x, centre.y, centre.theta}, upper, reach_});
     if (clearance.contact) {
       // The contact reached: clearance 0 but for the rounding of its position.
       const double rounding = (clearance.upper - clearance.lower) +
                               1e-12 * (1 + std::fabs(upper) + std::fabs(centre.x) + std::fabs(centre.y));
-      box.own.push_back({{clearance.nearest[0], clearance.nearest[1], centre.theta}, rounding});
+      box.own.push_back({{clearance.nearest[0], clearance.nearest[1], centre.theta},
+                         rounding,
+                         std::min(reach_, contactLever(clearance) * (1 + 1e-9) + rounding)});
     }
   }
   boxes_.push_back(std::move(box));
   return static_cast<std::uint32_t>(boxes_.size() - 1);
+}
+
+// Turned about its axis at a fixed (x, y), the robot's point in the contact moves by
+// at most its distance from the axis times the angle; translating the robot back by
+// that much puts the point where the contact was, touching again. The point: the
+// robot's vertex (VF), the environment's vertex's place on the robot (FV), or, for a
+// robot edge (EE), its farther end.
+double ClearanceBoxes::contactLever(const Clearance& clearance) const {
+  const PerturbedMeshes& meshes = space_.meshes();
+  const auto fromAxis = [&](std::uint32_t vertex) {
+    const Point3& p = meshes.robot.vertices()[vertex];
+    return std::hypot(p.x(), p.y()) / meshes.scale;
+  };
+  const std::array<std::uint32_t, 4>& vertices = clearance.contactVertices;
+  switch (clearance.contact->kind) {
+    case ContactKind::VertexFacet:
+      return fromAxis(vertices[0]);
+    case ContactKind::FacetVertex: {
+      const Point3& w = meshes.world.vertices()[vertices[0]];
+      return std::hypot(w.x() / meshes.scale - clearance.nearest[0], w.y() / meshes.scale - clearance.nearest[1]);
+    }
+    case ContactKind::EdgeEdge:
+      break;
+  }
+  return std::max(fromAxis(vertices[0]), fromAxis(vertices[1]));
 }
 
 double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const {
@@ -122,8 +149,8 @@ double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const Clear
     turn = std::max(std::fabs(std::remainder(anchor.at[2] - box.low[2], 2 * M_PI)),
                     std::fabs(std::remainder(anchor.at[2] - box.high[2], 2 * M_PI)));
   }
-  return anchor.upper + std::hypot(farthest(0), farthest(1)) * (1 + 1e-12) + reach_ * (turn * (1 + 1e-12) + 1e-15) +
-         1e-13 * (1 + std::fabs(anchor.at[0]) + std::fabs(anchor.at[1]));
+  return anchor.upper + std::hypot(farthest(0), farthest(1)) * (1 + 1e-12) +
+         anchor.lever * (turn * (1 + 1e-12) + 1e-15) + 1e-13 * (1 + std::fabs(anchor.at[0]) + std::fabs(anchor.at[1]));
 }
 
 void ClearanceBoxes::bound(ClearanceBox& box, std::vector<ClearanceAnchor> candidates) const {
@@ -211,6 +238,12 @@ void ClearanceBoxes::split(std::uint32_t index) {
 void ClearanceBoxes::dropBelow(double level) {
   for (ClearanceBox& box : boxes_) {
     if (!box.split && box.upper < level) box.dropped = true;
+  }
+}
+
+void ClearanceBoxes::dropOutside(std::uint32_t cell) {
+  for (ClearanceBox& box : boxes_) {
+    if (!box.split && box.lower > 0 && box.centreCell && *box.centreCell != cell) box.dropped = true;
   }
 }
 

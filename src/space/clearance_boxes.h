@@ -10,10 +10,13 @@
 namespace freespace {
 
 /// A configuration with a certified upper bound on its clearance: the clearance of any
-/// configuration is at most that plus its distance to it in |dxy| + r |dtheta|.
+/// configuration is at most that plus its distance to it in |dxy| + lever |dtheta|
+/// (the lever is the robot's reach r, or for a contact, how far from the robot's
+/// axis its point in the contact lies: turning moves that point no faster).
 struct ClearanceAnchor {
   std::array<double, 3> at;
   double upper;
+  double lever;
 };
 
 /// A box of configurations [low, high] in (x, y, theta), with bounds on the clearance
@@ -79,6 +82,10 @@ class ClearanceBoxes {
   void split(std::uint32_t box);
   /// Drops every box whose upper bound is below `level`.
   void dropBelow(double level);
+  /// Drops every box that lies in another free cell than `cell`: free throughout
+  /// (lower bound above 0; connected, so all of it in its centre's cell), its centre
+  /// in another.
+  void dropOutside(std::uint32_t cell);
 
   const ClearanceBox& box(std::uint32_t index) const { return boxes_[index]; }
   std::size_t size() const { return boxes_.size(); }
@@ -90,6 +97,8 @@ class ClearanceBoxes {
 
  private:
   std::uint32_t addBox(const std::array<double, 3>& low, const std::array<double, 3>& high);
+  /// The lever of the contact a clearance's witness reaches (see ClearanceAnchor).
+  double contactLever(const Clearance& clearance) const;
   /// The bound an anchor gives on the clearance in a box.
   double upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
   /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.

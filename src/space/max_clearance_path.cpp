@@ -263,6 +263,7 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     options.cancellation.check();
     // Paths through boxes below the clearance of a path already found are worse.
     if (routedLower > 0) boxes.dropBelow(routedLower);
+    boxes.dropOutside(path.startCell);
     const std::uint32_t from = boxes.leafAt(passageStart), to = boxes.leafAt(passageEnd);
     const std::vector<double> fromStart = boxes.widestUpperFrom(from), fromGoal = boxes.widestUpperFrom(to);
     if (fromStart[to] == -HUGE_VAL) {
@@ -276,13 +277,19 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     if (lowerChain.bottleneck > 0 && path.secondsToFirstPath == 0) path.secondsToFirstPath = secondsSince(began);
     path.converged = std::max(lowerChain.bottleneck, routedLower) >= target;
     if (path.converged || secondsSince(began) > options.secondsLimit || boxes.size() > options.boxLimit) break;
+    // Boxes not certain at the ratio that some chain at the target's level passes
+    // (reached from both ends at it): those that limit c_hi (reached at its level,
+    // an upper bound near it), and those whose centre lies outside the cell (blocked,
+    // or another cell's): their upper bound is only their size, and chains of them
+    // along walls or around the cell's outside may be all that carries c_hi.
     std::vector<std::uint32_t> uncertain;
     for (std::uint32_t box = 0; box < boxes.size(); ++box) {
       const ClearanceBox& candidate = boxes.box(box);
       if (candidate.split || candidate.dropped || candidate.lower >= target) continue;
-      const bool limitsUpper =
-          std::min(fromStart[box], fromGoal[box]) >= fromStart[to] && candidate.upper <= (1 + 1e-3) * fromStart[to];
-      if (limitsUpper) uncertain.push_back(box);
+      const double reached = std::min(fromStart[box], fromGoal[box]);
+      if (reached < target) continue;
+      const bool limits = reached >= fromStart[to] && candidate.upper <= (1 + 1e-3) * fromStart[to];
+      if (limits || candidate.centreCell != path.startCell) uncertain.push_back(box);
     }
     for (std::uint32_t box : lowerChain.boxes) {
       if (boxes.box(box).lower <= 0.5 * (lowerChain.bottleneck + target)) uncertain.push_back(box);
@@ -299,7 +306,11 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     std::sort(uncertain.begin(), uncertain.end());
     uncertain.erase(std::unique(uncertain.begin(), uncertain.end()), uncertain.end());
     if (uncertain.empty()) break;
-    for (std::uint32_t box : uncertain) boxes.split(box);
+    // The limit is looked at between halvings too: a round can halve thousands.
+    for (std::uint32_t box : uncertain) {
+      if (secondsSince(began) > options.secondsLimit) break;
+      boxes.split(box);
+    }
     ++path.refinements;
   }
   path.boxes = boxes.size();

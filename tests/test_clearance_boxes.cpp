@@ -1,0 +1,63 @@
+// The clearance bounds of ClearanceBoxes (docs/design.md section 7) against the exact
+// clearance at random configurations inside the boxes: no free configuration has more
+// clearance than its box's upper bound (anchors, with the contacts' levers in theta),
+// and a box with a positive lower bound holds only free configurations with at least
+// that much. Boxes of many sizes: random leaves are halved again
+// and again, so anchors pass from parents and neighbours to children.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <string>
+
+#include "freespace/problem/planar_problem.h"
+#include "freespace/space/motion_checker.h"
+#include "space/clearance_boxes.h"
+
+using namespace freespace;
+
+namespace {
+
+class BundledClearanceBoxes : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
+  const LoadedProblem loaded =
+      loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + GetParam() + ".cfg");
+  const FreeSpace space(loaded.robot, loaded.world);
+  const Eigen::AlignedBox2d volume = *loaded.problem.volume;
+  ClearanceBoxes boxes(space, {volume.min().x(), volume.min().y()}, {volume.max().x(), volume.max().y()},
+                       MotionChecker(space).reach(), 8);
+  std::mt19937_64 random(20261205);
+  for (int round = 0; round < 600; ++round) {
+    const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random);
+    if (!boxes.box(box).split) boxes.split(box);
+  }
+  std::uniform_real_distribution<double> unit(0, 1);
+  int free = 0, certified = 0;
+  for (int sample = 0; sample < 3000; ++sample) {
+    const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random);
+    const ClearanceBox& leaf = boxes.box(box);
+    if (leaf.split) continue;
+    const Pose2 pose{leaf.low[0] + (leaf.high[0] - leaf.low[0]) * unit(random),
+                     leaf.low[1] + (leaf.high[1] - leaf.low[1]) * unit(random),
+                     leaf.low[2] + (leaf.high[2] - leaf.low[2]) * unit(random)};
+    const Clearance clearance = space.clearance(pose);
+    if (clearance.location.free) {
+      ++free;
+      EXPECT_LE(clearance.lower, leaf.upper) << "box " << box << " at " << pose.x << " " << pose.y << " " << pose.theta;
+    }
+    if (leaf.lower > 0) {
+      // A positive lower bound certifies the box free (below 0 it bounds nothing: the
+      // depth of a blocked configuration is not Lipschitz across angles).
+      ++certified;
+      EXPECT_TRUE(clearance.location.free) << "box " << box << " at " << pose.x << " " << pose.y << " " << pose.theta;
+      EXPECT_GE(clearance.upper, leaf.lower) << "box " << box << " at " << pose.x << " " << pose.y << " " << pose.theta;
+    }
+  }
+  EXPECT_GT(free, 100);
+  EXPECT_GT(certified, 10);
+}
+
+INSTANTIATE_TEST_SUITE_P(Bundled, BundledClearanceBoxes,
+                         ::testing::Values("keyhole", "turn_around", "table", "overhang", "random_polyhedra"));
+
+}  // namespace
