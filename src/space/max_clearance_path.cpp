@@ -105,6 +105,26 @@ Climb climbFrom(const FreeSpace& space, const MotionChecker& checker, const Pose
   return {to, check.minClearance};
 }
 
+/// Clearance queries per second of motion checks, measured as they run (a guess of
+/// 5,000 until 200 have run), shared by the stages that budget motion checks by the
+/// time left.
+class QueryRate {
+ public:
+  MotionCheck check(const MotionChecker& checker, const Pose2& from, const Pose2& to, double slack,
+                    double secondsLeft) {
+    const Clock::time_point began = Clock::now();
+    const auto limit = static_cast<std::size_t>(100 + std::max(0.0, secondsLeft) * perSecond());
+    const MotionCheck result = checker.check(from, to, slack, limit);
+    queries_ += static_cast<double>(result.clearanceQueries);
+    seconds_ += secondsSince(began);
+    return result;
+  }
+
+ private:
+  double perSecond() const { return queries_ > 200 && seconds_ > 0 ? queries_ / seconds_ : 5000; }
+  double queries_ = 0, seconds_ = 0;
+};
+
 /// A path between the climbs' ends, each motion with a certified lower bound on its
 /// clearance, and the least of them.
 struct Passage {
@@ -130,23 +150,18 @@ Passage chainPath(const ClearanceBoxes& boxes, const ClearanceBoxes::Chain& chai
 /// passes near a contact until its bound is near the true least clearance could take
 /// billions of parts); none when one is not, or not before `deadline`.
 std::optional<Passage> certifiedRoutePath(const FreeSpace& space, const MotionChecker& checker, const Pose2& from,
-                                          const Pose2& to, Clock::time_point deadline,
+                                          const Pose2& to, Clock::time_point deadline, QueryRate& rate,
                                           const MaxClearancePathOptions& options) {
   std::optional<std::vector<Pose2>> waypoints = routePath(space, from, to, deadline, options.cancellation);
   if (!waypoints) return std::nullopt;
   Passage passage{std::move(*waypoints), {}, HUGE_VAL};
-  const Clock::time_point began = Clock::now();
-  double queries = 0;
   for (std::size_t k = 0; k + 1 < passage.waypoints.size(); ++k) {
     options.cancellation.check();
     if (Clock::now() > deadline) return std::nullopt;
     // As many clearances as the time left allows at the rate measured so far (a motion
     // passing very near a contact takes many).
     const double secondsLeft = std::chrono::duration<double>(deadline - Clock::now()).count();
-    const double perSecond = queries > 1000 ? queries / secondsSince(began) : 5000;
-    const MotionCheck check = checker.check(passage.waypoints[k], passage.waypoints[k + 1], 1,
-                                            static_cast<std::size_t>(100 + std::max(0.0, secondsLeft) * perSecond));
-    queries += check.clearanceQueries;
+    const MotionCheck check = rate.check(checker, passage.waypoints[k], passage.waypoints[k + 1], 1, secondsLeft);
     if (!check.free) return std::nullopt;
     passage.motionClearance.push_back(check.minClearance);
     passage.lower = std::min(passage.lower, check.minClearance);
@@ -159,7 +174,7 @@ std::optional<Passage> certifiedRoutePath(const FreeSpace& space, const MotionCh
 /// far fewer), the tightest motions first, within a quarter of the time left (each
 /// may take half of what is left of that); a motion whose tighter check does not
 /// finish keeps its bound.
-void tightenBounds(const MotionChecker& checker, Passage& passage, Clock::time_point deadline,
+void tightenBounds(const MotionChecker& checker, Passage& passage, Clock::time_point deadline, QueryRate& rate,
                    const Cancellation& cancellation) {
   const Clock::time_point began = Clock::now();
   const double seconds = 0.25 * std::max(0.0, std::chrono::duration<double>(deadline - began).count());
@@ -167,17 +182,23 @@ void tightenBounds(const MotionChecker& checker, Passage& passage, Clock::time_p
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return passage.motionClearance[a] < passage.motionClearance[b]; });
-  double queries = 0;
-  for (std::size_t done = 0; done < order.size(); ++done) {
-    cancellation.check();
-    const double secondsLeft = seconds - secondsSince(began);
-    if (secondsLeft <= 0) break;
-    const double perSecond = queries > 1000 ? queries / secondsSince(began) : 5000;
-    const std::size_t k = order[done];
-    const MotionCheck check = checker.check(passage.waypoints[k], passage.waypoints[k + 1], 0.02,
-                                            static_cast<std::size_t>(100 + secondsLeft * perSecond / 2));
-    queries += check.clearanceQueries;
-    if (check.free) passage.motionClearance[k] = std::max(passage.motionClearance[k], check.minClearance);
+  // Twice: the motions not finished at first get another try at the rate measured
+  // meanwhile (the first guess may be far too low).
+  for (int pass = 0; pass < 2 && !order.empty() && secondsSince(began) < seconds; ++pass) {
+    std::vector<std::size_t> unfinished;
+    for (const std::size_t k : order) {
+      cancellation.check();
+      const double secondsLeft = seconds - secondsSince(began);
+      if (secondsLeft <= 0) break;
+      const MotionCheck check =
+          rate.check(checker, passage.waypoints[k], passage.waypoints[k + 1], 0.02, secondsLeft / 2);
+      if (check.free) {
+        passage.motionClearance[k] = std::max(passage.motionClearance[k], check.minClearance);
+      } else {
+        unfinished.push_back(k);
+      }
+    }
+    order = std::move(unfinished);
   }
   passage.lower = *std::min_element(passage.motionClearance.begin(), passage.motionClearance.end());
 }
@@ -245,10 +266,11 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   // The first path: along the cell graph's route.
   const Clock::time_point deadline =
       began + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.secondsLimit));
-  std::optional<Passage> routed = certifiedRoutePath(space, checker, passageStart, passageEnd, deadline, options);
+  QueryRate rate;
+  std::optional<Passage> routed = certifiedRoutePath(space, checker, passageStart, passageEnd, deadline, rate, options);
   if (routed) {
     path.secondsToFirstPath = secondsSince(began);
-    if (!routed->motionClearance.empty()) tightenBounds(checker, *routed, deadline, options.cancellation);
+    if (!routed->motionClearance.empty()) tightenBounds(checker, *routed, deadline, rate, options.cancellation);
   }
   const double routedLower = routed ? routed->lower : -HUGE_VAL;
 
