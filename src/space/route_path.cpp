@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -24,6 +25,8 @@ constexpr std::size_t kMostFailedCrossings = 200;
 constexpr double kLeastTravelShare = 1e-4;
 /// At most this many clearances to certify one step of a turn in place.
 constexpr std::size_t kTurnQueryLimit = 4096;
+/// At most this many slices kept for reuse.
+constexpr std::size_t kSlicesKept = 256;
 
 class RouteWalker {
  public:
@@ -65,18 +68,26 @@ class RouteWalker {
   const Pose2& current() const { return waypoints_.back(); }
   std::array<double, 2> scaled(const Pose2& pose) const { return {pose.x * scale_, pose.y * scale_}; }
 
-  /// The node's face in the slice at theta (none at a critical angle).
+  /// The node's face in the slice at theta (none at a critical angle). Slices are kept
+  /// (up to kSlicesKept): a travel estimates an angle's translation, then makes it.
   std::optional<SliceFace> faceAt(std::uint32_t node, double theta) const {
-    std::vector<SliceFace> faces;
-    try {
-      faces = sliceFaces(
-          space_.arrangement(), graph_, [&](SubFaceId face) { return space_.cellOfSubFace(face); },
-          AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space_.algebra());
-    } catch (const std::invalid_argument&) {
-      return std::nullopt;
+    auto kept = slices_.find(theta);
+    if (kept == slices_.end()) {
+      if (slices_.size() >= kSlicesKept) slices_.clear();
+      std::optional<std::vector<SliceFace>> faces;
+      try {
+        faces = sliceFaces(
+            space_.arrangement(), graph_, [&](SubFaceId face) { return space_.cellOfSubFace(face); },
+            AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space_.algebra());
+      } catch (const std::invalid_argument&) {
+        // A critical angle: no faces.
+      }
+      kept = slices_.emplace(theta, std::move(faces)).first;
     }
-    for (SliceFace& face : faces) {
-      if (face.node == node) return std::move(face);
+    if (!kept->second) return std::nullopt;
+    const std::vector<SliceFace>& faces = *kept->second;
+    for (const SliceFace& face : faces) {
+      if (face.node == node) return face;
     }
     return std::nullopt;
   }
@@ -256,7 +267,10 @@ class RouteWalker {
   /// only angles whose estimate exceeds `leastEstimate`.
   bool travelTo(std::uint32_t node, const std::array<double, 2>& point, double arrival, double leastEstimate = 0) {
     std::vector<std::pair<double, double>> ranked;  // estimated clearance, angle
-    for (double theta : travelAngleCandidates(node, arrival)) {
+    std::vector<double> candidates = travelAngleCandidates(node, arrival);
+    std::sort(candidates.begin(), candidates.end());
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    for (double theta : candidates) {
       if (std::chrono::steady_clock::now() > deadline_) return false;
       if (const std::optional<double> estimate = estimatedTravel(node, point, theta))
         ranked.push_back({*estimate, theta});
@@ -422,6 +436,7 @@ class RouteWalker {
   const Cancellation& cancellation_;
   std::vector<Pose2> waypoints_;
   int steps_ = 0;
+  mutable std::map<double, std::optional<std::vector<SliceFace>>> slices_;  // by angle; none at a critical one
 };
 
 }  // namespace
