@@ -147,20 +147,8 @@ void compare(const std::string& cfg, double seconds) {
 }
 
 int run(int argc, char** argv) {
-  const std::string usage = "bench_ompl_clearance [--seconds S] [PROBLEM.cfg ...]";
-  double seconds = 1;
-  std::vector<std::string> problems;
-  for (int i = 1; i < argc; ++i) {
-    const std::string argument = argv[i];
-    if (argument == "--seconds" && i + 1 < argc) {
-      seconds = benchmarks::wholeNumber(argument, argv[++i]);
-    } else {
-      benchmarks::rejectOption(argument, usage);
-      problems.push_back(argument);
-    }
-  }
-  if (problems.empty()) problems = benchmarks::bundledProblems();
-  benchmarks::requireFiles(problems);
+  const auto [seconds, problems] =
+      benchmarks::countedProblems(argc, argv, "--seconds", 1, "bench_ompl_clearance [--seconds S] [PROBLEM.cfg ...]");
   ompl::msg::setLogLevel(ompl::msg::LOG_ERROR);
   std::cout << "| problem | c_lo (whole path) | c_hi (any path) | query s | planner | planner s | planner's least "
                "clearance (dense) | at most c_hi | planner / c_lo |\n"

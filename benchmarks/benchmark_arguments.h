@@ -60,19 +60,21 @@ inline std::vector<std::string> bundledProblems() {
   return problems;
 }
 
-/// The arguments of a benchmark run over problems: `--samples N` (else
-/// `defaultSamples`) and problem files (else every bundled problem), checked.
-struct SampledProblems {
-  int samples;
+/// The arguments of a benchmark run over problems: one whole-number option (`--samples
+/// N`, `--seconds S`; else its default) and problem files (else every bundled
+/// problem), checked.
+struct CountedProblems {
+  int count;
   std::vector<std::string> problems;
 };
 
-inline SampledProblems sampledProblems(int argc, char** argv, int defaultSamples, const std::string& usage) {
-  SampledProblems run{defaultSamples, {}};
+inline CountedProblems countedProblems(int argc, char** argv, const std::string& option, int defaultCount,
+                                       const std::string& usage) {
+  CountedProblems run{defaultCount, {}};
   for (int i = 1; i < argc; ++i) {
     const std::string argument = argv[i];
-    if (argument == "--samples" && i + 1 < argc) {
-      run.samples = static_cast<int>(wholeNumber(argument, argv[++i]));
+    if (argument == option && i + 1 < argc) {
+      run.count = static_cast<int>(wholeNumber(argument, argv[++i]));
     } else {
       rejectOption(argument, usage);
       run.problems.push_back(argument);
@@ -81,6 +83,11 @@ inline SampledProblems sampledProblems(int argc, char** argv, int defaultSamples
   if (run.problems.empty()) run.problems = bundledProblems();
   requireFiles(run.problems);
   return run;
+}
+
+/// countedProblems with `--samples N`.
+inline CountedProblems sampledProblems(int argc, char** argv, int defaultSamples, const std::string& usage) {
+  return countedProblems(argc, argv, "--samples", defaultSamples, usage);
 }
 
 }  // namespace freespace::benchmarks

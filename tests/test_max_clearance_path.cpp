@@ -64,7 +64,9 @@ void expectCertifiedPath(const Problem& problem, const MaxClearancePath& path) {
       ASSERT_FALSE(exact.inCollision({pose.x * scale, pose.y * scale, pose.theta})) << "motion " << k << " at " << i;
       // FCL agrees where the path keeps a clearance it can see (its surfaces' distance
       // is in single precision).
-      if (path.motionClearance[k] > 1e-4) ASSERT_FALSE(fcl.inCollision(pose)) << "motion " << k << " at " << i;
+      if (path.motionClearance[k] > 1e-4) {
+        ASSERT_FALSE(fcl.inCollision(pose)) << "motion " << k << " at " << i;
+      }
     }
     for (int i = 0; i <= 200; ++i) {
       const Clearance clearance = space.clearance(MotionChecker::interpolate(from, to, i / 200.0));
@@ -175,7 +177,9 @@ TEST(MaxClearancePathInput, ALimitStopsTheRefinementWithValidBounds) {
       maxClearancePath(*problem.space, problem.loaded.problem.start, problem.loaded.problem.goal, problem.options);
   EXPECT_FALSE(path.converged);
   EXPECT_GT(path.passage.upper, 0);
-  if (path.status == PathStatus::solved) EXPECT_LE(path.passage.lower, path.passage.upper);
+  if (path.status == PathStatus::solved) {
+    EXPECT_LE(path.passage.lower, path.passage.upper);
+  }
 }
 
 }  // namespace

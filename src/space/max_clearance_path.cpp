@@ -274,11 +274,9 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   }
   const double routedLower = routed ? routed->lower : -HUGE_VAL;
 
-  // Halve the boxes that keep the bounds apart (not yet certain at the ratio asked):
-  // those that limit the upper bound (reached from both ends at its level, with an
-  // upper bound near it), and the worse half of the widest chain by lower bounds
-  // among the boxes that could hold a path at the ratio asked; until a chain's lower
-  // bounds (or the routed path's clearance) reach that ratio of the upper bound.
+  // Halve the boxes that keep the bounds apart (not yet certain at the ratio asked,
+  // chosen as said below), until a chain's lower bounds (or the routed path's
+  // clearance) reach that ratio of the upper bound.
   ClearanceBoxes boxes(space, domain.low, domain.high, checker.reach());
   ClearanceBoxes::Chain lowerChain;
   for (;;) {
@@ -319,10 +317,10 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     if (lowerChain.boxes.empty()) {
       // No chain of boxes whose centres lie in the cell joins the ends at the target's
       // upper bounds: the widest chain by upper bounds passes boxes too coarse to say
-      // (a blocked centre, a neighbouring cell's): halve those.
+      // (those outside the cell are halved above; a box outside it never has a lower
+      // bound at the target: it would have been dropped).
       for (std::uint32_t box : boxes.widestChain(from, to, ClearanceBoxes::Bound::Upper).boxes) {
-        const ClearanceBox& candidate = boxes.box(box);
-        if (candidate.centreCell != path.startCell || candidate.lower < target) uncertain.push_back(box);
+        if (boxes.box(box).lower < target) uncertain.push_back(box);
       }
     }
     std::sort(uncertain.begin(), uncertain.end());

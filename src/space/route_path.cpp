@@ -100,8 +100,12 @@ class RouteWalker {
     if (!path) return false;
     const double theta = current().theta;
     std::vector<Pose2> poses{current()};
+    double fromClearance = space_.clearance(current()).lower;
     for (std::size_t k = 1; k < path->size(); ++k) {
-      appendRoomier(poses.back(), {(*path)[k][0] / scale_, (*path)[k][1] / scale_, theta}, 0, poses);
+      const Pose2 to{(*path)[k][0] / scale_, (*path)[k][1] / scale_, theta};
+      const double toClearance = space_.clearance(to).lower;
+      appendRoomier(poses.back(), fromClearance, to, toClearance, 0, poses);
+      fromClearance = toClearance;
     }
     for (std::size_t k = 1; keeping > 0 && k < poses.size(); ++k) {
       if (!checker_.keepsClearance(poses[k - 1], poses[k], keeping, 64)) return false;
@@ -115,9 +119,11 @@ class RouteWalker {
   /// cutting a corner between the middles of the triangulation's edges): its tightest
   /// of seven points, pushed as far as the ends' smaller clearance asks, while that
   /// leaves it roomier and in `from`'s node; up to four times per leg (a retraction
-  /// towards the medial axis).
-  void appendRoomier(const Pose2& from, const Pose2& to, int depth, std::vector<Pose2>& poses) const {
-    const double wanted = std::min(space_.clearance(from).lower, space_.clearance(to).lower);
+  /// towards the medial axis). The ends' clearances are given (each point's is
+  /// computed once).
+  void appendRoomier(const Pose2& from, double fromClearance, const Pose2& to, double toClearance, int depth,
+                     std::vector<Pose2>& poses) const {
+    const double wanted = std::min(fromClearance, toClearance);
     std::optional<std::pair<Pose2, Clearance>> tightest;
     for (int k = 1; depth < 4 && k < 8; ++k) {
       const Pose2 at{from.x + (to.x - from.x) * k / 8, from.y + (to.y - from.y) * k / 8, from.theta};
@@ -128,9 +134,10 @@ class RouteWalker {
       const auto& [at, here] = *tightest;
       const double push = wanted - here.lower;
       const Pose2 pushed{at.x - here.direction[0] * push, at.y - here.direction[1] * push, from.theta};
-      if (space_.clearance(pushed).lower > here.lower && space_.nodeOf(pushed) == space_.nodeOf(from)) {
-        appendRoomier(from, pushed, depth + 1, poses);
-        appendRoomier(pushed, to, depth + 1, poses);
+      const double pushedClearance = space_.clearance(pushed).lower;
+      if (pushedClearance > here.lower && space_.nodeOf(pushed) == space_.nodeOf(from)) {
+        appendRoomier(from, fromClearance, pushed, pushedClearance, depth + 1, poses);
+        appendRoomier(pushed, pushedClearance, to, toClearance, depth + 1, poses);
         return;
       }
     }
@@ -168,11 +175,8 @@ class RouteWalker {
   /// The signed turn from the current angle to `theta` staying inside the node's arc
   /// of angles (the shorter one when the node holds every angle).
   double turnInside(const CellGraphNode& node, double theta) const {
-    const std::uint32_t count = graph_.intervalCount();
-    if (graph_.criticalAngles().empty() || (node.lastInterval + 1) % count == node.firstInterval) {
-      return MotionChecker::shorterTurn(current().theta, theta);
-    }
-    const double arcStart = graph_.criticalAngles()[node.firstInterval].radians();
+    const auto [arcStart, width] = graph_.arc(node.firstInterval, node.lastInterval);
+    if (width == 2 * M_PI) return MotionChecker::shorterTurn(current().theta, theta);
     const auto along = [&](double angle) {
       const double u = std::fmod(angle - arcStart, 2 * M_PI);
       return u < 0 ? u + 2 * M_PI : u;
@@ -231,8 +235,7 @@ class RouteWalker {
     const std::uint32_t stride = (length + 7) / 8;
     for (std::uint32_t k = 0; k < length; k += stride) {
       const std::uint32_t interval = (run.firstInterval + k) % count;
-      const double low = critical[interval].radians(), high = critical[(interval + 1) % count].radians();
-      const double width = count == 1 ? 2 * M_PI : std::fmod(high - low + 4 * M_PI, 2 * M_PI);
+      const auto [low, width] = graph_.arc(interval, interval);
       if (width >= 1e-9) angles.push_back(reducedAngle(low + width / 2));
     }
     return angles;
@@ -308,11 +311,10 @@ class RouteWalker {
       // The interval `step` away from the critical angle, and its end nearer to it.
       const std::uint32_t interval = before ? (index + 2 * count - 1 - step) % count : (index + step) % count;
       if (!runHolds(run, interval)) return std::nullopt;
-      const double low = critical[interval].radians(), high = critical[(interval + 1) % count].radians();
-      const double width = count == 1 ? 2 * M_PI : std::fmod(high - low + 4 * M_PI, 2 * M_PI);
+      const auto [low, width] = graph_.arc(interval, interval);
       if (width < 1e-9) continue;
       const double inside = std::min(1e-4, width / 2);
-      return reducedAngle(before ? high - inside : low + inside);
+      return reducedAngle(before ? critical[(interval + 1) % count].radians() - inside : low + inside);
     }
     return std::nullopt;
   }

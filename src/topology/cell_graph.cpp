@@ -770,13 +770,17 @@ void CellGraph::checkParts(std::size_t cellCount, AngleAlgebra& algebra) const {
   checkRuns(parts_.unboundedRuns);
 }
 
-double CellGraph::arcWidth(std::uint32_t node) const {
-  const CellGraphNode& run = parts_.nodes[node];
+std::pair<double, double> CellGraph::arc(std::uint32_t first, std::uint32_t last) const {
   const std::vector<AlgebraicAngle>& angles = parts_.criticalAngles;
+  if (angles.empty()) return {-M_PI, 2 * M_PI};
   const std::uint32_t count = static_cast<std::uint32_t>(intervalCount());
-  if (angles.empty() || (run.lastInterval + 1) % count == run.firstInterval) return 2 * M_PI;
-  const double low = angles[run.firstInterval].radians(), high = angles[(run.lastInterval + 1) % count].radians();
-  return std::fmod(high - low + 4 * M_PI, 2 * M_PI);
+  const double low = angles[first].radians();
+  if ((last + 1) % count == first) return {low, 2 * M_PI};
+  return {low, std::fmod(angles[(last + 1) % count].radians() - low + 4 * M_PI, 2 * M_PI)};
+}
+
+double CellGraph::arcWidth(std::uint32_t node) const {
+  return arc(parts_.nodes[node].firstInterval, parts_.nodes[node].lastInterval).second;
 }
 
 std::optional<std::vector<std::uint32_t>> CellGraph::route(
@@ -811,7 +815,8 @@ std::optional<std::vector<std::uint32_t>> CellGraph::route(
     const std::uint32_t node = nodeOf(at);
     // A thin node left through the angle it was entered by joins its neighbours only
     // through faces pinched to a sliver of angles.
-    const double pinch = arcWidth(node) < kThinArc ? kThinNodeCost / std::max(arcWidth(node), 1e-12) : 0;
+    const double width = arcWidth(node);
+    const double pinch = width < kThinArc ? kThinNodeCost / std::max(width, 1e-12) : 0;
     for (const auto& [neighbour, angle] : next[node]) {
       const double through = cost + 1 + (angle == angleOf(at) ? pinch : 0);
       const State onward = state(neighbour, angle);

@@ -105,6 +105,10 @@ class CellGraph {
   static constexpr double kThinArc = 1e-4;
   static constexpr double kThinNodeCost = 0.01;
 
+  /// The arc of angles from the start of interval `first` to the end of interval
+  /// `last`, counterclockwise: its start in radians and its length (2 pi when it
+  /// holds every angle).
+  std::pair<double, double> arc(std::uint32_t first, std::uint32_t last) const;
   /// The length in radians of a node's arc of angles (2 pi for every angle).
   double arcWidth(std::uint32_t node) const;
 
