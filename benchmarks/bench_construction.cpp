@@ -92,8 +92,8 @@ Row measure(const std::string& name, const Mesh& robot, const Mesh& world, unsig
   for (const StageTime& stage : fastest.stages) std::cout << stage.stage << " " << stage.seconds << ", ";
   std::cout << "); " << arrangement.patches.size() << " patches, " << arrangement.curves.size() << " curves, "
             << arrangement.vertices.size() << " vertices, " << subFaces << " sub-faces, " << space.shellCount()
-            << " shells, " << space.cellCount() << " free cells; peak " << peakMemoryMegabytes() << " MB; double intervals "
-            << 100 * space.statistics().doubleIntervalFraction() << "%" << std::endl;
+            << " shells, " << space.cellCount() << " free cells; peak " << peakMemoryMegabytes()
+            << " MB; double intervals " << 100 * space.statistics().doubleIntervalFraction() << "%" << std::endl;
   if (checkShells) printShellCharacteristics(space);
   return {name, robot.triangles().size(), world.triangles().size(), arrangement.vertices.size() + subFaces, seconds};
 }
@@ -137,19 +137,13 @@ void writePlot(const std::vector<Row>& rows, std::ostream& out) {
 
 /// The room counts 1, 2, 4, ... and the largest one last: twice `rooms`, at most
 /// `largest` (and past it when `rooms` is `largest`, to end the loop).
-unsigned doubledUpTo(unsigned rooms, unsigned largest) { return rooms < largest ? std::min(2 * rooms, largest) : 2 * rooms; }
+unsigned doubledUpTo(unsigned rooms, unsigned largest) {
+  return rooms < largest ? std::min(2 * rooms, largest) : 2 * rooms;
+}
 
-/// A floor plan of `rooms` rooms of 3 x 3 with 1 wide doors, as the tetrahedron's,
-/// its walls of three heights.
+/// The house_mixed family's floor plan (seed 1).
 Mesh mixedHeightFloorPlan(unsigned rooms) {
-  FloorPlanLayout layout;
-  layout.rooms = rooms;
-  layout.columns = static_cast<unsigned>(std::ceil(std::sqrt(static_cast<double>(rooms))));
-  layout.cellSize = 3;
-  layout.wallHeights = {0.375, 0.75, 1.25};
-  layout.doorWidth = 1;
-  layout.extraDoors = rooms / 5;
-  return makeCheckedMesh(makeFloorPlan(layout, 1).walls, "floor plan");
+  return makeCheckedMesh(makeFloorPlan(mixedHeightLayout(rooms), 1).walls, "floor plan");
 }
 
 /// A scene named on the command line, read before the runs start.
@@ -163,11 +157,6 @@ NamedScene namedScene(const std::string& name) {
     benchmarks::requireFiles({name});
     LoadedProblem problem = loadProblem(name);
     return {name.substr(name.find_last_of('/') + 1), std::move(problem.robot), std::move(problem.world)};
-  }
-  const std::string housePrefix = "house_mixed_";
-  if (name.rfind(housePrefix, 0) == 0) {
-    const unsigned rooms = benchmarks::wholeNumber("scene " + name, name.substr(housePrefix.size()));
-    return {name, makeHouseRobot(), mixedHeightFloorPlan(rooms)};
   }
   Scene scene = makeScene(name);
   return {scene.name, std::move(scene.robot), std::move(scene.world)};

@@ -429,6 +429,16 @@ TEST(Scenes, TetraFloorplanFamilyScalesWithTheRoomCount) {
             canonicalTriangles(makeScene("tetra_floorplan").world));
 }
 
+TEST(Scenes, HouseMixedFamilyPutsTheHouseAmongWallsOfThreeHeights) {
+  const Scene s = makeScene("house_mixed_9");
+  EXPECT_EQ(s.name, "house_mixed_9");
+  EXPECT_EQ(s.robot.triangles().size(), 14u);
+  std::set<double> tops;
+  for (const Point3& v : s.world.vertices()) tops.insert(v.z());
+  EXPECT_EQ(tops, (std::set<double>{0, 0.375, 0.75, 1.25}));
+  EXPECT_NE(s.problem.start.x, s.problem.goal.x);
+}
+
 TEST(Scenes, BenchmarkRobotsHaveTheirFacetCountsAndVolumes) {
   const Mesh house = makeHouseRobot();
   EXPECT_EQ(house.triangles().size(), 14u);
@@ -463,6 +473,8 @@ TEST(Scenes, FloorPlanWallsTakeEachOfSeveralHeights) {
 TEST(Scenes, NamesAreChecked) {
   EXPECT_TRUE(isSceneName("maze"));
   EXPECT_TRUE(isSceneName("tetra_floorplan_12"));
+  EXPECT_TRUE(isSceneName("house_mixed_160"));
+  EXPECT_FALSE(isSceneName("house_mixed_"));
   EXPECT_FALSE(isSceneName("tetra_floorplan_"));
   EXPECT_FALSE(isSceneName("tetra_floorplan_x"));
   EXPECT_FALSE(isSceneName("labyrinth"));

@@ -13,7 +13,7 @@ namespace freespace::cli {
 
 namespace {
 
-const std::string kSceneFamilies = "tetra_floorplan_<rooms>, soup_maze_<thousands of triangles>";
+const std::string kSceneFamilies = "tetra_floorplan_<rooms>, soup_maze_<thousands of triangles>, house_mixed_<rooms>";
 
 struct GenerateOptions {
   std::string out;

@@ -26,6 +26,7 @@ constexpr unsigned kDefaultTetraRooms = 8;
 constexpr unsigned kDefaultSoupMazeRooms = 16;
 const std::string kTetraFloorplan = "tetra_floorplan";
 const std::string kSoupMaze = "soup_maze";
+const std::string kHouseMixed = "house_mixed";
 
 /// The planning volume: the environment and the robot's reach around the start
 /// and the goal, with a margin, rounded outwards to quarter units.
@@ -304,7 +305,7 @@ std::vector<std::string> sceneNames() {
 bool isSceneName(const std::string& name) {
   const std::vector<std::string> names = sceneNames();
   return std::find(names.begin(), names.end(), name) != names.end() || familySize(name, kTetraFloorplan) > 0 ||
-         familySize(name, kSoupMaze) > 0;
+         familySize(name, kSoupMaze) > 0 || familySize(name, kHouseMixed) > 0;
 }
 
 Scene makeScene(const std::string& name, std::uint64_t seed) {
@@ -317,6 +318,7 @@ Scene makeScene(const std::string& name, std::uint64_t seed) {
   if (const unsigned thousands = familySize(name, kSoupMaze); thousands > 0) {
     return renamedScene(makeSoupMazeScene(thousands, seed), name);
   }
+  if (const unsigned rooms = familySize(name, kHouseMixed); rooms > 0) return makeHouseMixedScene(rooms, seed);
   throw std::invalid_argument("unknown scene '" + name + "'");
 }
 
@@ -337,6 +339,28 @@ Scene makeTetraFloorplanScene(unsigned rooms, std::uint64_t seed) {
                            std::to_string(rooms) +
                            " rooms of 3 x 3 joined by 1 wide doors along a random spanning tree plus loops "
                            "(seeded); from the first room to the last. Solvable.");
+}
+
+FloorPlanLayout mixedHeightLayout(unsigned rooms) {
+  FloorPlanLayout layout;
+  layout.rooms = rooms;
+  layout.columns = static_cast<unsigned>(std::ceil(std::sqrt(static_cast<double>(rooms))));
+  layout.cellSize = 3;
+  layout.wallHeights = {0.375, 0.75, 1.25};  // under the house's eaves, under its apex, above it
+  layout.doorWidth = 1;
+  layout.extraDoors = rooms / 5;
+  return layout;
+}
+
+Scene makeHouseMixedScene(unsigned rooms, std::uint64_t seed) {
+  if (rooms == 0) throw std::invalid_argument("house_mixed: needs at least one room");
+  const FloorPlan plan = makeFloorPlan(mixedHeightLayout(rooms), seed);
+  return assembleScene(kHouseMixed + "_" + std::to_string(rooms), makeHouseRobot(), plan.walls,
+                       {plan.roomCentres.front().x(), plan.roomCentres.front().y(), 0},
+                       {plan.roomCentres.back().x(), plan.roomCentres.back().y(), kPi / 2}, true,
+                       "House robot (14 facets, 0.75 wide, apex at 0.875) in a floor plan of " + std::to_string(rooms) +
+                           " rooms of 3 x 3 joined by 1 wide doors (seeded), walls of three heights (0.375, "
+                           "0.75, 1.25); from the first room to the last. Solvable.");
 }
 
 Scene renamedScene(Scene scene, const std::string& name) {

@@ -156,6 +156,7 @@ std::vector<std::string> sceneNames();
 
 /// Builds a named scene. "tetra_floorplan_<N>" builds makeTetraFloorplanScene(N);
 /// "tetra_floorplan" has 8 rooms. "soup_maze_<N>" builds makeSoupMazeScene(N);
+/// "house_mixed_<N>" builds makeHouseMixedScene(N);
 /// "soup_maze" has 16 rooms. The soup_* scenes are written as triangle soups
 /// (Scene::robotSoup, Scene::worldSoup; soup_variants.h). Scenes with random parts
 /// (maze, random_polyhedra, tetra_floorplan, soup_maze) depend on `seed`; the others
@@ -167,6 +168,15 @@ bool isSceneName(const std::string& name);
 /// (3 x 3 cells, doors 1 wide), from the first room to the last; a family for
 /// scaling benchmarks.
 Scene makeTetraFloorplanScene(unsigned rooms, std::uint64_t seed = 1);
+
+/// The floor plan of the house_mixed family: `rooms` rooms of 3 x 3 with doors 1
+/// wide, walls of three heights (0.375, 0.75, 1.25) chosen at random per wall.
+FloorPlanLayout mixedHeightLayout(unsigned rooms);
+
+/// "house_mixed_<rooms>": the house robot in the mixed-height floor plan of `rooms`
+/// rooms, from the first room to the last; a family for construction and
+/// persistence benchmarks (house_mixed_160 has about 8,700 facets).
+Scene makeHouseMixedScene(unsigned rooms, std::uint64_t seed = 1);
 
 /// "soup_maze_<thousands>": a soup maze (soup_maze with more rooms) written as about
 /// `thousandTriangles` thousand triangles; a family for loading benchmarks.
