@@ -161,7 +161,7 @@ TEST(SavedSpace, BadFilesAreClearErrors) {
   std::string version = bytes;
   version.replace(bytes.find('\n') - 1, 1, "9");
   write(other, version);
-  EXPECT_NE(loadError(other).find("format 9; this build reads format 5"), std::string::npos);
+  EXPECT_NE(loadError(other).find("format 9; this build reads format 6"), std::string::npos);
   write(other, bytes.substr(0, bytes.size() / 2));
   EXPECT_NE(loadError(other).find("damaged"), std::string::npos);
   std::string altered = bytes;
@@ -265,25 +265,31 @@ TEST(SavedSpace, AlteredLengthsAreRefusedWithPlainMessages) {
 
 namespace {
 
-/// The payload of a saved file's `bytes` decoded, its graph altered by `alter`, and
-/// written again into a file with a valid checksum; returns the loader's complaint.
-std::string errorWithGraphAltered(const TempDir& dir, const std::string& bytes,
-                                  const std::function<void(saved::Graph&)>& alter) {
+/// The payload of a saved file's `bytes` decoded, altered by `alter`, and written
+/// again into a file with a valid checksum; returns the file's path.
+std::string fileWithSpaceAltered(const TempDir& dir, const std::string& bytes,
+                                 const std::function<void(saved::Space&)>& alter) {
   saved::Space space;
   {
     std::istringstream in(bytes.substr(payloadStartOf(bytes)));
     boost::archive::binary_iarchive archive(in);
     archive >> space;
   }
-  alter(space.graph);
+  alter(space);
   std::ostringstream out;
   {
     boost::archive::binary_oarchive archive(out);
     archive << space;
   }
-  const std::string file = dir.file("altered_graph.fspace");
+  const std::string file = dir.file("altered_space.fspace");
   write(file, savedSpaceFileAround(out.str()));
-  return loadError(file);
+  return file;
+}
+
+/// The loader's complaint about the saved `bytes` with their graph altered.
+std::string errorWithGraphAltered(const TempDir& dir, const std::string& bytes,
+                                  const std::function<void(saved::Graph&)>& alter) {
+  return loadError(fileWithSpaceAltered(dir, bytes, [&](saved::Space& space) { alter(space.graph); }));
 }
 
 }  // namespace
@@ -311,5 +317,37 @@ TEST(SavedSpace, ADamagedGraphIsRefusedNamingThePart) {
   for (const auto& [alter, part] : cases) {
     const std::string error = errorWithGraphAltered(dir, bytes, alter);
     EXPECT_NE(error.find("inconsistent saved free space at " + part), std::string::npos) << error;
+  }
+}
+
+// A function's exact coefficients are decoded when first needed: a coefficient
+// altered behind a valid checksum (its most significant byte changed, so that it
+// leaves its stored double enclosure) loads with the structure checked, and is refused
+// naming the file when they are decoded (here all of them, LoadCheck::Everything).
+TEST(SavedSpace, AnAlteredExactCoefficientIsRefusedWhenDecoded) {
+  TempDir dir;
+  const std::string bytes = savedBytes(dir);
+  const std::string intact = dir.file("intact.fspace");
+  write(intact, bytes);
+  EXPECT_NO_THROW(FreeSpace::load(intact, FreeSpace::LoadCheck::Everything));
+  bool altered = false;
+  const std::string file = fileWithSpaceAltered(dir, bytes, [&](saved::Space& space) {
+    for (saved::Function& function : space.functions) {
+      // The first coefficient: a sign byte, the numerator's 4-byte length, its bytes.
+      if (function.exact.size() < 6 || function.exact[1] == 0) continue;
+      char& mostSignificant = function.exact[5];
+      mostSignificant ^= static_cast<char>(mostSignificant == 0x40 ? 0x20 : 0x40);
+      altered = true;
+      return;
+    }
+  });
+  ASSERT_TRUE(altered) << "no function with a nonzero coefficient";
+  EXPECT_NO_THROW(FreeSpace::load(file));
+  try {
+    FreeSpace::load(file, FreeSpace::LoadCheck::Everything);
+    ADD_FAILURE() << "the altered coefficient was accepted";
+  } catch (const InputError& error) {
+    EXPECT_EQ(error.file(), file);
+    EXPECT_EQ(error.problem(), "inconsistent saved free space at a function's exact coefficients");
   }
 }

@@ -1,12 +1,12 @@
 #include "freespace/numbers/algebraic_angle.h"
 
-#include "interval_root_isolation.h"
-#include "multiprecision_refinement.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+
+#include "interval_root_isolation.h"
+#include "multiprecision_refinement.h"
 
 namespace freespace {
 
@@ -183,8 +183,8 @@ std::optional<AlgebraicAngle> betweenInDoubleDoubles(const AlgebraicAngle& from,
 
 /// The MPFI ladder for the sign of f at a root: the level that decided, or nothing.
 template <int Step = 0>
-std::optional<std::pair<Sign, int>> signAtRootOnLadder(const RationalPolynomial& f, const RationalPolynomial& squareFree,
-                                                       IsolatingInterval root) {
+std::optional<std::pair<Sign, int>> signAtRootOnLadder(const RationalPolynomial& f,
+                                                       const RationalPolynomial& squareFree, IsolatingInterval root) {
   if constexpr (Step == kMultiprecisionLevels) {
     return std::nullopt;
   } else {
@@ -224,28 +224,9 @@ std::optional<Sign> signInDoubles(const Polynomial<Interval>& p, AlgebraicAngle&
 
 }  // namespace
 
-/// Exact polynomials read back: the double-double ones enclose them.
-struct AngleFunction::ExactEvaluator final : Evaluator {
-  explicit ExactEvaluator(std::array<RationalPolynomial, 2> polynomials) : polynomials(std::move(polynomials)) {}
-  Polynomial<DoubleDoubleInterval> doubleDouble(int chart) const override {
-    std::vector<DoubleDoubleInterval> coefficients;
-    for (const Rational& coefficient : polynomials[chart].coefficients()) coefficients.emplace_back(coefficient);
-    return Polynomial<DoubleDoubleInterval>(std::move(coefficients));
-  }
-  RationalPolynomial exact(int chart) const override { return polynomials[chart]; }
-  std::array<RationalPolynomial, 2> polynomials;
-};
-
-AngleFunction::AngleFunction(std::array<RationalPolynomial, 2> exact, std::optional<RootKey> key)
-    : key_(key) {
-  for (int chart = 0; chart < 2; ++chart) {
-    std::vector<Interval> coefficients;
-    for (const Rational& coefficient : exact[chart].coefficients()) coefficients.push_back(enclosingInterval(coefficient));
-    approximate_[chart] = Polynomial<Interval>(std::move(coefficients));
-    escalation().tight[chart] = approximate_[chart];  // already as narrow as doubles allow
-  }
-  evaluator_ = std::make_unique<ExactEvaluator>(std::move(exact));
-}
+AngleFunction::AngleFunction(std::array<Polynomial<Interval>, 2> enclosures, std::optional<RootKey> key,
+                             std::unique_ptr<const ExactSource> exact)
+    : approximate_(std::move(enclosures)), source_(std::move(exact)), key_(key) {}
 
 AngleFunction::Escalation& AngleFunction::escalation() const {
   if (!escalation_) escalation_ = std::make_unique<Escalation>();
@@ -254,7 +235,15 @@ AngleFunction::Escalation& AngleFunction::escalation() const {
 
 const Polynomial<DoubleDoubleInterval>& AngleFunction::doubleDouble(int chart) const {
   auto& doubleDouble = escalation().doubleDouble[chart];
-  if (!doubleDouble) doubleDouble = evaluator_->doubleDouble(chart);
+  if (!doubleDouble) {
+    if (source_) {
+      std::vector<DoubleDoubleInterval> coefficients;
+      for (const Rational& coefficient : exact(chart).coefficients()) coefficients.emplace_back(coefficient);
+      doubleDouble = Polynomial<DoubleDoubleInterval>(std::move(coefficients));
+    } else {
+      doubleDouble = evaluator_->doubleDouble(chart);
+    }
+  }
   return *doubleDouble;
 }
 
@@ -275,6 +264,7 @@ void AngleFunction::rememberEnclosure(int chart, int index, const NarrowEnclosur
 }
 
 const Polynomial<Interval>& AngleFunction::tight(int chart) const {
+  if (source_) return approximate_[chart];  // as narrow as doubles allow
   auto& tight = escalation().tight[chart];
   if (!tight) {
     std::vector<Interval> coefficients;
@@ -300,7 +290,7 @@ const Polynomial<PreciseInterval>& AngleFunction::precise(int chart) const {
 
 const RationalPolynomial& AngleFunction::exact(int chart) const {
   auto& exact = escalation().exact[chart];
-  if (!exact) exact = trimmed(evaluator_->exact(chart));
+  if (!exact) exact = trimmed(source_ ? source_->polynomial(chart, approximate_[chart]) : evaluator_->exact(chart));
   return *exact;
 }
 
@@ -356,9 +346,7 @@ AlgebraicAngle AlgebraicAngle::rational(const HalfAngle& angle) {
   return rational(chart, boundary ? -angle.t : angle.t);
 }
 
-double AlgebraicAngle::radians() const {
-  return HalfAngle{chart_, 0.5 * (lower_ + upper_)}.radians();
-}
+double AlgebraicAngle::radians() const { return HalfAngle{chart_, 0.5 * (lower_ + upper_)}.radians(); }
 
 bool AlgebraicAngle::knowsSignChange(const Polynomial<Interval>& p) {
   if (signAtLower_ != Sign::Zero) return true;
@@ -561,7 +549,8 @@ Sign AngleAlgebra::signAt(const AngleFunction& function, const AlgebraicAngle& a
     return record(PredicateKind::SignAtRoot, kTightLevel, *sign);
   }
   const RationalPolynomial& exact = function.exact(angle.chart());
-  if (angle.isRational()) return record(PredicateKind::SignAtRoot, kExactLevel, freespace::signAt(exact, angle.root().lo));
+  if (angle.isRational())
+    return record(PredicateKind::SignAtRoot, kExactLevel, freespace::signAt(exact, angle.root().lo));
   const RationalPolynomial& squareFree = angle.function()->squareFree(angle.chart());
   const IsolatingInterval root = verifiedIsolating(refined);
   if (vanishesAtRoot(exact, squareFree, root)) return record(PredicateKind::SignAtRoot, kExactLevel, Sign::Zero);
@@ -847,7 +836,8 @@ std::optional<DoubleDoubleInterval> bisectInDoubleDoubles(const AlgebraicAngle& 
   }
   // The root lies in [low, high]: their middle, widened by half their distance.
   const DoubleDoubleInterval width = high - low;
-  return ((low + high) * DoubleDoubleInterval(0.5)).widened(0.5 * (std::fabs(width.high()) + std::fabs(width.low()) + width.radius()));
+  return ((low + high) * DoubleDoubleInterval(0.5))
+      .widened(0.5 * (std::fabs(width.high()) + std::fabs(width.low()) + width.radius()));
 }
 
 }  // namespace
@@ -940,7 +930,8 @@ AlgebraicAngle AngleAlgebra::rationalNextTo(const AlgebraicAngle& angle, const A
                                             int bits) {
   if (compare(angle, bound) == 0) throw std::invalid_argument("rationalNextTo: the bound is the angle");
   const bool boundWraps = before ? compare(bound, angle) > 0 : compare(angle, bound) > 0;
-  const AngleInterval between = before ? AngleInterval{bound, angle, boundWraps} : AngleInterval{angle, bound, boundWraps};
+  const AngleInterval between =
+      before ? AngleInterval{bound, angle, boundWraps} : AngleInterval{angle, bound, boundWraps};
   ExactPosition position = exactPosition(angle);
   for (Rational gap = powerOfHalf(static_cast<unsigned>(bits));; gap /= 2) {
     while (position.u.hi - position.u.lo >= gap / 2) bisectPosition(position, chartOffset(angle.chart()));
@@ -957,8 +948,9 @@ AngleSet AngleAlgebra::positiveSet(const std::vector<std::shared_ptr<const Angle
   return signPatternSets(functions, std::vector<Sign>(functions.size(), Sign::Positive), kind)[0];
 }
 
-std::array<AngleSet, 2> AngleAlgebra::signPatternSets(const std::vector<std::shared_ptr<const AngleFunction>>& functions,
-                                                      const std::vector<Sign>& pattern, PredicateKind kind) {
+std::array<AngleSet, 2> AngleAlgebra::signPatternSets(
+    const std::vector<std::shared_ptr<const AngleFunction>>& functions, const std::vector<Sign>& pattern,
+    PredicateKind kind) {
   // A function that vanishes identically has no sign anywhere.
   for (const auto& function : functions) {
     if (function->isIdenticallyZero()) return {};
@@ -991,7 +983,8 @@ AngleSet AngleAlgebra::closureWhere(const std::vector<std::shared_ptr<const Angl
 
 AngleSet AngleAlgebra::closureOver(std::vector<AlgebraicAngle> breakpoints,
                                    const std::function<bool(const AlgebraicAngle&)>& holds) {
-  return closuresOver(std::move(breakpoints), 1, [&](const AlgebraicAngle& angle) { return holds(angle) ? 1u : 0u; })[0];
+  return closuresOver(std::move(breakpoints), 1,
+                      [&](const AlgebraicAngle& angle) { return holds(angle) ? 1u : 0u; })[0];
 }
 
 namespace {
@@ -1028,12 +1021,12 @@ AngleSet setOfGaps(const std::vector<AlgebraicAngle>& breakpoints, const std::ve
 
 std::vector<AngleSet> AngleAlgebra::closuresOver(std::vector<AlgebraicAngle> breakpoints, std::size_t count,
                                                  const std::function<std::uint32_t(const AlgebraicAngle&)>& holding) {
-  std::sort(breakpoints.begin(), breakpoints.end(), [this](const AlgebraicAngle& a, const AlgebraicAngle& b) {
-    return compare(a, b) < 0;
-  });
-  breakpoints.erase(std::unique(breakpoints.begin(), breakpoints.end(),
-                                [this](const AlgebraicAngle& a, const AlgebraicAngle& b) { return compare(a, b) == 0; }),
-                    breakpoints.end());
+  std::sort(breakpoints.begin(), breakpoints.end(),
+            [this](const AlgebraicAngle& a, const AlgebraicAngle& b) { return compare(a, b) < 0; });
+  breakpoints.erase(
+      std::unique(breakpoints.begin(), breakpoints.end(),
+                  [this](const AlgebraicAngle& a, const AlgebraicAngle& b) { return compare(a, b) == 0; }),
+      breakpoints.end());
   std::vector<AngleSet> sets(count);
   if (breakpoints.empty()) {
     const std::uint32_t bits = holding(AlgebraicAngle::rational(0, 0.0));
@@ -1045,8 +1038,8 @@ std::vector<AngleSet> AngleAlgebra::closuresOver(std::vector<AlgebraicAngle> bre
   std::vector<std::uint32_t> bitsOfGap(gaps);
   for (std::size_t i = 0; i < gaps; ++i) {
     const AlgebraicAngle& next = breakpoints[(i + 1) % gaps];
-    const AlgebraicAngle sample = gaps == 1 ? angleAtPosition(exactPosition(breakpoints[0]).u.lo + 2)
-                                            : rationalBetween(breakpoints[i], next);
+    const AlgebraicAngle sample =
+        gaps == 1 ? angleAtPosition(exactPosition(breakpoints[0]).u.lo + 2) : rationalBetween(breakpoints[i], next);
     bitsOfGap[i] = holding(sample);
   }
   for (std::size_t property = 0; property < count; ++property) {

@@ -1,18 +1,19 @@
-// Saving and loading a built free space. The file is a header line naming the
-// format and its version, the payload's size and CRC-32, then the payload: a Boost
-// binary archive of saved::Space. Exact numbers are stored as decimal strings
-// (rationals as p/q), algebraic angles by their functions' exact polynomials, their
-// exact isolating intervals and root indices, so that every predicate on the loaded
-// structure decides as on the built one.
+// Saving and loading a built free space (docs/design.md section 6). The file is a
+// header line naming the format and its version, the payload's size and CRC-32, then
+// the payload: a Boost binary archive of saved::Space. Algebraic angles are stored by
+// their functions (double enclosures of the exact coefficients, and those
+// coefficients as bytes, decoded when first needed), their isolating intervals and
+// root indices, so that every predicate on the loaded structure decides as on the
+// built one.
 
+#include <zlib.h>
+
+#include <algorithm>
 #include <boost/archive/binary_iarchive_impl.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/archive/impl/archive_serializer_map.ipp>
 #include <boost/archive/impl/basic_binary_iarchive.ipp>
 #include <boost/archive/impl/basic_binary_iprimitive.ipp>
-#include <zlib.h>
-
-#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -115,7 +116,7 @@ namespace freespace {
 namespace {
 
 const std::string kHeader = "freespace saved free space, format ";
-constexpr int kFormatVersion = 5;
+constexpr int kFormatVersion = 6;
 
 // Rationals as bytes: a sign byte (0 or 1), then the numerator's magnitude and the
 // denominator, each as a 4-byte length (least significant byte first) and its bytes
@@ -138,33 +139,56 @@ std::string bytesOf(const Rational& value) {
   return out;
 }
 
-/// The magnitude at `at` (moved past it): its bytes must be there, without a leading
-/// zero byte (one writing only).
-boost::multiprecision::mpz_int magnitudeAt(const std::string& bytes, std::size_t& at) {
-  if (bytes.size() - at < 4) throw DamagedPart("a number");
-  std::size_t count = 0;
-  for (int i = 0; i < 4; ++i) count |= std::size_t(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+/// Where the magnitude at `at` ends: its bytes must be there, without a leading zero
+/// byte (one writing only). `digits` is set to their count.
+std::size_t magnitudeEnd(const std::string& bytes, std::size_t at, std::size_t& digits) {
+  if (at > bytes.size() || bytes.size() - at < 4) throw DamagedPart("a number");
+  digits = 0;
+  for (int i = 0; i < 4; ++i) digits |= std::size_t(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
   at += 4;
-  if (bytes.size() - at < count || (count > 0 && bytes[at] == '\0')) throw DamagedPart("a number");
+  if (bytes.size() - at < digits || (digits > 0 && bytes[at] == '\0')) throw DamagedPart("a number");
+  return at + digits;
+}
+
+/// Where the rational written by bytesOf at `at` ends, checked as far as that can be
+/// done without arithmetic: a sign byte, no negative zero, a nonzero denominator.
+std::size_t rationalEnd(const std::string& bytes, std::size_t at) {
+  if (at >= bytes.size() || static_cast<unsigned char>(bytes[at]) > 1) throw DamagedPart("a number");
+  const bool negative = bytes[at] == 1;
+  std::size_t numeratorDigits = 0, denominatorDigits = 0;
+  const std::size_t end = magnitudeEnd(bytes, magnitudeEnd(bytes, at + 1, numeratorDigits), denominatorDigits);
+  if (denominatorDigits == 0 || (negative && numeratorDigits == 0)) throw DamagedPart("a number");
+  return end;
+}
+
+boost::multiprecision::mpz_int magnitudeAt(const std::string& bytes, std::size_t& at) {
+  std::size_t digits = 0;
+  const std::size_t end = magnitudeEnd(bytes, at, digits);
   boost::multiprecision::mpz_int value;
-  if (count > 0) mpz_import(value.backend().data(), count, 1, 1, 1, 0, bytes.data() + at);
-  at += count;
+  if (digits > 0) mpz_import(value.backend().data(), digits, 1, 1, 1, 0, bytes.data() + end - digits);
+  at = end;
   return value;
 }
 
-/// A rational written by bytesOf: canonical (lowest terms, positive denominator, no
-/// negative zero), checked before GMP takes it (it must never see a zero
-/// denominator or an unreduced fraction).
-Rational rationalOf(const std::string& bytes) {
+/// The rational written by bytesOf at `at` (moved past it): canonical (lowest terms,
+/// positive denominator, no negative zero), checked before GMP takes it (it must never
+/// see a zero denominator or an unreduced fraction).
+Rational rationalAt(const std::string& bytes, std::size_t& at) {
   using boost::multiprecision::mpz_int;
-  if (bytes.empty() || static_cast<unsigned char>(bytes[0]) > 1) throw DamagedPart("a number");
-  const bool negative = bytes[0] == 1;
-  std::size_t at = 1;
+  const std::size_t end = rationalEnd(bytes, at);
+  const bool negative = bytes[at] == 1;
+  ++at;
   const mpz_int numerator = magnitudeAt(bytes, at), denominator = magnitudeAt(bytes, at);
-  if (at != bytes.size() || denominator == 0 || gcd(numerator, denominator) != 1 || (negative && numerator == 0)) {
-    throw DamagedPart("a number");
-  }
+  if (at != end || gcd(numerator, denominator) != 1) throw DamagedPart("a number");
   return Rational(negative ? mpz_int(-numerator) : numerator, denominator);
+}
+
+/// A text holding exactly one rational.
+Rational rationalOf(const std::string& bytes) {
+  std::size_t at = 0;
+  const Rational value = rationalAt(bytes, at);
+  if (at != bytes.size()) throw DamagedPart("a number");
+  return value;
 }
 
 double finite(double value) {
@@ -172,10 +196,51 @@ double finite(double value) {
   return value;
 }
 
-/// Algebraic angles to and from the table of a saved space.
+/// A loaded function's exact coefficients, decoded when a predicate first needs them
+/// (their bytes were checked for form at loading; lowest terms and the stored
+/// enclosures are checked here).
+class SavedPolynomials final : public AngleFunction::ExactSource {
+ public:
+  SavedPolynomials(std::shared_ptr<const std::string> file, std::string bytes, std::uint32_t chart0Coefficients)
+      : file_(std::move(file)), bytes_(std::move(bytes)), chart0Coefficients_(chart0Coefficients) {}
+
+  RationalPolynomial polynomial(int chart, const Polynomial<Interval>& enclosure) const override {
+    std::size_t at = 0;
+    if (chart == 1) {
+      for (std::uint32_t i = 0; i < chart0Coefficients_; ++i) at = rationalEnd(bytes_, at);
+    }
+    std::vector<Rational> coefficients;
+    try {
+      for (const Interval& stored : enclosure.coefficients()) {
+        coefficients.push_back(rationalAt(bytes_, at));
+        const Interval exact = enclosingInterval(coefficients.back());
+        if (exact.lower() < stored.lower() || exact.upper() > stored.upper()) throw DamagedPart("");
+      }
+    } catch (const DamagedPart&) {
+      throw InputError(*file_, "inconsistent saved free space at a function's exact coefficients");
+    }
+    return RationalPolynomial(std::move(coefficients));
+  }
+
+ private:
+  std::shared_ptr<const std::string> file_;
+  std::string bytes_;
+  std::uint32_t chart0Coefficients_;
+};
+
+/// Algebraic angles to and from the table of a saved space (`file`: the one read, for
+/// the messages of the functions' exact coefficients decoded later).
 class AngleTable {
  public:
-  explicit AngleTable(saved::Space& space) : space_(space) {}
+  explicit AngleTable(saved::Space& space, std::shared_ptr<const std::string> file = {})
+      : space_(space), file_(std::move(file)) {}
+
+  /// Decodes every loaded function's exact coefficients now (LoadCheck::Everything).
+  void decodeEveryFunction() const {
+    for (const auto& function : loaded_) {
+      if (function) function->exact(0), function->exact(1);
+    }
+  }
 
   /// Each distinct angle once: a root by its function, chart and place among the
   /// function's roots (copies of it may hold enclosures refined differently), a
@@ -193,7 +258,8 @@ class AngleTable {
     stored.index = angle.index();
     stored.lower = angle.lower();
     stored.upper = angle.upper();
-    if (angle.isRational() || root.lo != Rational(angle.lower()) || root.hi != Rational(angle.upper())) {
+    const bool doubleEnds = root.lo == Rational(angle.lower()) && root.hi == Rational(angle.upper());
+    if (!doubleEnds || (angle.isRational() && angle.lower() != angle.upper())) {
       stored.lo = bytesOf(root.lo);
       stored.hi = bytesOf(root.hi);
     }
@@ -236,8 +302,14 @@ class AngleTable {
     if (inserted) {
       saved::Function stored;
       if (function.key()) stored.key.assign(function.key()->begin(), function.key()->end());
-      for (const Rational& c : function.exact(0).coefficients()) stored.chart0.push_back(bytesOf(c));
-      for (const Rational& c : function.exact(1).coefficients()) stored.chart1.push_back(bytesOf(c));
+      stored.chart0Coefficients = static_cast<std::uint32_t>(function.exact(0).coefficients().size());
+      for (int chart = 0; chart < 2; ++chart) {
+        for (const Rational& c : function.exact(chart).coefficients()) {
+          const Interval enclosure = enclosingInterval(c);
+          stored.enclosures.insert(stored.enclosures.end(), {enclosure.lower(), enclosure.upper()});
+          stored.exact += bytesOf(c);
+        }
+      }
       space_.functions.push_back(std::move(stored));
     }
     return found->second;
@@ -246,31 +318,45 @@ class AngleTable {
   std::shared_ptr<const AngleFunction> function(std::size_t index) {
     if (loaded_.empty()) loaded_.resize(space_.functions.size());
     std::shared_ptr<const AngleFunction>& function = loaded_.at(index);
-    if (!function) {
-      const saved::Function& stored = space_.functions[index];
-      const auto polynomial = [](const std::vector<std::string>& coefficients) {
-        std::vector<Rational> values;
-        for (const std::string& c : coefficients) values.push_back(rationalOf(c));
-        return RationalPolynomial(std::move(values));
-      };
-      std::optional<AngleFunction::RootKey> key;
-      if (!stored.key.empty()) {
-        if (stored.key.size() != 9) throw DamagedPart("a function's key");
-        key.emplace();
-        std::copy(stored.key.begin(), stored.key.end(), key->begin());
-      }
-      function = std::make_shared<const AngleFunction>(
-          std::array<RationalPolynomial, 2>{polynomial(stored.chart0), polynomial(stored.chart1)}, key);
-    }
+    if (!function) function = functionOf(space_.functions[index]);
     return function;
+  }
+
+  /// A stored function with its exact coefficients left undecoded (SavedPolynomials);
+  /// their bytes are moved out of `stored`.
+  std::shared_ptr<const AngleFunction> functionOf(saved::Function& stored) {
+    const std::size_t coefficients = stored.enclosures.size() / 2;
+    if (stored.enclosures.size() % 2 != 0 || stored.chart0Coefficients > coefficients) {
+      throw DamagedPart("a function's coefficients");
+    }
+    std::array<std::vector<Interval>, 2> enclosures;
+    for (std::size_t i = 0; i < coefficients; ++i) {
+      const double lower = finite(stored.enclosures[2 * i]), upper = finite(stored.enclosures[2 * i + 1]);
+      if (!(lower <= upper)) throw DamagedPart("a function's coefficients");
+      enclosures[i < stored.chart0Coefficients ? 0 : 1].emplace_back(lower, upper);
+    }
+    std::size_t written = 0;
+    for (std::size_t at = 0; at < stored.exact.size(); ++written) at = rationalEnd(stored.exact, at);
+    if (written != coefficients) throw DamagedPart("a function's coefficients");
+    std::optional<AngleFunction::RootKey> key;
+    if (!stored.key.empty()) {
+      if (stored.key.size() != 9) throw DamagedPart("a function's key");
+      key.emplace();
+      std::copy(stored.key.begin(), stored.key.end(), key->begin());
+    }
+    return std::make_shared<const AngleFunction>(
+        std::array<Polynomial<Interval>, 2>{Polynomial<Interval>(std::move(enclosures[0])),
+                                            Polynomial<Interval>(std::move(enclosures[1]))},
+        key, std::make_unique<SavedPolynomials>(file_, std::move(stored.exact), stored.chart0Coefficients));
   }
 
   AlgebraicAngle readAngle(const saved::Angle& stored) {
     const bool doubles = stored.lo.empty() && stored.hi.empty();
     if ((stored.chart != 0 && stored.chart != 1) || stored.index < -1 || !(stored.lower <= stored.upper) ||
-        (doubles && stored.function < 0)) {
+        (doubles && stored.function < 0 && (stored.lower != stored.upper || !(std::abs(stored.lower) <= 1)))) {
       throw DamagedPart("an angle");
     }
+    if (doubles && stored.function < 0) return AlgebraicAngle::rational(stored.chart, stored.lower);
     if (doubles) {
       return AlgebraicAngle(function(static_cast<std::size_t>(stored.function)), stored.chart, stored.lower,
                             stored.upper, stored.index);
@@ -299,6 +385,7 @@ class AngleTable {
   };
 
   saved::Space& space_;
+  std::shared_ptr<const std::string> file_;
   std::map<const AngleFunction*, std::size_t> indexOf_;
   std::map<AngleKey, std::uint32_t> indexOfAngle_;
   std::vector<std::shared_ptr<const AngleFunction>> loaded_;
@@ -371,8 +458,8 @@ PatchGeometry patchOf(const saved::Patch& stored, AngleTable& angles) {
                          static_cast<std::uint32_t>(stored.contact[2]), stored.contact[3]};
   patch.patch.range = angles.set(stored.range);
   for (int k = 0; k < 2; ++k) {
-    patch.segment.ends[k] = {stored.segment[4 * k] != 0, stored.segment[4 * k + 1],
-                             {stored.segment[4 * k + 2], stored.segment[4 * k + 3]}};
+    patch.segment.ends[k] = {
+        stored.segment[4 * k] != 0, stored.segment[4 * k + 1], {stored.segment[4 * k + 2], stored.segment[4 * k + 3]}};
   }
   patch.line.kind = static_cast<ContactKind>(stored.lineTags[0]);
   patch.line.side = stored.lineTags[1];
@@ -394,7 +481,8 @@ saved::Gluing savedGluing(const SubFaceGluing& gluing, AngleTable& angles) {
     stored.glues.insert(stored.glues.end(), {glue.first.patch, glue.first.face, glue.second.patch, glue.second.face,
                                              static_cast<std::uint32_t>(glue.edge), angles.add(glue.at)});
   }
-  for (const SubFaceId& face : gluing.unmatched) stored.unmatched.insert(stored.unmatched.end(), {face.patch, face.face});
+  for (const SubFaceId& face : gluing.unmatched)
+    stored.unmatched.insert(stored.unmatched.end(), {face.patch, face.face});
   return stored;
 }
 
@@ -422,11 +510,13 @@ saved::Graph savedGraph(const CellGraph::Parts& graph, AngleTable& angles) {
   saved::Graph stored;
   for (const AlgebraicAngle& angle : graph.criticalAngles) stored.criticalAngles.push_back(angles.add(angle));
   for (const CellGraphNode& node : graph.nodes) {
-    stored.nodes.insert(stored.nodes.end(), {node.cell, node.firstInterval, node.lastInterval, angles.add(node.sample)});
+    stored.nodes.insert(stored.nodes.end(),
+                        {node.cell, node.firstInterval, node.lastInterval, angles.add(node.sample)});
     stored.nodeGeometry.insert(stored.nodeGeometry.end(), {node.point[0], node.point[1]});
     stored.nodeGeometry.insert(stored.nodeGeometry.end(), node.box.begin(), node.box.end());
   }
-  for (const CellGraphEdge& edge : graph.edges) stored.edges.insert(stored.edges.end(), {edge.from, edge.to, edge.angle});
+  for (const CellGraphEdge& edge : graph.edges)
+    stored.edges.insert(stored.edges.end(), {edge.from, edge.to, edge.angle});
   for (const auto& runs : graph.runsOfPiece) {
     stored.runCounts.push_back(static_cast<std::uint32_t>(runs.size()));
     appendRuns(stored.runs, runs);
@@ -447,7 +537,8 @@ CellGraph::Parts graphOf(const saved::Graph& stored, AngleTable& angles) {
   CellGraph::Parts graph;
   for (std::uint32_t angle : stored.criticalAngles) graph.criticalAngles.push_back(angles.angle(angle));
   const std::size_t nodes = stored.nodes.size() / 4;
-  if (stored.nodes.size() != 4 * nodes || stored.nodeGeometry.size() != 6 * nodes) throw DamagedPart("the graph's nodes");
+  if (stored.nodes.size() != 4 * nodes || stored.nodeGeometry.size() != 6 * nodes)
+    throw DamagedPart("the graph's nodes");
   for (std::size_t i = 0; i < nodes; ++i) {
     CellGraphNode node;
     node.cell = stored.nodes[4 * i];
@@ -488,21 +579,22 @@ saved::Space savedSpace(const PerturbedMeshes& meshes, const Arrangement& arrang
     saved::Curve stored{curve.first, curve.second, angles.add(curve.angles), {}};
     for (const auto& ends : curve.ends) {
       for (const CurveEnd& end : ends) {
-        stored.ends.insert(stored.ends.end(), {end.endOnOtherLine[0][0], end.endOnOtherLine[0][1],
-                                               end.endOnOtherLine[1][0], end.endOnOtherLine[1][1], end.rangeEnd[0],
-                                               end.rangeEnd[1]});
+        stored.ends.insert(stored.ends.end(),
+                           {end.endOnOtherLine[0][0], end.endOnOtherLine[0][1], end.endOnOtherLine[1][0],
+                            end.endOnOtherLine[1][1], end.rangeEnd[0], end.rangeEnd[1]});
       }
     }
     space.curves.push_back(std::move(stored));
   }
   for (const PatchOverlap& overlap : arrangement.overlaps) {
-    space.overlaps.push_back({{overlap.patches[0], overlap.patches[1]},
-                              angles.add(overlap.angle),
-                              {overlap.reachesEnd[0][0], overlap.reachesEnd[0][1], overlap.reachesEnd[1][0],
-                               overlap.reachesEnd[1][1]}});
+    space.overlaps.push_back(
+        {{overlap.patches[0], overlap.patches[1]},
+         angles.add(overlap.angle),
+         {overlap.reachesEnd[0][0], overlap.reachesEnd[0][1], overlap.reachesEnd[1][0], overlap.reachesEnd[1][1]}});
   }
   for (const PatchVertex& vertex : arrangement.vertices) {
-    space.vertices.push_back({{vertex.patches.begin(), vertex.patches.end()}, angles.add(vertex.angle), vertex.crossing});
+    space.vertices.push_back(
+        {{vertex.patches.begin(), vertex.patches.end()}, angles.add(vertex.angle), vertex.crossing});
   }
   for (const PatchSubdivision& subdivision : arrangement.subdivisions) {
     saved::Subdivision stored{{}, subdivision.faceCount};
@@ -566,8 +658,8 @@ std::string readPayload(const std::string& path) {
   if (header.rfind(kHeader, 0) != 0) throw InputError(path, "not a saved free space (no '" + kHeader + "' header)");
   const std::string version = header.substr(kHeader.size());
   if (version != std::to_string(kFormatVersion)) {
-    throw InputError(path, "saved free space of format " + version + "; this build reads format " +
-                               std::to_string(kFormatVersion));
+    throw InputError(
+        path, "saved free space of format " + version + "; this build reads format " + std::to_string(kFormatVersion));
   }
   const std::optional<std::uint64_t> size = readLittleEndian(in, 8);
   const std::optional<std::uint64_t> crc = readLittleEndian(in, 4);
@@ -658,7 +750,7 @@ void FreeSpace::save(const std::string& path, bool overwrite) const {
   });
 }
 
-std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
+std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path, LoadCheck check) {
   saved::Space space;
   try {
     const std::string payload = readPayload(path);  // freed once decoded
@@ -678,7 +770,7 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
   }
   auto impl = std::make_unique<Impl>();
   try {
-    AngleTable angles(space);
+    AngleTable angles(space, std::make_shared<const std::string>(path));
     impl->meshes.robot = meshOf(space.robot, path);
     impl->meshes.world = meshOf(space.world, path);
     impl->meshes.record = {space.perturbed, space.seed, space.relativeSize, space.absoluteSize};
@@ -713,9 +805,8 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
     }
     for (const saved::Vertex& stored : space.vertices) {
       if (stored.patches.size() != 3) throw DamagedPart("a vertex");
-      arrangement.vertices.push_back({{stored.patches[0], stored.patches[1], stored.patches[2]},
-                                      angles.angle(stored.angle),
-                                      stored.crossing});
+      arrangement.vertices.push_back(
+          {{stored.patches[0], stored.patches[1], stored.patches[2]}, angles.angle(stored.angle), stored.crossing});
     }
     for (const saved::Subdivision& stored : space.subdivisions) {
       PatchSubdivision subdivision;
@@ -753,6 +844,7 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path) {
     } catch (const std::invalid_argument& part) {
       throw DamagedPart(part.what());
     }
+    if (check == LoadCheck::Everything) angles.decodeEveryFunction();
   } catch (const InputError&) {
     throw;
   } catch (const std::bad_alloc&) {

@@ -3,7 +3,8 @@
 // A built free space as plain data for Boost.Serialization (free_space_file.cpp):
 // rationals as bytes (sign, numerator, denominator), algebraic angles as indices into a
 // table of angles (each distinct angle once, by its double enclosure where that
-// isolates it) whose functions are stored by their exact polynomials.
+// isolates it, a rational angle by its t where that is a double) whose functions are
+// stored by the double enclosures of their exact coefficients and those coefficients.
 
 #include <cstdint>
 #include <string>
@@ -14,13 +15,17 @@
 
 namespace freespace::saved {
 
+/// A function by the double enclosures of its exact coefficients and, decoded only
+/// when first needed, the exact coefficients themselves.
 struct Function {
   std::vector<std::uint32_t> key;  // empty: no key
-  std::vector<std::string> chart0, chart1;
+  std::uint32_t chart0Coefficients = 0;
+  std::vector<double> enclosures;  // lower, upper per coefficient: chart 0's, then chart 1's
+  std::string exact;               // the coefficients as rationals one after another, in the same order
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & key & chart0 & chart1;
+    archive & key & chart0Coefficients & enclosures & exact;
   }
 };
 
@@ -28,8 +33,8 @@ struct Angle {
   std::int32_t function = -1;  // -1: a rational angle
   std::int32_t chart = 0;
   /// The root's double enclosure, which isolates it; an exact isolating interval
-  /// (lo, hi) only when it is narrower than the doubles can say (else both empty),
-  /// and a rational angle's t in lo.
+  /// (lo, hi) only when it is narrower than the doubles can say (else both empty).
+  /// A rational angle's t in lower and upper when it is a double, else in lo.
   double lower = 0, upper = 0;
   std::string lo, hi;
   std::int32_t index = -1;

@@ -76,9 +76,21 @@ class AngleFunction {
   AngleFunction(const Formula& formula, std::optional<RootKey> key, std::array<Polynomial<Interval>, 2> approximate)
       : approximate_(std::move(approximate)), evaluator_(std::make_unique<EvaluatorOf<Formula>>(formula)), key_(key) {}
 
-  /// The function with the given exact polynomials of its two charts (as read back
-  /// from a saved free space); its double interval coefficients enclose them.
-  AngleFunction(std::array<RationalPolynomial, 2> exact, std::optional<RootKey> key);
+  /// Where a function read back (from a saved free space) gets its exact
+  /// polynomials: asked only when a predicate first needs them, which most functions
+  /// never do (docs/design.md section 6, saving and loading).
+  class ExactSource {
+   public:
+    virtual ~ExactSource() = default;
+    /// The chart's exact polynomial, whose coefficients must lie in `enclosure`'s;
+    /// a source that cannot give it so throws.
+    virtual RationalPolynomial polynomial(int chart, const Polynomial<Interval>& enclosure) const = 0;
+  };
+
+  /// A function read back: double interval coefficients as narrow as doubles allow
+  /// (so they are its tight ones too) and the source of its exact polynomials.
+  AngleFunction(std::array<Polynomial<Interval>, 2> enclosures, std::optional<RootKey> key,
+                std::unique_ptr<const ExactSource> exact);
 
   const Polynomial<Interval>& approximate(int chart) const { return approximate_[chart]; }
   const Polynomial<Interval>& tight(int chart) const;
@@ -126,10 +138,11 @@ class AngleFunction {
     RationalPolynomial exact(int chart) const override { return formula(NumberType<Rational>{}, chart); }
     Formula formula;
   };
-  struct ExactEvaluator;
 
   std::array<Polynomial<Interval>, 2> approximate_;
+  /// One of the two: the formula of a function made from one, the source of one read back.
   std::unique_ptr<const Evaluator> evaluator_;
+  std::unique_ptr<const ExactSource> source_;
   std::optional<RootKey> key_;
   /// The coefficients past double intervals, and the roots found with them, made on
   /// first use: most functions never need them, and kept apart they leave a function

@@ -86,10 +86,19 @@ class FreeSpace {
   /// inside: for machines of one architecture).
   /// Refuses (InputError) to replace an existing file unless `overwrite`.
   void save(const std::string& path, bool overwrite = false) const;
+  /// How much of a saved free space `load` checks before it returns.
+  enum class LoadCheck {
+    /// Everything but the functions' exact coefficients, which are decoded and checked
+    /// when a query first needs them (most never are): a file altered behind a valid
+    /// checksum can then be refused by that query (InputError naming the file).
+    Structure,
+    /// Everything, the exact coefficients too (slower).
+    Everything,
+  };
   /// Reads a saved free space back, without rebuilding; its statistics are empty. A
   /// file that is not one, of another format version, damaged or inconsistent is an
   /// InputError naming it.
-  static std::unique_ptr<FreeSpace> load(const std::string& path);
+  static std::unique_ptr<FreeSpace> load(const std::string& path, LoadCheck check = LoadCheck::Structure);
 
   /// From the arrangement alone, exactly: the first sub-face a ray at the
   /// configuration's angle meets (toward -x, or +x when that ray passes exactly
