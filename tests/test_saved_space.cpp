@@ -161,7 +161,7 @@ TEST(SavedSpace, BadFilesAreClearErrors) {
   std::string version = bytes;
   version.replace(bytes.find('\n') - 1, 1, "9");
   write(other, version);
-  EXPECT_NE(loadError(other).find("format 9; this build reads format 6"), std::string::npos);
+  EXPECT_NE(loadError(other).find("format 9; this build reads format 7"), std::string::npos);
   write(other, bytes.substr(0, bytes.size() / 2));
   EXPECT_NE(loadError(other).find("damaged"), std::string::npos);
   std::string altered = bytes;

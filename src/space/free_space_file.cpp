@@ -116,7 +116,7 @@ namespace freespace {
 namespace {
 
 const std::string kHeader = "freespace saved free space, format ";
-constexpr int kFormatVersion = 6;
+constexpr int kFormatVersion = 7;
 
 // Rationals as bytes: a sign byte (0 or 1), then the numerator's magnitude and the
 // denominator, each as a 4-byte length (least significant byte first) and its bytes

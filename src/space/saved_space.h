@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include <boost/serialization/level.hpp>
 #include <boost/serialization/string.hpp>
+#include <boost/serialization/tracking.hpp>
 #include <boost/serialization/vector.hpp>
 
 namespace freespace::saved {
@@ -189,3 +191,23 @@ struct Space {
 };
 
 }  // namespace freespace::saved
+
+// Plain records: no class information or object tracking in the archive (Boost would
+// otherwise look each record's type up by name as it reads it).
+#define FREESPACE_SAVED_RECORD(T)                                                 \
+  BOOST_CLASS_IMPLEMENTATION(freespace::saved::T, boost::serialization::object_serializable) \
+  BOOST_CLASS_TRACKING(freespace::saved::T, boost::serialization::track_never)
+FREESPACE_SAVED_RECORD(Function)
+FREESPACE_SAVED_RECORD(Angle)
+FREESPACE_SAVED_RECORD(AngleSet)
+FREESPACE_SAVED_RECORD(Mesh)
+FREESPACE_SAVED_RECORD(Patch)
+FREESPACE_SAVED_RECORD(Curve)
+FREESPACE_SAVED_RECORD(Overlap)
+FREESPACE_SAVED_RECORD(Vertex)
+FREESPACE_SAVED_RECORD(Slab)
+FREESPACE_SAVED_RECORD(Subdivision)
+FREESPACE_SAVED_RECORD(Gluing)
+FREESPACE_SAVED_RECORD(Graph)
+FREESPACE_SAVED_RECORD(Space)
+#undef FREESPACE_SAVED_RECORD
