@@ -5,6 +5,7 @@
 #include <queue>
 
 #include "freespace/numbers/angle_reduction.h"
+#include "freespace/space/motion_checker.h"
 
 namespace freespace {
 
@@ -83,7 +84,7 @@ std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std
   box.low = low;
   box.high = high;
   const Pose2 centre = ClearanceBoxes::centre(box);
-  const Clearance clearance = space_.clearance(centre);
+  const Clearance clearance = space_.clearance(centre, MotionChecker::kClearanceWidth);
   // The farthest a configuration of the box is from its centre in |dxy| + r |dtheta|,
   // rounded up (with room for the centre's rounding and for the sliver between the
   // doubles nearest -pi and pi).

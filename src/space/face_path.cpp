@@ -189,4 +189,21 @@ std::optional<std::vector<std::array<double, 2>>> pathInFace(const SliceFace& fa
   return FaceTriangulation(face, {from, to}).path(from, to);
 }
 
+BoundaryPoint nearestOnBoundary(const SliceFace& face, const std::array<double, 2>& point) {
+  BoundaryPoint nearest;
+  for (const SliceLoop& loop : face.loops) {
+    for (std::size_t k = 0; k < loop.corners.size(); ++k) {
+      const std::array<double, 2>& a = loop.corners[k];
+      const std::array<double, 2>& b = loop.corners[(k + 1) % loop.corners.size()];
+      const double ex = b[0] - a[0], ey = b[1] - a[1], length2 = ex * ex + ey * ey;
+      const double along = length2 > 0 ? ((point[0] - a[0]) * ex + (point[1] - a[1]) * ey) / length2 : 0;
+      const double t = std::clamp(along, 0.0, 1.0);
+      const std::array<double, 2> foot{a[0] + t * ex, a[1] + t * ey};
+      const double distance = std::hypot(point[0] - foot[0], point[1] - foot[1]);
+      if (distance < nearest.distance) nearest = {distance, foot};
+    }
+  }
+  return nearest;
+}
+
 }  // namespace freespace

@@ -43,7 +43,7 @@ Clearance checkedEnd(const FreeSpace& space, const Pose2& pose, const std::strin
   if (options.volumeLow && !Domain{*options.volumeLow, *options.volumeHigh}.holds(pose)) {
     throw InputError(name, poseText(pose) + " lies outside the volume");
   }
-  const Clearance clearance = space.clearance(pose);
+  const Clearance clearance = space.clearance(pose, MotionChecker::kClearanceWidth);
   if (!clearance.location.free) {
     std::ostringstream text;
     text << "the robot at " << poseText(pose) << " touches or overlaps the environment (clearance " << clearance.upper
@@ -93,7 +93,7 @@ Climb climbFrom(const FreeSpace& space, const MotionChecker& checker, const Pose
   for (double step = clearance.lower / 2; step < 1e3 * clearance.lower; step *= 2) {
     const Pose2 at{from.x - step * clearance.direction[0], from.y - step * clearance.direction[1], from.theta};
     if (!domain.holds(at)) break;
-    const Clearance there = space.clearance(at);
+    const Clearance there = space.clearance(at, MotionChecker::kClearanceWidth);
     if (!there.location.free || there.lower <= bestClearance) break;
     best = step;
     bestClearance = there.lower;
@@ -260,8 +260,8 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   const Climb arrive = climbFrom(space, checker, goal, goalClearance, domain);
   const Pose2 passageStart{leave.to.x, leave.to.y, reducedAngle(leave.to.theta)};
   const Pose2 passageEnd{arrive.to.x, arrive.to.y, reducedAngle(arrive.to.theta)};
-  const double passageStartUpper = space.clearance(passageStart).upper;
-  const double passageEndUpper = space.clearance(passageEnd).upper;
+  const double passageStartUpper = space.clearance(passageStart, MotionChecker::kClearanceWidth).upper;
+  const double passageEndUpper = space.clearance(passageEnd, MotionChecker::kClearanceWidth).upper;
 
   // The first path: along the cell graph's route.
   const Clock::time_point deadline =

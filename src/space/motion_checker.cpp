@@ -49,7 +49,7 @@ void MotionChecker::certify(const Pose2& from, const Pose2& to, Certain certain,
                             std::size_t queryLimit, MotionCheck& result) const {
   const auto clearanceAt = [&](double t) {
     ++result.clearanceQueries;
-    const Clearance clearance = space_.clearance(interpolate(from, to, t));
+    const Clearance clearance = space_.clearance(interpolate(from, to, t), kClearanceWidth);
     return clearance.location.free ? clearance.lower : 0.0;
   };
   // The motion's length in |dxy| + r |dtheta|, with room for the rounding of the

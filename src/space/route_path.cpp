@@ -27,6 +27,8 @@ constexpr double kLeastTravelShare = 1e-4;
 constexpr std::size_t kTurnQueryLimit = 4096;
 /// At most this many slices kept for reuse.
 constexpr std::size_t kSlicesKept = 256;
+/// The relative width of the clearances the walk estimates and certifies with.
+constexpr double kWidth = MotionChecker::kClearanceWidth;
 
 class RouteWalker {
  public:
@@ -92,19 +94,26 @@ class RouteWalker {
     return std::nullopt;
   }
 
+  /// The clearance of a configuration inside the face at the face's angle, estimated
+  /// from the face's loops (nearestOnBoundary; in the input's units).
+  double estimatedClearance(const SliceFace& face, const Pose2& pose) const {
+    return nearestOnBoundary(face, scaled(pose)).distance / scale_;
+  }
+
   /// Translations at the current angle to `target` (construction coordinates) inside
-  /// the face's triangulation; with `keeping` (> 0), only when each keeps that much
-  /// clearance (certified, with few clearances each).
-  bool translateTo(const FaceTriangulation& triangulation, const std::array<double, 2>& target, double keeping = 0) {
+  /// the face (the current angle's) by its triangulation; with `keeping` (> 0), only
+  /// when each keeps that much clearance (certified, with few clearances each).
+  bool translateTo(const SliceFace& face, const FaceTriangulation& triangulation, const std::array<double, 2>& target,
+                   double keeping = 0) {
     const std::optional<std::vector<std::array<double, 2>>> path = triangulation.path(scaled(current()), target);
     if (!path) return false;
     const double theta = current().theta;
     std::vector<Pose2> poses{current()};
-    double fromClearance = space_.clearance(current()).lower;
+    double fromClearance = estimatedClearance(face, current());
     for (std::size_t k = 1; k < path->size(); ++k) {
       const Pose2 to{(*path)[k][0] / scale_, (*path)[k][1] / scale_, theta};
-      const double toClearance = space_.clearance(to).lower;
-      appendRoomier(poses.back(), fromClearance, to, toClearance, 0, poses);
+      const double toClearance = estimatedClearance(face, to);
+      appendRoomier(face, poses.back(), fromClearance, to, toClearance, 0, poses);
       fromClearance = toClearance;
     }
     for (std::size_t k = 1; keeping > 0 && k < poses.size(); ++k) {
@@ -120,24 +129,27 @@ class RouteWalker {
   /// of seven points, pushed as far as the ends' smaller clearance asks, while that
   /// leaves it roomier and in `from`'s node; up to four times per leg (a retraction
   /// towards the medial axis). The ends' clearances are given (each point's is
-  /// computed once).
-  void appendRoomier(const Pose2& from, double fromClearance, const Pose2& to, double toClearance, int depth,
-                     std::vector<Pose2>& poses) const {
+  /// estimated once, from the face's loops).
+  void appendRoomier(const SliceFace& face, const Pose2& from, double fromClearance, const Pose2& to,
+                     double toClearance, int depth, std::vector<Pose2>& poses) const {
     const double wanted = std::min(fromClearance, toClearance);
-    std::optional<std::pair<Pose2, Clearance>> tightest;
+    std::optional<std::pair<Pose2, BoundaryPoint>> tightest;
     for (int k = 1; depth < 4 && k < 8; ++k) {
       const Pose2 at{from.x + (to.x - from.x) * k / 8, from.y + (to.y - from.y) * k / 8, from.theta};
-      Clearance clearance = space_.clearance(at);
-      if (!tightest || clearance.lower < tightest->second.lower) tightest = {at, std::move(clearance)};
+      const BoundaryPoint nearest = nearestOnBoundary(face, scaled(at));
+      if (!tightest || nearest.distance < tightest->second.distance) tightest = {at, nearest};
     }
-    if (tightest && tightest->second.lower > 0 && tightest->second.lower < 0.9 * wanted) {
-      const auto& [at, here] = *tightest;
-      const double push = wanted - here.lower;
-      const Pose2 pushed{at.x - here.direction[0] * push, at.y - here.direction[1] * push, from.theta};
-      const double pushedClearance = space_.clearance(pushed).lower;
-      if (pushedClearance > here.lower && space_.nodeOf(pushed) == space_.nodeOf(from)) {
-        appendRoomier(from, fromClearance, pushed, pushedClearance, depth + 1, poses);
-        appendRoomier(pushed, pushedClearance, to, toClearance, depth + 1, poses);
+    if (tightest && tightest->second.distance > 0 && tightest->second.distance / scale_ < 0.9 * wanted) {
+      const auto& [at, contact] = *tightest;
+      const std::array<double, 2> point = scaled(at);
+      const double push = wanted * scale_ - contact.distance;
+      const double away[2] = {(point[0] - contact.point[0]) / contact.distance,
+                              (point[1] - contact.point[1]) / contact.distance};
+      const Pose2 pushed{(point[0] + away[0] * push) / scale_, (point[1] + away[1] * push) / scale_, from.theta};
+      const double pushedClearance = estimatedClearance(face, pushed);
+      if (pushedClearance * scale_ > contact.distance && space_.nodeOf(pushed) == space_.nodeOf(from)) {
+        appendRoomier(face, from, fromClearance, pushed, pushedClearance, depth + 1, poses);
+        appendRoomier(face, pushed, pushedClearance, to, toClearance, depth + 1, poses);
         return;
       }
     }
@@ -153,17 +165,17 @@ class RouteWalker {
     const std::optional<SliceFace> face = faceAt(node, current().theta);
     if (!face || face->loops.empty()) return;
     const FaceTriangulation triangulation(*face, {scaled(current())});
-    const double theta = current().theta, here = space_.clearance(current()).lower;
+    const double here = space_.clearance(current(), kWidth).lower;
     const auto clearanceAt = [&](const std::array<double, 2>& point) {
-      return space_.clearance({point[0] / scale_, point[1] / scale_, theta}).lower;
+      return nearestOnBoundary(*face, point).distance / scale_;
     };
     const std::vector<std::array<double, 2>> roomy = triangulation.roomyPoints();
     if (here > 0 && !roomy.empty() && clearanceAt(roomy.front()) > 4 * here &&
-        translateTo(triangulation, roomy.front(), 0.5 * here)) {
+        translateTo(*face, triangulation, roomy.front(), 0.5 * here)) {
       return;
     }
     const std::optional<std::array<double, 2>> middle = triangulation.incentreAt(scaled(current()));
-    if (middle && clearanceAt(*middle) > here) translateTo(triangulation, *middle);
+    if (middle && clearanceAt(*middle) > here) translateTo(*face, triangulation, *middle);
   }
 
   /// Whether an interval lies in the node's run of intervals.
@@ -193,7 +205,7 @@ class RouteWalker {
       if (++steps_ > kMostSteps || std::chrono::steady_clock::now() > deadline_) return false;
       const double remaining = turnInside(graphNode, theta);
       if (remaining == 0) return true;
-      const double clearance = space_.clearance(current()).lower;
+      const double clearance = space_.clearance(current(), kWidth).lower;
       if (!(clearance > 0)) return false;
       const double step = 0.5 * clearance / checker_.reach();
       if (step >= std::fabs(remaining)) {
@@ -252,9 +264,7 @@ class RouteWalker {
         face->loops.empty() ? std::optional<std::vector<std::array<double, 2>>>({here, point})
                             : FaceTriangulation(*face, {here, point}).path(here, point);
     if (!way) return std::nullopt;
-    const auto clearanceAt = [&](double x, double y) {
-      return space_.clearance({x / scale_, y / scale_, theta}).lower;
-    };
+    const auto clearanceAt = [&](double x, double y) { return nearestOnBoundary(*face, {x, y}).distance / scale_; };
     double least = clearanceAt((*way)[0][0], (*way)[0][1]);
     for (std::size_t k = 1; k < way->size(); ++k) {
       const std::array<double, 2>&a = (*way)[k - 1], &b = (*way)[k];
@@ -296,7 +306,7 @@ class RouteWalker {
       waypoints_.push_back({point[0] / scale_, point[1] / scale_, current().theta});
       return true;
     }
-    return translateTo(FaceTriangulation(*face, {scaled(current()), point}), point);
+    return translateTo(*face, FaceTriangulation(*face, {scaled(current()), point}), point);
   }
 
   /// An angle of the node's run near critical angle `index`, before it or after it:
@@ -394,7 +404,8 @@ class RouteWalker {
       if (std::chrono::steady_clock::now() > deadline_) return false;
       const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
       if (space_.nodeOf(turned) != next || space_.nodeOf(there) != node) continue;
-      usable.push_back({std::min(space_.clearance(there).lower, space_.clearance(turned).lower), point});
+      usable.push_back(
+          {std::min(space_.clearance(there, kWidth).lower, space_.clearance(turned, kWidth).lower), point});
     }
     std::stable_sort(usable.begin(), usable.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     // First only where the way there keeps a share of the crossing's clearance (a far

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -48,5 +49,18 @@ class FaceTriangulation {
 /// joins them. The face's corners are rounded: certify the motions (MotionChecker).
 std::optional<std::vector<std::array<double, 2>>> pathInFace(const SliceFace& face, const std::array<double, 2>& from,
                                                              const std::array<double, 2>& to);
+
+/// A point of a face's boundary and its distance from a point.
+struct BoundaryPoint {
+  double distance = HUGE_VAL;
+  std::array<double, 2> point{};
+};
+
+/// The point of a face's loops nearest to `point`, in doubles. The loops are the
+/// slice's boundary at the face's angle, so for a point inside the face this is its
+/// clearance there (in the construction's units) up to the corners' rounding: an
+/// estimate, much cheaper than FreeSpace::clearance, to choose by. At infinity for a
+/// face without loops.
+BoundaryPoint nearestOnBoundary(const SliceFace& face, const std::array<double, 2>& point);
 
 }  // namespace freespace

@@ -112,8 +112,9 @@ class FreeSpace {
 
   /// The clearance of a configuration, from the nearest point of the free space's
   /// boundary in its slice (pieces of sub-faces that bound free cells), certified to
-  /// about 1e-13 relative (exact arithmetic where double intervals are wider).
-  Clearance clearance(const Pose2& pose) const;
+  /// `relativeWidth` (exact arithmetic where double intervals are wider; they rarely
+  /// are wider than 1e-11).
+  Clearance clearance(const Pose2& pose, double relativeWidth = 1e-13) const;
 
   /// The free cell graph (docs/design.md section 7), built on first use (announced
   /// and cancellable as the construction was), in the construction's coordinates

@@ -31,6 +31,11 @@ class MotionChecker {
  public:
   explicit MotionChecker(const FreeSpace& space);
 
+  /// The relative width of the clearances that certify motions and paths: certified
+  /// bounds need not be as narrow as FreeSpace::clearance's default, and double
+  /// intervals give this without exact arithmetic (about half the time per clearance).
+  static constexpr double kClearanceWidth = 1e-9;
+
   /// The configuration a fraction t of the way from `from` to `to`.
   static Pose2 interpolate(const Pose2& from, const Pose2& to, double t);
   /// Theta's change along the shorter arc, as OMPL's SO(2) space interpolates (half a
