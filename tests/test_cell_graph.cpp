@@ -12,8 +12,8 @@
 
 #include "freespace/problem/planar_problem.h"
 #include "freespace/scenes/scene_generator.h"
-#include "freespace/topology/slice_faces.h"
 #include "freespace/space/free_space.h"
+#include "freespace/topology/slice_faces.h"
 #include "geometry/disjoint_sets.h"
 #include "random_configurations.h"
 #include "temp_dir.h"
@@ -60,7 +60,8 @@ TEST_P(BundledCellGraph, StartAndGoalNodesAreJoinedExactlyWhenSolvable) {
   const LoadedProblem loaded = problem();
   const FreeSpace space(loaded.robot, loaded.world);
   const CellGraph& graph = space.cellGraph();
-  const std::optional<std::uint32_t> start = space.nodeOf(loaded.problem.start), goal = space.nodeOf(loaded.problem.goal);
+  const std::optional<std::uint32_t> start = space.nodeOf(loaded.problem.start),
+                                     goal = space.nodeOf(loaded.problem.goal);
   ASSERT_TRUE(start && goal);
   const std::optional<std::vector<std::uint32_t>> route = graph.route(*start, *goal);
   EXPECT_EQ(route.has_value(), makeScene(GetParam()).expectSolvable);
@@ -198,14 +199,14 @@ TEST_P(BundledCellGraph, SliceFacesHoldTheirConfigurations) {
   const CellGraph& graph = space.cellGraph();
   const double scale = space.meshes().scale;
   RandomConfigurations random(space, 99);
+  const SliceFaces sliceFaces(space.arrangement(), graph, [&](SubFaceId face) { return space.cellOfSubFace(face); });
   int checked = 0;
   for (int slice = 0; slice < 6; ++slice) {
     const double theta = random.next().theta;
     const AlgebraicAngle angle = AlgebraicAngle::rational(HalfAngle::fromRadians(theta));
     std::vector<SliceFace> faces;
     try {
-      faces = sliceFaces(space.arrangement(), graph, [&](SubFaceId face) { return space.cellOfSubFace(face); }, angle,
-                         space.algebra());
+      faces = sliceFaces.at(angle, space.algebra());
     } catch (const std::invalid_argument&) {
       continue;  // a critical angle
     }

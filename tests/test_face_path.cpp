@@ -29,14 +29,14 @@ TEST_P(BundledFacePaths, EveryMotionIsCertifiedFree) {
   const MotionChecker checker(space);
   const double scale = space.meshes().scale;
   RandomConfigurations random(space, 5);
+  const SliceFaces sliceFaces(space.arrangement(), space.cellGraph(),
+                              [&](SubFaceId face) { return space.cellOfSubFace(face); });
   int paths = 0, motions = 0, uncertified = 0, estimates = 0, misestimated = 0;
   for (int slice = 0; slice < 4; ++slice) {
     const double theta = random.next().theta;
     std::vector<SliceFace> faces;
     try {
-      faces = sliceFaces(
-          space.arrangement(), space.cellGraph(), [&](SubFaceId face) { return space.cellOfSubFace(face); },
-          AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space.algebra());
+      faces = sliceFaces.at(AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space.algebra());
     } catch (const std::invalid_argument&) {
       continue;  // a critical angle
     }

@@ -35,6 +35,7 @@ class RouteWalker {
   RouteWalker(const FreeSpace& space, std::chrono::steady_clock::time_point deadline, const Cancellation& cancellation)
       : space_(space),
         graph_(space.cellGraph()),
+        sliceFaces_(space.arrangement(), graph_, [&space](SubFaceId face) { return space.cellOfSubFace(face); }),
         checker_(space),
         scale_(space.meshes().scale),
         deadline_(deadline),
@@ -78,9 +79,7 @@ class RouteWalker {
       if (slices_.size() >= kSlicesKept) slices_.clear();
       std::optional<std::vector<SliceFace>> faces;
       try {
-        faces = sliceFaces(
-            space_.arrangement(), graph_, [&](SubFaceId face) { return space_.cellOfSubFace(face); },
-            AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space_.algebra());
+        faces = sliceFaces_.at(AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space_.algebra());
       } catch (const std::invalid_argument&) {
         // A critical angle: no faces.
       }
@@ -443,6 +442,7 @@ class RouteWalker {
 
   const FreeSpace& space_;
   const CellGraph& graph_;
+  const SliceFaces sliceFaces_;
   const MotionChecker checker_;
   const double scale_;
   const std::chrono::steady_clock::time_point deadline_;

@@ -23,7 +23,7 @@ IntervalLoops piecesAt(const Arrangement& arrangement, const CellGraph& graph, c
     if (!algebra.contains(arrangement.patches[patch].patch.range, angle)) continue;
     const PatchSubdivision& subdivision = arrangement.subdivisions[patch];
     const PatchSlab* slab = slabAt(subdivision, angle, algebra);
-    if (!slab) throw std::invalid_argument("sliceFaces: the angle is critical");
+    if (!slab) throw std::invalid_argument("SliceFaces: the angle is critical");
     const auto slabIndex = static_cast<std::uint32_t>(slab - subdivision.slabs.data());
     bool free = false;
     for (std::uint32_t gap = 0; gap < slab->faces.size(); ++gap) {
@@ -62,7 +62,7 @@ std::vector<std::size_t> walkLoop(const cellgraph::PieceNeighbours& neighbours, 
     entry[at] = enteredBy;
     loop.push_back(at);
     const std::optional<std::size_t> next = neighbours.neighbour(loops, at, 1 - enteredBy);
-    if (!next) throw std::logic_error("sliceFaces: a loop does not close");
+    if (!next) throw std::logic_error("SliceFaces: a loop does not close");
     enteredBy = neighbours.neighbour(loops, *next, 0) == at ? 0 : 1;
     at = *next;
   }
@@ -71,12 +71,20 @@ std::vector<std::size_t> walkLoop(const cellgraph::PieceNeighbours& neighbours, 
 
 }  // namespace
 
-std::vector<SliceFace> sliceFaces(const Arrangement& arrangement, const CellGraph& graph,
-                                  const CellGraph::CellOfFace& cellOf, const AlgebraicAngle& rationalAngle,
-                                  AngleAlgebra& algebra) {
-  const IntervalLoops loops = piecesAt(arrangement, graph, cellOf, rationalAngle, algebra);
+SliceFaces::SliceFaces(const Arrangement& arrangement, const CellGraph& graph, CellGraph::CellOfFace cellOf)
+    : arrangement_(arrangement),
+      graph_(graph),
+      cellOf_(std::move(cellOf)),
+      neighbours_(std::make_unique<cellgraph::PieceNeighbours>(arrangement, graph)) {}
+
+SliceFaces::~SliceFaces() = default;
+
+std::vector<SliceFace> SliceFaces::at(const AlgebraicAngle& rationalAngle, AngleAlgebra& algebra) const {
+  const Arrangement& arrangement = arrangement_;
+  const CellGraph& graph = graph_;
+  const cellgraph::PieceNeighbours& neighbours = *neighbours_;
+  const IntervalLoops loops = piecesAt(arrangement, graph, cellOf_, rationalAngle, algebra);
   const std::uint32_t interval = graph.intervalOf(rationalAngle, algebra);
-  const cellgraph::PieceNeighbours neighbours(arrangement, graph);
   const slices::IntervalSlice slice = *slices::IntervalSlice::at(rationalAngle);
   std::map<std::uint32_t, SliceFace> faces;
   if (const std::optional<std::uint32_t> node = graph.unboundedNode(interval)) {
@@ -88,7 +96,7 @@ std::vector<SliceFace> sliceFaces(const Arrangement& arrangement, const CellGrap
     if (seen[first]) continue;
     const std::vector<std::size_t> members = walkLoop(neighbours, loops, first, seen, entry);
     const std::optional<std::uint32_t> node = graph.nodeOfPiece(loops.pieceIndices[first], interval);
-    if (!node) throw std::logic_error("sliceFaces: a free piece has no node");
+    if (!node) throw std::logic_error("SliceFaces: a free piece has no node");
     SliceLoop loop;
     for (std::size_t member : members)
       loop.corners.push_back(endsOf(arrangement, slice, loops.pieces[member])[entry[member]]);

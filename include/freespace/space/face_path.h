@@ -10,7 +10,7 @@
 
 namespace freespace {
 
-/// The constrained Delaunay triangulation of a face of a slice (sliceFaces): its
+/// The constrained Delaunay triangulation of a face of a slice (SliceFaces): its
 /// loops are the constraints (CGAL, exact constructions), inside a box around them and
 /// the points given; a triangle belongs to the face when the number of constraints
 /// crossed to reach it from outside is 1 (0 for an unbounded face). In the face's (the
@@ -41,7 +41,7 @@ class FaceTriangulation {
   std::unique_ptr<Impl> impl_;
 };
 
-/// A path of straight translations inside one face of a slice (sliceFaces), from
+/// A path of straight translations inside one face of a slice (SliceFaces), from
 /// `from` to `to`: through the constrained Delaunay triangulation of the face's loops,
 /// from triangle to triangle across edges that are not on its boundary, by the middles
 /// of the edges crossed. Points are in the face's (the construction's) coordinates.

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -28,12 +29,29 @@ struct SliceFace {
   std::vector<SliceLoop> loops;
 };
 
-/// The faces of the slice at a rational angle that is not critical (CellGraph): the
-/// free pieces there joined into loops (slice_loops' PieceNeighbours), each loop
-/// given the node the graph keeps for its pieces. Throws std::invalid_argument for a
-/// critical angle.
-std::vector<SliceFace> sliceFaces(const Arrangement& arrangement, const CellGraph& graph,
-                                  const CellGraph::CellOfFace& cellOf, const AlgebraicAngle& rationalAngle,
-                                  AngleAlgebra& algebra);
+namespace cellgraph {
+class PieceNeighbours;
+}
+
+/// The faces of the free space's slices: the free pieces at an angle joined into
+/// loops (slice_loops' PieceNeighbours, made once for every slice asked for), each
+/// loop given the node the graph keeps for its pieces.
+class SliceFaces {
+ public:
+  SliceFaces(const Arrangement& arrangement, const CellGraph& graph, CellGraph::CellOfFace cellOf);
+  ~SliceFaces();
+  SliceFaces(const SliceFaces&) = delete;
+  SliceFaces& operator=(const SliceFaces&) = delete;
+
+  /// The faces of the slice at a rational angle that is not critical (CellGraph).
+  /// Throws std::invalid_argument for a critical angle.
+  std::vector<SliceFace> at(const AlgebraicAngle& rationalAngle, AngleAlgebra& algebra) const;
+
+ private:
+  const Arrangement& arrangement_;
+  const CellGraph& graph_;
+  CellGraph::CellOfFace cellOf_;
+  std::unique_ptr<const cellgraph::PieceNeighbours> neighbours_;
+};
 
 }  // namespace freespace
