@@ -1,7 +1,7 @@
 #include "freespace/space/face_path.h"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 
 #include <algorithm>
@@ -13,13 +13,13 @@ namespace freespace {
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 /// Each triangle keeps how many of the face's loops lie around it (-1: not yet known).
 using FaceBase =
     CGAL::Constrained_triangulation_face_base_2<Kernel, CGAL::Triangulation_face_base_with_info_2<int, Kernel>>;
 using Triangulation = CGAL::Constrained_Delaunay_triangulation_2<
     Kernel, CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_2<Kernel>, FaceBase>,
-    CGAL::Exact_intersections_tag>;
+    CGAL::Exact_predicates_tag>;
 using Face = Triangulation::Face_handle;
 
 Kernel::Point_2 pointOf(const std::array<double, 2>& p) { return {p[0], p[1]}; }

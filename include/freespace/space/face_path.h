@@ -11,7 +11,8 @@
 namespace freespace {
 
 /// The constrained Delaunay triangulation of a face of a slice (SliceFaces): its
-/// loops are the constraints (CGAL, exact constructions), inside a box around them and
+/// loops are the constraints (CGAL, exact predicates, inexact constructions: its paths
+/// are certified afterwards), inside a box around them and
 /// the points given; a triangle belongs to the face when the number of constraints
 /// crossed to reach it from outside is 1 (0 for an unbounded face). In the face's (the
 /// construction's) coordinates.
