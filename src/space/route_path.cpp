@@ -159,22 +159,23 @@ class RouteWalker {
   /// face's widest triangle when that has more than four times the clearance and the
   /// way there keeps half the current clearance (where the robot must turn around, the
   /// room to do so may lie across the face), otherwise the middle of the triangle
-  /// holding the current point (a short move).
-  void recentre(std::uint32_t node) {
+  /// holding the current point (a short move). Returns the clearance where it leaves
+  /// the robot, estimated from the face's loops (none when the point lies outside it).
+  std::optional<double> recentre(std::uint32_t node) {
     const std::optional<SliceFace> face = faceAt(node, current().theta);
-    if (!face || face->loops.empty()) return;
+    if (!face || face->loops.empty()) return std::nullopt;
     const FaceTriangulation triangulation(*face, {scaled(current())});
-    const double here = space_.clearance(current(), kWidth).lower;
+    const std::optional<std::array<double, 2>> middle = triangulation.incentreAt(scaled(current()));
+    if (!middle) return std::nullopt;  // outside the face
+    const double here = estimatedClearance(*face, current());
     const auto clearanceAt = [&](const std::array<double, 2>& point) {
       return nearestOnBoundary(*face, point).distance / scale_;
     };
     const std::vector<std::array<double, 2>> roomy = triangulation.roomyPoints();
-    if (here > 0 && !roomy.empty() && clearanceAt(roomy.front()) > 4 * here &&
-        translateTo(*face, triangulation, roomy.front(), 0.5 * here)) {
-      return;
-    }
-    const std::optional<std::array<double, 2>> middle = triangulation.incentreAt(scaled(current()));
-    if (middle && clearanceAt(*middle) > here) translateTo(*face, triangulation, *middle);
+    const bool moved = (here > 0 && !roomy.empty() && clearanceAt(roomy.front()) > 4 * here &&
+                        translateTo(*face, triangulation, roomy.front(), 0.5 * here)) ||
+                       (clearanceAt(*middle) > here && translateTo(*face, triangulation, *middle));
+    return moved ? estimatedClearance(*face, current()) : here;
   }
 
   /// Whether an interval lies in the node's run of intervals.
@@ -199,12 +200,13 @@ class RouteWalker {
   /// allowance, moving to the middle of the face's triangle after each.
   bool turnTo(std::uint32_t node, double theta) {
     const CellGraphNode& graphNode = graph_.nodes()[node];
+    std::optional<double> estimate;  // the current point's clearance, as the last recentring left it
     for (;;) {
       cancellation_.check();
       if (++steps_ > kMostSteps || std::chrono::steady_clock::now() > deadline_) return false;
       const double remaining = turnInside(graphNode, theta);
       if (remaining == 0) return true;
-      const double clearance = space_.clearance(current(), kWidth).lower;
+      const double clearance = estimate ? *estimate : space_.clearance(current(), kWidth).lower;
       if (!(clearance > 0)) return false;
       const double step = 0.5 * clearance / checker_.reach();
       if (step >= std::fabs(remaining)) {
@@ -212,7 +214,7 @@ class RouteWalker {
         return true;
       }
       waypoints_.push_back({current().x, current().y, reducedAngle(current().theta + std::copysign(step, remaining))});
-      recentre(node);
+      estimate = recentre(node);
     }
   }
 
@@ -389,7 +391,8 @@ class RouteWalker {
     // together (each lies inside or outside each face; where the faces overlap only a
     // little, the faces' own triangles may all miss the overlap).
     std::vector<std::array<double, 2>> candidates{scaled(current())};
-    if (const std::optional<SliceFace> nextFace = faceAt(next, entry)) {
+    const std::optional<SliceFace> nextFace = faceAt(next, entry);
+    if (nextFace) {
       SliceFace both = *face;
       both.loops.insert(both.loops.end(), nextFace->loops.begin(), nextFace->loops.end());
       const std::vector<std::array<double, 2>> roomy = FaceTriangulation(both).roomyPoints(true);
@@ -403,8 +406,9 @@ class RouteWalker {
       if (std::chrono::steady_clock::now() > deadline_) return false;
       const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
       if (space_.nodeOf(turned) != next || space_.nodeOf(there) != node) continue;
-      usable.push_back(
-          {std::min(space_.clearance(there, kWidth).lower, space_.clearance(turned, kWidth).lower), point});
+      const double turnedClearance =
+          nextFace ? estimatedClearance(*nextFace, turned) : space_.clearance(turned, kWidth).lower;
+      usable.push_back({std::min(estimatedClearance(*face, there), turnedClearance), point});
     }
     std::stable_sort(usable.begin(), usable.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     // First only where the way there keeps a share of the crossing's clearance (a far
