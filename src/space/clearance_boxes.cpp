@@ -29,15 +29,6 @@ std::size_t intervalOf(const std::vector<double>& edges, double value) {
 
 bool closedOverlap(double lowA, double highA, double lowB, double highB) { return lowA <= highB && lowB <= highA; }
 
-/// The distance in (x, y) from a point to an anchor's configuration or segment.
-double distanceToAnchor(const ClearanceAnchor& anchor, double x, double y) {
-  const double ax = anchor.at[0], ay = anchor.at[1];
-  if (!anchor.to) return std::hypot(x - ax, y - ay);
-  const double ex = (*anchor.to)[0] - ax, ey = (*anchor.to)[1] - ay, length2 = ex * ex + ey * ey;
-  const double t = length2 > 0 ? std::clamp(((x - ax) * ex + (y - ay) * ey) / length2, 0.0, 1.0) : 0.0;
-  return std::hypot(x - (ax + t * ex), y - (ay + t * ey));
-}
-
 }  // namespace
 
 ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 2>& low,
@@ -108,18 +99,14 @@ std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std
   box.upper = upper + across;
   if (clearance.location.free) box.centreCell = clearance.location.cell;
   if (std::isfinite(upper)) {
-    box.own.push_back({{centre.x, centre.y, centre.theta}, upper, reach_, std::nullopt});
+    box.own.push_back({{centre.x, centre.y, centre.theta}, upper, reach_});
     if (clearance.contact) {
       // The contact reached: clearance 0 but for the rounding of its position.
       const double rounding = (clearance.upper - clearance.lower) +
                               1e-12 * (1 + std::fabs(upper) + std::fabs(centre.x) + std::fabs(centre.y));
       box.own.push_back({{clearance.nearest[0], clearance.nearest[1], centre.theta},
                          rounding,
-                         std::min(reach_, contactLever(clearance) * (1 + 1e-9) + rounding),
-                         std::nullopt});
-      const auto& [a, b] = clearance.contactSegment;
-      box.own.push_back(
-          {{a[0], a[1], centre.theta}, rounding, std::min(reach_, segmentLever(clearance) * (1 + 1e-9) + rounding), b});
+                         std::min(reach_, contactLever(clearance) * (1 + 1e-9) + rounding)});
     }
   }
   boxes_.push_back(std::move(box));
@@ -151,36 +138,10 @@ double ClearanceBoxes::contactLever(const Clearance& clearance) const {
   return std::max(fromAxis(vertices[0]), fromAxis(vertices[1]));
 }
 
-// The robot's points that can be in the contact: the vertex (VF), the robot
-// triangle's (FV: its vertices are the farthest of its points from the axis), the
-// edge's (EE).
-double ClearanceBoxes::segmentLever(const Clearance& clearance) const {
-  const PerturbedMeshes& meshes = space_.meshes();
-  const auto fromAxis = [&](std::uint32_t vertex) {
-    const Point3& p = meshes.robot.vertices()[vertex];
-    return std::hypot(p.x(), p.y()) / meshes.scale;
-  };
-  const std::array<std::uint32_t, 4>& vertices = clearance.contactVertices;
-  switch (clearance.contact->kind) {
-    case ContactKind::VertexFacet:
-      return fromAxis(vertices[0]);
-    case ContactKind::FacetVertex:
-      return std::max({fromAxis(vertices[1]), fromAxis(vertices[2]), fromAxis(vertices[3])});
-    case ContactKind::EdgeEdge:
-      break;
-  }
-  return std::max(fromAxis(vertices[0]), fromAxis(vertices[1]));
-}
-
 double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const {
-  // The farthest of the box's (x, y) from the anchor: at a corner, the distance to a
-  // point or a segment being convex.
-  double farthest = 0;
-  for (const double x : {box.low[0], box.high[0]}) {
-    for (const double y : {box.low[1], box.high[1]}) {
-      farthest = std::max(farthest, distanceToAnchor(anchor, x, y));
-    }
-  }
+  const auto farthest = [&](int axis) {
+    return std::max(std::fabs(anchor.at[axis] - box.low[axis]), std::fabs(anchor.at[axis] - box.high[axis]));
+  };
   // Along theta, the farthest point of the box's range from the anchor's angle round
   // the circle: half a turn when the range holds the opposite angle.
   const double opposite = std::remainder(anchor.at[2] + M_PI, 2 * M_PI);
@@ -189,8 +150,8 @@ double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const Clear
     turn = std::max(std::fabs(std::remainder(anchor.at[2] - box.low[2], 2 * M_PI)),
                     std::fabs(std::remainder(anchor.at[2] - box.high[2], 2 * M_PI)));
   }
-  return anchor.upper + farthest * (1 + 1e-12) + anchor.lever * (turn * (1 + 1e-12) + 1e-15) +
-         1e-13 * (1 + std::fabs(anchor.at[0]) + std::fabs(anchor.at[1]));
+  return anchor.upper + std::hypot(farthest(0), farthest(1)) * (1 + 1e-12) +
+         anchor.lever * (turn * (1 + 1e-12) + 1e-15) + 1e-13 * (1 + std::fabs(anchor.at[0]) + std::fabs(anchor.at[1]));
 }
 
 void ClearanceBoxes::bound(ClearanceBox& box, std::vector<ClearanceAnchor> candidates) const {

@@ -9,18 +9,14 @@
 
 namespace freespace {
 
-/// A configuration, or a segment of configurations at one angle, with a certified upper
-/// bound on their clearance: the clearance of any configuration is at most that plus
-/// its distance to the nearest of them in |dxy| + lever |dtheta| (the lever is the
-/// robot's reach r, or for a contact, how far from the robot's axis its points in the
-/// contact lie: turning moves them no faster). A segment: a contact's whole segment in
-/// the slice (Clearance::contactSegment), which bounds boxes along a wall however long.
+/// A configuration with a certified upper bound on its clearance: the clearance of any
+/// configuration is at most that plus its distance to it in |dxy| + lever |dtheta|
+/// (the lever is the robot's reach r, or for a contact, how far from the robot's
+/// axis its point in the contact lies: turning moves that point no faster).
 struct ClearanceAnchor {
   std::array<double, 3> at;
   double upper;
   double lever;
-  /// A segment's other end (at the angle at[2]); none for a single configuration.
-  std::optional<std::array<double, 2>> to;
 };
 
 /// A box of configurations [low, high] in (x, y, theta), with bounds on the clearance
@@ -103,9 +99,6 @@ class ClearanceBoxes {
   std::uint32_t addBox(const std::array<double, 3>& low, const std::array<double, 3>& high);
   /// The lever of the contact a clearance's witness reaches (see ClearanceAnchor).
   double contactLever(const Clearance& clearance) const;
-  /// The lever of the witness's whole contact segment: the farthest from the robot's
-  /// axis of the robot's points that can be in the contact.
-  double segmentLever(const Clearance& clearance) const;
   /// The bound an anchor gives on the clearance in a box.
   double upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
   /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.

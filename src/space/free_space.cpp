@@ -13,7 +13,6 @@
 #include "freespace/geometry/patch_candidates.h"
 #include "freespace/geometry/patch_segment.h"
 #include "freespace/input_error.h"
-#include "freespace/topology/slice_pieces.h"
 
 namespace freespace {
 
@@ -80,8 +79,9 @@ FreeSpace::Impl::Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptio
     finish();
     return classifyShells(arrangement, *rays, *collision, cancellation);
   });
-  cells =
-      clock.run("cells", [&] { return std::make_unique<FreeCells>(arrangement, *rays, sides, algebra, cancellation); });
+  cells = clock.run("cells", [&] {
+    return std::make_unique<FreeCells>(arrangement, *rays, sides, algebra, cancellation);
+  });
   stageTimes = clock.times();
 }
 
@@ -158,12 +158,6 @@ Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth) const {
   const PatchGeometry& patch = impl_->arrangement.patches[found->face.patch];
   result.contact = patch.patch.contact;
   result.contactVertices = patch.line.vertices;
-  const slices::IntervalSlice slice = *slices::IntervalSlice::at(at);
-  const RoundingScope rounding;
-  for (int k = 0; k < 2; ++k) {
-    const std::array<Interval, 2> end = slice.end(patch, k);
-    result.contactSegment[k] = {end[0].midpoint() / scale, end[1].midpoint() / scale};
-  }
   return result;
 }
 

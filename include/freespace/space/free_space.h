@@ -64,10 +64,6 @@ struct Clearance {
   std::array<std::uint32_t, 4> contactVertices{};
   std::array<double, 2> direction{};
   std::array<double, 2> nearest{};
-  /// The whole segment of the witness's contact in the slice (its ends rounded to
-  /// doubles): the robot placed anywhere on it at this angle touches the environment
-  /// through that contact, so its clearance there is at most 0.
-  std::array<std::array<double, 2>, 2> contactSegment{};
 };
 
 /// The largest resident memory of this process so far, in megabytes (for the
