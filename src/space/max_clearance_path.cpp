@@ -148,25 +148,32 @@ Passage chainPath(const ClearanceBoxes& boxes, const ClearanceBoxes::Chain& chai
 }
 
 /// The path along the cell graph's route (routePath), each motion certified free by
-/// the motion checker with the clearance bound that took (halving a motion that
-/// passes near a contact until its bound is near the true least clearance could take
-/// billions of parts); none when one is not, or not before `deadline`.
+/// the motion checker (unless routing certified it already) with the clearance bound
+/// that took (halving a motion that passes near a contact until its bound is near the
+/// true least clearance could take billions of parts); none when one is not, or not
+/// before `deadline`.
 std::optional<Passage> certifiedRoutePath(const FreeSpace& space, const MotionChecker& checker, const Pose2& from,
                                           const Pose2& to, Clock::time_point deadline, QueryRate& rate,
                                           const MaxClearancePathOptions& options) {
-  std::optional<std::vector<Pose2>> waypoints = routePath(space, from, to, deadline, options.cancellation);
-  if (!waypoints) return std::nullopt;
-  Passage passage{std::move(*waypoints), {}, HUGE_VAL};
+  std::optional<RoutedPath> routed = routePath(space, from, to, deadline, options.cancellation);
+  if (!routed) return std::nullopt;
+  Passage passage{std::move(routed->waypoints), {}, HUGE_VAL};
   for (std::size_t k = 0; k + 1 < passage.waypoints.size(); ++k) {
     options.cancellation.check();
     if (Clock::now() > deadline) return std::nullopt;
-    // As many clearances as the time left allows at the rate measured so far (a motion
-    // passing very near a contact takes many).
-    const double secondsLeft = std::chrono::duration<double>(deadline - Clock::now()).count();
-    const MotionCheck check = rate.check(checker, passage.waypoints[k], passage.waypoints[k + 1], 1, secondsLeft);
-    if (!check.free) return std::nullopt;
-    passage.motionClearance.push_back(check.minClearance);
-    passage.lower = std::min(passage.lower, check.minClearance);
+    double clearance;
+    if (routed->certified[k]) {
+      clearance = *routed->certified[k];
+    } else {
+      // As many clearances as the time left allows at the rate measured so far (a
+      // motion passing very near a contact takes many).
+      const double secondsLeft = std::chrono::duration<double>(deadline - Clock::now()).count();
+      const MotionCheck check = rate.check(checker, passage.waypoints[k], passage.waypoints[k + 1], 1, secondsLeft);
+      if (!check.free) return std::nullopt;
+      clearance = check.minClearance;
+    }
+    passage.motionClearance.push_back(clearance);
+    passage.lower = std::min(passage.lower, clearance);
   }
   return passage;
 }

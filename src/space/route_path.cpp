@@ -41,10 +41,11 @@ class RouteWalker {
         deadline_(deadline),
         cancellation_(cancellation) {}
 
-  std::optional<std::vector<Pose2>> walk(const Pose2& from, const Pose2& to) {
+  std::optional<RoutedPath> walk(const Pose2& from, const Pose2& to) {
     const std::optional<std::uint32_t> first = space_.nodeOf(from), last = space_.nodeOf(to);
     if (!first || !last) return std::nullopt;
     waypoints_ = {from};
+    certified_.clear();
     // Where a crossing fails, the route is planned again from the node reached,
     // without that edge.
     std::set<std::pair<std::uint32_t, std::uint32_t>> failed;
@@ -59,7 +60,7 @@ class RouteWalker {
       }
       if (at + 1 == route->size()) {
         if (!arriveAt(route->back(), to)) return std::nullopt;
-        return waypoints_;
+        return RoutedPath{waypoints_, certified_};
       }
       failed.insert(std::minmax((*route)[at], (*route)[at + 1]));
       node = (*route)[at];
@@ -69,6 +70,17 @@ class RouteWalker {
 
  private:
   const Pose2& current() const { return waypoints_.back(); }
+  /// Adds a waypoint, with the certified lower bound on the clearance of the motion to
+  /// it when that is known.
+  void append(const Pose2& pose, std::optional<double> certified = std::nullopt) {
+    waypoints_.push_back(pose);
+    certified_.push_back(certified);
+  }
+  /// Goes back to the first `count` waypoints.
+  void truncate(std::size_t count) {
+    waypoints_.resize(count);
+    certified_.resize(count - 1);
+  }
   std::array<double, 2> scaled(const Pose2& pose) const { return {pose.x * scale_, pose.y * scale_}; }
 
   /// The node's face in the slice at theta (none at a critical angle). Slices are kept
@@ -118,7 +130,7 @@ class RouteWalker {
     for (std::size_t k = 1; keeping > 0 && k < poses.size(); ++k) {
       if (!checker_.keepsClearance(poses[k - 1], poses[k], keeping, 64)) return false;
     }
-    waypoints_.insert(waypoints_.end(), poses.begin() + 1, poses.end());
+    for (std::size_t k = 1; k < poses.size(); ++k) append(poses[k]);
     return true;
   }
 
@@ -210,10 +222,10 @@ class RouteWalker {
       if (!(clearance > 0)) return false;
       const double step = 0.5 * clearance / checker_.reach();
       if (step >= std::fabs(remaining)) {
-        waypoints_.push_back({current().x, current().y, theta});
+        append({current().x, current().y, theta});
         return true;
       }
-      waypoints_.push_back({current().x, current().y, reducedAngle(current().theta + std::copysign(step, remaining))});
+      append({current().x, current().y, reducedAngle(current().theta + std::copysign(step, remaining))});
       estimate = recentre(node);
     }
   }
@@ -227,8 +239,9 @@ class RouteWalker {
     const Pose2 from = current();
     for (int k = 1; k <= steps; ++k) {
       const Pose2 next{from.x, from.y, k == steps ? theta : reducedAngle(from.theta + turn * k / steps)};
-      if (!checker_.check(current(), next, 1, kTurnQueryLimit).free) return false;
-      waypoints_.push_back(next);
+      const MotionCheck check = checker_.check(current(), next, 1, kTurnQueryLimit);
+      if (!check.free) return false;
+      append(next, check.minClearance);
     }
     return true;
   }
@@ -294,7 +307,7 @@ class RouteWalker {
     for (const auto& [estimate, theta] : ranked) {
       if (!(estimate > leastEstimate)) break;
       if (turnTo(node, theta) && translateInNode(node, point) && turnInPlace(node, arrival)) return true;
-      waypoints_.resize(mark);
+      truncate(mark);
     }
     return false;
   }
@@ -304,7 +317,7 @@ class RouteWalker {
     const std::optional<SliceFace> face = faceAt(node, current().theta);
     if (!face) return false;
     if (face->loops.empty()) {
-      waypoints_.push_back({point[0] / scale_, point[1] / scale_, current().theta});
+      append({point[0] / scale_, point[1] / scale_, current().theta});
       return true;
     }
     return translateTo(*face, FaceTriangulation(*face, {scaled(current()), point}), point);
@@ -414,16 +427,18 @@ class RouteWalker {
     // First only where the way there keeps a share of the crossing's clearance (a far
     // crossing point may be reached only through a face pinched to rounding), then
     // anywhere.
-    std::vector<std::optional<bool>> turnsFree(usable.size());
+    std::vector<std::optional<MotionCheck>> turns(usable.size());
     for (const double share : {kLeastTravelShare, 0.0}) {
       for (std::size_t k = 0; k < usable.size(); ++k) {
         if (std::chrono::steady_clock::now() > deadline_) return false;
         const auto& [clearance, point] = usable[k];
         const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
-        if (!turnsFree[k]) turnsFree[k] = checker_.check(there, turned).free;
-        if (!*turnsFree[k]) continue;
+        if (!turns[k]) turns[k] = checker_.check(there, turned);
+        if (!turns[k]->free) continue;
         if (point != candidates.front() && !travelTo(node, point, exit, share * clearance)) continue;
-        waypoints_.push_back(turned);
+        const Pose2& at = current();
+        const bool checkedHere = at.x == there.x && at.y == there.y && at.theta == there.theta;
+        append(turned, checkedHere ? std::optional<double>(turns[k]->minClearance) : std::nullopt);
         return true;
       }
     }
@@ -441,6 +456,7 @@ class RouteWalker {
     }
     if (!face || !travelTo(node, scaled(goal), theta)) return false;
     waypoints_.back() = goal;
+    if (!certified_.empty()) certified_.back() = std::nullopt;
     return true;
   }
 
@@ -452,15 +468,15 @@ class RouteWalker {
   const std::chrono::steady_clock::time_point deadline_;
   const Cancellation& cancellation_;
   std::vector<Pose2> waypoints_;
+  std::vector<std::optional<double>> certified_;  // per motion between waypoints
   int steps_ = 0;
   mutable std::map<double, std::optional<std::vector<SliceFace>>> slices_;  // by angle; none at a critical one
 };
 
 }  // namespace
 
-std::optional<std::vector<Pose2>> routePath(const FreeSpace& space, const Pose2& from, const Pose2& to,
-                                            std::chrono::steady_clock::time_point deadline,
-                                            const Cancellation& cancellation) {
+std::optional<RoutedPath> routePath(const FreeSpace& space, const Pose2& from, const Pose2& to,
+                                    std::chrono::steady_clock::time_point deadline, const Cancellation& cancellation) {
   return RouteWalker(space, deadline, cancellation).walk(from, to);
 }
 
