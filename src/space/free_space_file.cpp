@@ -205,12 +205,12 @@ class SavedPolynomials final : public AngleFunction::ExactSource {
       : file_(std::move(file)), bytes_(std::move(bytes)), chart0Coefficients_(chart0Coefficients) {}
 
   RationalPolynomial polynomial(int chart, const Polynomial<Interval>& enclosure) const override {
-    std::size_t at = 0;
-    if (chart == 1) {
-      for (std::uint32_t i = 0; i < chart0Coefficients_; ++i) at = rationalEnd(bytes_, at);
-    }
     std::vector<Rational> coefficients;
     try {
+      std::size_t at = 0;
+      if (chart == 1) {
+        for (std::uint32_t i = 0; i < chart0Coefficients_; ++i) at = rationalEnd(bytes_, at);
+      }
       for (const Interval& stored : enclosure.coefficients()) {
         coefficients.push_back(rationalAt(bytes_, at));
         const Interval exact = enclosingInterval(coefficients.back());

@@ -27,7 +27,7 @@ constexpr double kLeastTravelShare = 1e-4;
 constexpr std::size_t kTurnQueryLimit = 4096;
 /// At most this many slices kept for reuse.
 constexpr std::size_t kSlicesKept = 256;
-/// The relative width of the clearances the walk estimates and certifies with.
+/// The relative width of the certified clearances the walk asks for.
 constexpr double kWidth = MotionChecker::kClearanceWidth;
 
 class RouteWalker {
