@@ -351,3 +351,13 @@ TEST(SavedSpace, AnAlteredExactCoefficientIsRefusedWhenDecoded) {
     EXPECT_EQ(error.problem(), "inconsistent saved free space at a function's exact coefficients");
   }
 }
+
+// A sub-division's face count beyond the faces its slabs hold is refused before the
+// shells set memory aside for it (a fuzzer's input claimed hundreds of millions).
+TEST(SavedSpace, AFaceCountBeyondTheSlabsIsRefused) {
+  TempDir dir;
+  const std::string file = fileWithSpaceAltered(dir, savedBytes(dir), [](saved::Space& space) {
+    space.subdivisions.front().faceCount = 1u << 28;
+  });
+  EXPECT_EQ(loadError(file), "inconsistent saved free space at a subdivision's face count");
+}

@@ -698,6 +698,11 @@ void checkConsistency(const Arrangement& arrangement, const std::vector<ShellSid
   }
   for (std::uint32_t patch = 0; patch < patches; ++patch) {
     const PatchSubdivision& subdivision = arrangement.subdivisions[patch];
+    // Every sub-face lies in a slab: a larger count would have the shells set aside
+    // memory for sub-faces that are not there (found by fuzzing).
+    std::size_t slabFaces = 0;
+    for (const PatchSlab& slab : subdivision.slabs) slabFaces += slab.faces.size();
+    if (subdivision.faceCount > slabFaces) throw DamagedPart("a subdivision's face count");
     for (const PatchSlab& slab : subdivision.slabs) {
       if (slab.faces.size() != slab.curves.size() + 1) throw DamagedPart("a slab's faces");
       for (std::uint32_t curve : slab.curves) {
