@@ -105,10 +105,13 @@ class RouteWalker {
     return std::nullopt;
   }
 
-  /// The clearance of a configuration inside the face at the face's angle, estimated
-  /// from the face's loops (nearestOnBoundary; in the input's units).
+  /// The clearance of a point inside the face (construction coordinates) at the face's
+  /// angle, estimated from the face's loops (nearestOnBoundary; in the input's units).
+  double estimatedClearance(const SliceFace& face, const std::array<double, 2>& point) const {
+    return nearestOnBoundary(face, point).distance / scale_;
+  }
   double estimatedClearance(const SliceFace& face, const Pose2& pose) const {
-    return nearestOnBoundary(face, scaled(pose)).distance / scale_;
+    return estimatedClearance(face, scaled(pose));
   }
 
   /// Translations at the current angle to `target` (construction coordinates) inside
@@ -138,7 +141,7 @@ class RouteWalker {
   /// away from its contact where the leg is much tighter than at its ends (a leg
   /// cutting a corner between the middles of the triangulation's edges): its tightest
   /// of seven points, pushed as far as the ends' smaller clearance asks, while that
-  /// leaves it roomier and in `from`'s node; up to four times per leg (a retraction
+  /// leaves it roomier and in the face's node; up to four times per leg (a retraction
   /// towards the medial axis). The ends' clearances are given (each point's is
   /// estimated once, from the face's loops).
   void appendRoomier(const SliceFace& face, const Pose2& from, double fromClearance, const Pose2& to,
@@ -158,7 +161,7 @@ class RouteWalker {
                               (point[1] - contact.point[1]) / contact.distance};
       const Pose2 pushed{(point[0] + away[0] * push) / scale_, (point[1] + away[1] * push) / scale_, from.theta};
       const double pushedClearance = estimatedClearance(face, pushed);
-      if (pushedClearance * scale_ > contact.distance && space_.nodeOf(pushed) == space_.nodeOf(from)) {
+      if (pushedClearance * scale_ > contact.distance && space_.nodeOf(pushed) == face.node) {
         appendRoomier(face, from, fromClearance, pushed, pushedClearance, depth + 1, poses);
         appendRoomier(face, pushed, pushedClearance, to, toClearance, depth + 1, poses);
         return;
@@ -180,13 +183,10 @@ class RouteWalker {
     const std::optional<std::array<double, 2>> middle = triangulation.incentreAt(scaled(current()));
     if (!middle) return std::nullopt;  // outside the face
     const double here = estimatedClearance(*face, current());
-    const auto clearanceAt = [&](const std::array<double, 2>& point) {
-      return nearestOnBoundary(*face, point).distance / scale_;
-    };
     const std::vector<std::array<double, 2>> roomy = triangulation.roomyPoints();
-    const bool moved = (here > 0 && !roomy.empty() && clearanceAt(roomy.front()) > 4 * here &&
+    const bool moved = (here > 0 && !roomy.empty() && estimatedClearance(*face, roomy.front()) > 4 * here &&
                         translateTo(*face, triangulation, roomy.front(), 0.5 * here)) ||
-                       (clearanceAt(*middle) > here && translateTo(*face, triangulation, *middle));
+                       (estimatedClearance(*face, *middle) > here && translateTo(*face, triangulation, *middle));
     return moved ? estimatedClearance(*face, current()) : here;
   }
 
@@ -278,11 +278,11 @@ class RouteWalker {
         face->loops.empty() ? std::optional<std::vector<std::array<double, 2>>>({here, point})
                             : FaceTriangulation(*face, {here, point}).path(here, point);
     if (!way) return std::nullopt;
-    const auto clearanceAt = [&](double x, double y) { return nearestOnBoundary(*face, {x, y}).distance / scale_; };
-    double least = clearanceAt((*way)[0][0], (*way)[0][1]);
+    double least = estimatedClearance(*face, way->front());
     for (std::size_t k = 1; k < way->size(); ++k) {
       const std::array<double, 2>&a = (*way)[k - 1], &b = (*way)[k];
-      least = std::min({least, clearanceAt(b[0], b[1]), clearanceAt((a[0] + b[0]) / 2, (a[1] + b[1]) / 2)});
+      least = std::min({least, estimatedClearance(*face, b),
+                        estimatedClearance(*face, std::array<double, 2>{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2})});
     }
     return least;
   }

@@ -80,29 +80,26 @@ SliceFaces::SliceFaces(const Arrangement& arrangement, const CellGraph& graph, C
 SliceFaces::~SliceFaces() = default;
 
 std::vector<SliceFace> SliceFaces::at(const AlgebraicAngle& rationalAngle, AngleAlgebra& algebra) const {
-  const Arrangement& arrangement = arrangement_;
-  const CellGraph& graph = graph_;
-  const cellgraph::PieceNeighbours& neighbours = *neighbours_;
-  const IntervalLoops loops = piecesAt(arrangement, graph, cellOf_, rationalAngle, algebra);
-  const std::uint32_t interval = graph.intervalOf(rationalAngle, algebra);
+  const IntervalLoops loops = piecesAt(arrangement_, graph_, cellOf_, rationalAngle, algebra);
+  const std::uint32_t interval = graph_.intervalOf(rationalAngle, algebra);
   const slices::IntervalSlice slice = *slices::IntervalSlice::at(rationalAngle);
   std::map<std::uint32_t, SliceFace> faces;
-  if (const std::optional<std::uint32_t> node = graph.unboundedNode(interval)) {
+  if (const std::optional<std::uint32_t> node = graph_.unboundedNode(interval)) {
     faces[*node] = SliceFace{*node, 0, true, {}};
   }
   std::vector<char> seen(loops.pieces.size(), 0);
   std::vector<int> entry(loops.pieces.size(), 0);
   for (std::size_t first = 0; first < loops.pieces.size(); ++first) {
     if (seen[first]) continue;
-    const std::vector<std::size_t> members = walkLoop(neighbours, loops, first, seen, entry);
-    const std::optional<std::uint32_t> node = graph.nodeOfPiece(loops.pieceIndices[first], interval);
+    const std::vector<std::size_t> members = walkLoop(*neighbours_, loops, first, seen, entry);
+    const std::optional<std::uint32_t> node = graph_.nodeOfPiece(loops.pieceIndices[first], interval);
     if (!node) throw std::logic_error("SliceFaces: a free piece has no node");
     SliceLoop loop;
     for (std::size_t member : members)
-      loop.corners.push_back(endsOf(arrangement, slice, loops.pieces[member])[entry[member]]);
+      loop.corners.push_back(endsOf(arrangement_, slice, loops.pieces[member])[entry[member]]);
     SliceFace& face = faces[*node];
     face.node = *node;
-    face.cell = graph.nodes()[*node].cell;
+    face.cell = graph_.nodes()[*node].cell;
     face.loops.push_back(std::move(loop));
   }
   std::vector<SliceFace> result;
