@@ -10,6 +10,7 @@
 #include <string>
 #include <tuple>
 
+#include "bundled_problem.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/scenes/scene_generator.h"
 #include "freespace/space/free_space.h"
@@ -25,9 +26,7 @@ namespace {
 
 class BundledCellGraph : public ::testing::TestWithParam<std::string> {
  protected:
-  static LoadedProblem problem() {
-    return loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + GetParam() + ".cfg");
-  }
+  static LoadedProblem problem() { return loadBundledProblem(GetParam()); }
 };
 
 /// Components of the graph: the nodes of one cell form one component, and no edge

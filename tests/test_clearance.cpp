@@ -8,6 +8,7 @@
 #include <iostream>
 #include <string>
 
+#include "bundled_problem.h"
 #include "clearance_oracle.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/scenes/scene_generator.h"
@@ -21,12 +22,11 @@ namespace {
 class BundledClearance : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BundledClearance, AgreesWithTheExactCollisionTest) {
-  const LoadedProblem problem =
-      loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + GetParam() + ".cfg");
+  const LoadedProblem problem = loadBundledProblem(GetParam());
   const FreeSpace space(problem.robot, problem.world);
   const ClearanceCheck check = clearanceAgainstCollision(space, 40, 3);
-  std::cout << GetParam() << ": " << check.samples << " configurations, " << check.free
-            << " free, widest interval " << check.widestRelative << " relative\n";
+  std::cout << GetParam() << ": " << check.samples << " configurations, " << check.free << " free, widest interval "
+            << check.widestRelative << " relative\n";
   EXPECT_EQ(check.keepsStateTooClose, 0);
   EXPECT_EQ(check.noChangeWithin, 0);
   EXPECT_LT(check.widestRelative, 1e-12);

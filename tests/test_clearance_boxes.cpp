@@ -9,19 +9,20 @@
 #include <random>
 #include <string>
 
+#include "bundled_problem.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/space/motion_checker.h"
 #include "space/clearance_boxes.h"
 
 using namespace freespace;
+using freespace::testing::loadBundledProblem;
 
 namespace {
 
 class BundledClearanceBoxes : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
-  const LoadedProblem loaded =
-      loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + GetParam() + ".cfg");
+  const LoadedProblem loaded = loadBundledProblem(GetParam());
   const FreeSpace space(loaded.robot, loaded.world);
   const Eigen::AlignedBox2d volume = *loaded.problem.volume;
   ClearanceBoxes boxes(space, {volume.min().x(), volume.min().y()}, {volume.max().x(), volume.max().y()},

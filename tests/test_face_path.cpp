@@ -10,6 +10,7 @@
 #include <map>
 #include <string>
 
+#include "bundled_problem.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/space/face_path.h"
 #include "freespace/space/motion_checker.h"
@@ -23,8 +24,7 @@ namespace {
 class BundledFacePaths : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BundledFacePaths, EveryMotionIsCertifiedFree) {
-  const LoadedProblem loaded =
-      loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + GetParam() + ".cfg");
+  const LoadedProblem loaded = loadBundledProblem(GetParam());
   const FreeSpace space(loaded.robot, loaded.world);
   const MotionChecker checker(space);
   const double scale = space.meshes().scale;

@@ -17,6 +17,7 @@
 #include <thread>
 #include <vector>
 
+#include "bundled_problem.h"
 #include "freespace/geometry/mesh_topology.h"
 #include "freespace/geometry/patch_candidates.h"
 #include "freespace/input_error.h"
@@ -41,7 +42,7 @@ class BundledFreeSpace : public ::testing::TestWithParam<SceneCase> {};
 
 TEST_P(BundledFreeSpace, KnownTopologyAndAgreementWithTheExactCollisionTest) {
   const SceneCase& scene = GetParam();
-  const LoadedProblem problem = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + scene.name + ".cfg");
+  const LoadedProblem problem = loadBundledProblem(scene.name);
   const FreeSpace space(problem.robot, problem.world);
   // Topology: start and goal share a cell exactly when the scene was made solvable.
   const bool solvable = makeScene(scene.name).expectSolvable;
@@ -101,9 +102,9 @@ TEST(FreeSpace, BenchmarkRobotsAmongWallsOfSeveralHeights) {
 // The cage: inside and outside; flip_window: outside, and the bar's headings about 0
 // and about pi in the box. The other counts are not known independently.
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledFreeSpace,
-                         ::testing::Values(SceneCase{"cage", 2}, SceneCase{"keyhole", -1}, SceneCase{"keyhole_narrow", -1},
-                                           SceneCase{"keyhole_wide", -1}, SceneCase{"keyhole_tight", -1},
-                                           SceneCase{"flip_window", 3},
+                         ::testing::Values(SceneCase{"cage", 2}, SceneCase{"keyhole", -1},
+                                           SceneCase{"keyhole_narrow", -1}, SceneCase{"keyhole_wide", -1},
+                                           SceneCase{"keyhole_tight", -1}, SceneCase{"flip_window", 3},
                                            SceneCase{"turn_around", -1}, SceneCase{"table", -1},
                                            SceneCase{"table_tall", -1}, SceneCase{"overhang", -1},
                                            SceneCase{"room_door", -1}, SceneCase{"random_polyhedra", -1},
@@ -155,8 +156,7 @@ TEST(FreeSpaceConstruction, AnnouncesItsStagesAndStopsSoonAfterCancellation) {
   const std::vector<std::string> expectedStages{"perturb", "patches", "curves"};
   for (std::size_t last = 1; last < expectedStages.size(); ++last) {
     const CancelledBuild build = cancelDuring(scene, expectedStages[last], std::chrono::milliseconds(50));
-    std::cout << "cancelled 50 ms into " << expectedStages[last] << ": stopped after " << build.secondsToStop
-              << " s\n";
+    std::cout << "cancelled 50 ms into " << expectedStages[last] << ": stopped after " << build.secondsToStop << " s\n";
     EXPECT_TRUE(build.cancelled) << expectedStages[last];
     EXPECT_LT(build.secondsToStop, 1.0) << expectedStages[last];
     const std::vector<std::string> prefix(expectedStages.begin(), expectedStages.begin() + last + 1);
@@ -169,7 +169,7 @@ TEST(FreeSpaceConstruction, AnnouncesItsStagesAndStopsSoonAfterCancellation) {
 // before any patch is built, naming the scene and the estimate.
 TEST(FreeSpaceConstruction, PatchCandidatesBoundThePatchesAndAreWeighedAgainstTheMemoryLimit) {
   for (const char* name : {"cage", "keyhole", "maze", "table", "random_polyhedra"}) {
-    const LoadedProblem loaded = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + name + ".cfg");
+    const LoadedProblem loaded = loadBundledProblem(name);
     const FreeSpace space(loaded.robot, loaded.world);
     PredicateStatistics statistics;
     const MeshTopology robotTopology(space.meshes().robot, statistics), worldTopology(space.meshes().world, statistics);

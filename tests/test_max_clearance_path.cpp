@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 
+#include "bundled_problem.h"
 #include "freespace/collision/exact_collision_checker.h"
 #include "freespace/collision/fcl_collision_checker.h"
 #include "freespace/input_error.h"
@@ -18,6 +19,7 @@
 #include "freespace/space/motion_checker.h"
 
 using namespace freespace;
+using freespace::testing::loadBundledProblem;
 
 namespace {
 
@@ -29,7 +31,7 @@ struct Problem {
 
 Problem bundled(const std::string& name) {
   Problem problem;
-  problem.loaded = loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + name + ".cfg");
+  problem.loaded = loadBundledProblem(name);
   problem.space = std::make_unique<FreeSpace>(problem.loaded.robot, problem.loaded.world);
   const auto& volume = problem.loaded.problem.volume;
   problem.options.volumeLow = std::array<double, 2>{volume->min().x(), volume->min().y()};

@@ -10,12 +10,14 @@
 #include <random>
 #include <string>
 
+#include "bundled_problem.h"
 #include "freespace/collision/exact_collision_checker.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/scenes/scene_generator.h"
 #include "freespace/space/motion_checker.h"
 
 using namespace freespace;
+using freespace::testing::loadBundledProblem;
 
 namespace {
 
@@ -43,8 +45,7 @@ DenseCheck denseCollisions(const FreeSpace& space, const ExactCollisionChecker& 
 class BundledMotions : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(BundledMotions, CertifiedMotionsPassTheExactCollisionTest) {
-  const LoadedProblem problem =
-      loadProblem(std::string(FREESPACE_SOURCE_DIR) + "/benchmarks/problems/" + GetParam() + ".cfg");
+  const LoadedProblem problem = loadBundledProblem(GetParam());
   const FreeSpace space(problem.robot, problem.world);
   const ExactCollisionChecker collision(space.meshes().robot, space.meshes().world);
   const MotionChecker motions(space);
