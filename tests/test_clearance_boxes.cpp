@@ -1,6 +1,7 @@
 // The clearance bounds of ClearanceBoxes (docs/design.md section 7) against the exact
 // clearance at random configurations inside the boxes: no free configuration has more
-// clearance than its box's upper bound (anchors, with the contacts' levers in theta),
+// clearance than its box's upper bound (anchors, with the contacts' levers in theta,
+// and blocked centres' depths),
 // and a box with a positive lower bound holds only free configurations with at least
 // that much. Boxes of many sizes: random leaves are halved again
 // and again, so anchors pass from parents and neighbours to children.
@@ -33,7 +34,7 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
     if (!boxes.box(box).split) boxes.split(box);
   }
   std::uniform_real_distribution<double> unit(0, 1);
-  int free = 0, certified = 0;
+  int free = 0, certified = 0, freeBesideBlockedCentres = 0;
   for (int sample = 0; sample < 3000; ++sample) {
     const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random);
     const ClearanceBox& leaf = boxes.box(box);
@@ -44,6 +45,7 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
     const Clearance clearance = space.clearance(pose);
     if (clearance.location.free) {
       ++free;
+      if (!leaf.centreCell) ++freeBesideBlockedCentres;
       EXPECT_LE(clearance.lower, leaf.upper) << "box " << box << " at " << pose.x << " " << pose.y << " " << pose.theta;
     }
     if (leaf.lower > 0) {
@@ -56,6 +58,8 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
   }
   EXPECT_GT(free, 100);
   EXPECT_GT(certified, 10);
+  // Bounded by blocked centres too: their depth bounds the slice at their angle.
+  EXPECT_GT(freeBesideBlockedCentres, 10);
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, BundledClearanceBoxes,

@@ -91,15 +91,13 @@ std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std
   const double across = std::hypot(high[0] - low[0], high[1] - low[1]) / 2 * (1 + 1e-12) +
                         reach_ * ((high[2] - low[2]) / 2 * (1 + 1e-12) + 1e-15) +
                         1e-13 * (1 + std::fabs(centre.x) + std::fabs(centre.y));
-  // Within a slice the signed clearance is 1-Lipschitz, but across angles only its
-  // free side is r-Lipschitz (a pocket of free space may close as the robot turns):
-  // a blocked centre bounds the clearance nearby as a contact would, by 0.
-  const double upper = std::max(clearance.upper, 0.0);
   box.lower = clearance.lower - across;
-  box.upper = upper + across;
+  box.upper = HUGE_VAL;
   if (clearance.location.free) box.centreCell = clearance.location.cell;
+  const double upper = clearance.upper;
   if (std::isfinite(upper)) {
     box.own.push_back({{centre.x, centre.y, centre.theta}, upper, reach_});
+    box.upper = upperBoundFrom(box.own.back(), box);
     if (clearance.contact) {
       // The contact reached: clearance 0 but for the rounding of its position.
       const double rounding = (clearance.upper - clearance.lower) +
@@ -150,8 +148,12 @@ double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const Clear
     turn = std::max(std::fabs(std::remainder(anchor.at[2] - box.low[2], 2 * M_PI)),
                     std::fabs(std::remainder(anchor.at[2] - box.high[2], 2 * M_PI)));
   }
-  return anchor.upper + std::hypot(farthest(0), farthest(1)) * (1 + 1e-12) +
-         anchor.lever * (turn * (1 + 1e-12) + 1e-15) + 1e-13 * (1 + std::fabs(anchor.at[0]) + std::fabs(anchor.at[1]));
+  // A blocked anchor (upper < 0) bounds the slice at its angle by the signed
+  // clearance's Lipschitz bound, but only down to 0: across angles only the free side
+  // is Lipschitz (docs/design.md section 7).
+  const double inSlice = std::max(0.0, anchor.upper + std::hypot(farthest(0), farthest(1)) * (1 + 1e-12));
+  return inSlice + anchor.lever * (turn * (1 + 1e-12) + 1e-15) +
+         1e-13 * (1 + std::fabs(anchor.upper) + std::fabs(anchor.at[0]) + std::fabs(anchor.at[1]));
 }
 
 void ClearanceBoxes::bound(ClearanceBox& box, std::vector<ClearanceAnchor> candidates) const {

@@ -10,9 +10,10 @@
 namespace freespace {
 
 /// A configuration with a certified upper bound on its clearance: the clearance of any
-/// configuration is at most that plus its distance to it in |dxy| + lever |dtheta|
-/// (the lever is the robot's reach r, or for a contact, how far from the robot's
-/// axis its point in the contact lies: turning moves that point no faster).
+/// configuration is at most max(0, that + |dxy|) + lever |dtheta| (the lever is the
+/// robot's reach r, or for a contact, how far from the robot's axis its point in the
+/// contact lies: turning moves that point no faster; a negative bound, a blocked
+/// configuration's depth, bounds only its own slice: docs/design.md section 7).
 struct ClearanceAnchor {
   std::array<double, 3> at;
   double upper;

@@ -309,7 +309,7 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     // Boxes not certain at the ratio that some chain at the target's level passes
     // (reached from both ends at it): those that limit c_hi (reached at its level,
     // an upper bound near it), and those whose centre lies outside the cell (blocked,
-    // or another cell's): their upper bound is only their size, and chains of them
+    // or another cell's): their upper bound is about their size, and chains of them
     // along walls or around the cell's outside may be all that carries c_hi.
     std::vector<std::uint32_t> uncertain;
     for (std::uint32_t box = 0; box < boxes.size(); ++box) {
