@@ -123,8 +123,8 @@ INSTANTIATE_TEST_SUITE_P(Bundled, RoutedProblems,
 
 // Keyhole's bar (0.5 wide) passes a slot 0.75 wide, so no path keeps more than 0.125
 // (the bar centred in the slot, along it), and the best keeps that much: both bounds
-// must hold it. The routed path translates through the slot at the node's roomiest
-// angle, keeping at least half of it.
+// must hold it. The routed path, raised (pushed to the slot's middle), keeps 97% of
+// it (the route alone keeps 90%).
 TEST(MaxClearancePathQuality, KeyholesSlotLiesBetweenTheBounds) {
   Problem problem = bundled("keyhole");
   problem.options.secondsLimit = 2;
@@ -134,7 +134,7 @@ TEST(MaxClearancePathQuality, KeyholesSlotLiesBetweenTheBounds) {
   const double slot = (0.75 - 0.5) / 2, rounding = 1e-9;
   EXPECT_LE(path.passage.lower, slot + rounding);
   EXPECT_GE(path.passage.upper, slot - rounding);
-  EXPECT_GE(path.passage.lower, slot / 2);
+  EXPECT_GE(path.passage.lower, 0.97 * slot);
 }
 
 class InfeasibleProblems : public ::testing::TestWithParam<std::string> {};

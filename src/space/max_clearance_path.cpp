@@ -10,6 +10,8 @@
 #include "freespace/input_error.h"
 #include "freespace/numbers/angle_reduction.h"
 #include "freespace/space/motion_checker.h"
+#include "passage.h"
+#include "raised_passage.h"
 #include "route_path.h"
 
 namespace freespace {
@@ -17,6 +19,9 @@ namespace freespace {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+/// The share of a query's time the routed path's raising may take.
+constexpr double kRaisingShare = 0.4;
 
 std::string poseText(const Pose2& pose) {
   std::ostringstream text;
@@ -106,34 +111,6 @@ Climb climbFrom(const FreeSpace& space, const MotionChecker& checker, const Pose
   if (!checker.keepsClearance(from, to, kept, 4096)) return none;
   return {to, kept};
 }
-
-/// Clearance queries per second of motion checks, measured as they run (a guess of
-/// 5,000 until 200 have run), shared by the stages that budget motion checks by the
-/// time left.
-class QueryRate {
- public:
-  MotionCheck check(const MotionChecker& checker, const Pose2& from, const Pose2& to, double slack,
-                    double secondsLeft) {
-    const Clock::time_point began = Clock::now();
-    const auto limit = static_cast<std::size_t>(100 + std::max(0.0, secondsLeft) * perSecond());
-    const MotionCheck result = checker.check(from, to, slack, limit);
-    queries_ += static_cast<double>(result.clearanceQueries);
-    seconds_ += secondsSince(began);
-    return result;
-  }
-
- private:
-  double perSecond() const { return queries_ > 200 && seconds_ > 0 ? queries_ / seconds_ : 5000; }
-  double queries_ = 0, seconds_ = 0;
-};
-
-/// A path between the climbs' ends, each motion with a certified lower bound on its
-/// clearance, and the least of them.
-struct Passage {
-  std::vector<Pose2> waypoints;
-  std::vector<double> motionClearance;
-  double lower = HUGE_VAL;
-};
 
 /// The waypoints through a chain of boxes from `from` (in its first box) to `to` (in
 /// its last), through the middles of the common parts of consecutive boxes: each
@@ -280,6 +257,16 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   if (routed) {
     path.secondsToFirstPath = secondsSince(began);
     if (!routed->motionClearance.empty()) tightenBounds(checker, *routed, deadline, rate, options.cancellation);
+    // The route keeps to the middle of the faces' triangles, not of the passages:
+    // pushed to their middle, its least clearance rises (within a share of the time).
+    const Clock::time_point raisingDeadline =
+        std::min(deadline, Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                              std::chrono::duration<double>(kRaisingShare * options.secondsLimit)));
+    if (routed->motionClearance.size() > 0) {
+      std::optional<Passage> raised =
+          raisedPassage(space, checker, *routed, raisingDeadline, rate, options.cancellation);
+      if (raised && raised->lower > routed->lower) routed = std::move(raised);
+    }
   }
   const double routedLower = routed ? routed->lower : -HUGE_VAL;
 
