@@ -1,7 +1,9 @@
 #include "clearance_boxes.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <queue>
 
 #include "freespace/numbers/angle_reduction.h"
@@ -28,6 +30,27 @@ std::size_t intervalOf(const std::vector<double>& edges, double value) {
 }
 
 bool closedOverlap(double lowA, double highA, double lowB, double highB) { return lowA <= highB && lowB <= highA; }
+
+/// The distance from the robot's axis (at `at`) of the point where the placed robot
+/// edge robot0-robot1 crosses the environment's edge world0-world1 at a contact,
+/// rounded up by how far along the edge a placement wrong by `slack` may move it
+/// (the closest points of the two lines, each within `slack` of the true crossing
+/// plus their gap, so within that over the sine of their angle along the edge);
+/// none when the edges are nearly parallel or do not nearly cross.
+std::optional<double> crossingFromAxis(const Point3& robot0, const Point3& robot1, const Point3& world0,
+                                       const Point3& world1, const Point3& at, double slack) {
+  const Point3 alongRobot = robot1 - robot0, alongWorld = world1 - world0, between = robot0 - world0;
+  const double a = alongRobot.squaredNorm(), b = alongRobot.dot(alongWorld), e = alongWorld.squaredNorm();
+  const double c = alongRobot.dot(between), f = alongWorld.dot(between);
+  const double determinant = a * e - b * b;
+  const double sine = std::sqrt(std::max(0.0, determinant / (a * e)));
+  if (!(sine > 1e-6)) return std::nullopt;
+  const double s = (b * f - c * e) / determinant, t = (a * f - b * c) / determinant;
+  if (s < -1e-9 || s > 1 + 1e-9 || t < -1e-9 || t > 1 + 1e-9) return std::nullopt;
+  const Point3 onRobot = robot0 + s * alongRobot, onWorld = world0 + t * alongWorld;
+  const double gap = (onRobot - onWorld).norm();
+  return (onRobot - at).head<2>().norm() * (1 + 1e-12) + 4 * (slack + gap) / sine;
+}
 
 }  // namespace
 
@@ -104,7 +127,7 @@ std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std
                               1e-12 * (1 + std::fabs(upper) + std::fabs(centre.x) + std::fabs(centre.y));
       box.own.push_back({{clearance.nearest[0], clearance.nearest[1], centre.theta},
                          rounding,
-                         std::min(reach_, contactLever(clearance) * (1 + 1e-9) + rounding)});
+                         std::min(reach_, contactLever(clearance, centre.theta, rounding) * (1 + 1e-9) + rounding)});
     }
   }
   boxes_.push_back(std::move(box));
@@ -114,14 +137,13 @@ std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std
 // Turned about its axis at a fixed (x, y), the robot's point in the contact moves by
 // at most its distance from the axis times the angle; translating the robot back by
 // that much puts the point where the contact was, touching again. The point: the
-// robot's vertex (VF), the environment's vertex's place on the robot (FV), or, for a
-// robot edge (EE), its farther end.
-double ClearanceBoxes::contactLever(const Clearance& clearance) const {
+// robot's vertex (VF), the environment's vertex's place on the robot (FV), or where
+// the robot's edge crosses the environment's (EE; its farther end when the edges are
+// nearly parallel).
+double ClearanceBoxes::contactLever(const Clearance& clearance, double theta, double slack) const {
   const PerturbedMeshes& meshes = space_.meshes();
-  const auto fromAxis = [&](std::uint32_t vertex) {
-    const Point3& p = meshes.robot.vertices()[vertex];
-    return std::hypot(p.x(), p.y()) / meshes.scale;
-  };
+  const auto robotVertex = [&](std::uint32_t vertex) { return Point3(meshes.robot.vertices()[vertex] / meshes.scale); };
+  const auto fromAxis = [&](std::uint32_t vertex) { return robotVertex(vertex).head<2>().norm(); };
   const std::array<std::uint32_t, 4>& vertices = clearance.contactVertices;
   switch (clearance.contact->kind) {
     case ContactKind::VertexFacet:
@@ -133,7 +155,14 @@ double ClearanceBoxes::contactLever(const Clearance& clearance) const {
     case ContactKind::EdgeEdge:
       break;
   }
-  return std::max(fromAxis(vertices[0]), fromAxis(vertices[1]));
+  const double fartherEnd = std::max(fromAxis(vertices[0]), fromAxis(vertices[1]));
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Point3 at(clearance.nearest[0], clearance.nearest[1], 0);
+  const Point3 robot0 = turn * robotVertex(vertices[0]) + at, robot1 = turn * robotVertex(vertices[1]) + at;
+  const Point3 world0 = meshes.world.vertices()[vertices[2]] / meshes.scale;
+  const Point3 world1 = meshes.world.vertices()[vertices[3]] / meshes.scale;
+  const std::optional<double> crossing = crossingFromAxis(robot0, robot1, world0, world1, at, slack);
+  return crossing ? std::min(*crossing, fartherEnd) : fartherEnd;
 }
 
 double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const {

@@ -98,8 +98,9 @@ class ClearanceBoxes {
 
  private:
   std::uint32_t addBox(const std::array<double, 3>& low, const std::array<double, 3>& high);
-  /// The lever of the contact a clearance's witness reaches (see ClearanceAnchor).
-  double contactLever(const Clearance& clearance) const;
+  /// The lever of the contact a clearance's witness reaches at angle `theta` (see
+  /// ClearanceAnchor), its place `slack` from the true contact's at most.
+  double contactLever(const Clearance& clearance, double theta, double slack) const;
   /// The bound an anchor gives on the clearance in a box.
   double upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
   /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "freespace/numbers/angle_reduction.h"
 
@@ -33,6 +34,8 @@ struct PushedWaypoint {
   Pose2 pose;
   Clearance clearance;
   double step = 0, turnStep = 0;
+  /// The certified bound on the motion to the next waypoint, while neither moves.
+  std::optional<double> motionBound;
 };
 
 double metricLength(const Pose2& from, const Pose2& to, double reach) {
@@ -40,7 +43,7 @@ double metricLength(const Pose2& from, const Pose2& to, double reach) {
 }
 
 PushedWaypoint pushedWaypoint(const Pose2& pose, const Clearance& clearance, double reach) {
-  return {pose, clearance, 0.5 * clearance.lower, 0.5 * clearance.lower / reach};
+  return {pose, clearance, 0.5 * clearance.lower, 0.5 * clearance.lower / reach, std::nullopt};
 }
 
 /// Cuts each motion k into partsOf(k) equal parts, but never into more than
@@ -52,6 +55,7 @@ bool cutMotions(const FreeSpace& space, double reach, PartsOf partsOf, std::vect
   for (std::size_t k = 0; k + 1 < waypoints.size(); ++k) {
     const Pose2 &from = waypoints[k].pose, &to = waypoints[k + 1].pose;
     const int parts = partsOf(k);
+    if (parts > 1) cut.back().motionBound.reset();
     for (int part = 1; part < parts && waypoints.size() + cut.size() < kMostWaypoints; ++part) {
       const Pose2 pose = MotionChecker::interpolate(from, to, static_cast<double>(part) / parts);
       const Clearance clearance = space.clearance(pose, MotionChecker::kClearanceWidth);
@@ -134,26 +138,33 @@ bool relax(const FreeSpace& space, double reach, double spacing, std::vector<Pus
       if (waypoints[k].clearance.lower > kNearFloor * floor) continue;
       cancellation.check();
       if (Clock::now() > deadline) return false;
-      moved |= push(space, reach, waypoints[k - 1].pose, waypoints[k + 1].pose, waypoints[k]);
+      if (!push(space, reach, waypoints[k - 1].pose, waypoints[k + 1].pose, waypoints[k])) continue;
+      moved = true;
+      waypoints[k - 1].motionBound.reset();
+      waypoints[k].motionBound.reset();
     }
     if (!moved) break;
   }
   return true;
 }
 
-/// The waypoints' motions, each certified with a bound within 1% of its ends' clearance;
-/// none when one is not certified free (or not before `deadline`).
-std::optional<Passage> certified(const MotionChecker& checker, const std::vector<PushedWaypoint>& waypoints,
+/// The waypoints' motions, each certified with a bound within 1% of its ends' clearance
+/// (kept for the motions whose ends have not moved since); none when one is not
+/// certified free (or not before `deadline`).
+std::optional<Passage> certified(const MotionChecker& checker, std::vector<PushedWaypoint>& waypoints,
                                  Clock::time_point deadline, QueryRate& rate) {
   Passage passage;
   for (const PushedWaypoint& waypoint : waypoints) passage.waypoints.push_back(waypoint.pose);
   for (std::size_t k = 0; k + 1 < waypoints.size(); ++k) {
-    const double secondsLeft = std::chrono::duration<double>(deadline - Clock::now()).count();
-    if (secondsLeft <= 0) return std::nullopt;
-    const MotionCheck check = rate.check(checker, waypoints[k].pose, waypoints[k + 1].pose, 0.01, secondsLeft);
-    if (!check.free) return std::nullopt;
-    passage.motionClearance.push_back(check.minClearance);
-    passage.lower = std::min(passage.lower, check.minClearance);
+    if (!waypoints[k].motionBound) {
+      const double secondsLeft = std::chrono::duration<double>(deadline - Clock::now()).count();
+      if (secondsLeft <= 0) return std::nullopt;
+      const MotionCheck check = rate.check(checker, waypoints[k].pose, waypoints[k + 1].pose, 0.01, secondsLeft);
+      if (!check.free) return std::nullopt;
+      waypoints[k].motionBound = check.minClearance;
+    }
+    passage.motionClearance.push_back(*waypoints[k].motionBound);
+    passage.lower = std::min(passage.lower, *waypoints[k].motionBound);
   }
   return passage;
 }
