@@ -6,6 +6,7 @@
 #include <optional>
 #include <queue>
 
+#include "contact_point.h"
 #include "freespace/numbers/angle_reduction.h"
 #include "freespace/space/motion_checker.h"
 
@@ -30,27 +31,6 @@ std::size_t intervalOf(const std::vector<double>& edges, double value) {
 }
 
 bool closedOverlap(double lowA, double highA, double lowB, double highB) { return lowA <= highB && lowB <= highA; }
-
-/// The distance from the robot's axis (at `at`) of the point where the placed robot
-/// edge robot0-robot1 crosses the environment's edge world0-world1 at a contact,
-/// rounded up by how far along the edge a placement wrong by `slack` may move it
-/// (the closest points of the two lines, each within `slack` of the true crossing
-/// plus their gap, so within that over the sine of their angle along the edge);
-/// none when the edges are nearly parallel or do not nearly cross.
-std::optional<double> crossingFromAxis(const Point3& robot0, const Point3& robot1, const Point3& world0,
-                                       const Point3& world1, const Point3& at, double slack) {
-  const Point3 alongRobot = robot1 - robot0, alongWorld = world1 - world0, between = robot0 - world0;
-  const double a = alongRobot.squaredNorm(), b = alongRobot.dot(alongWorld), e = alongWorld.squaredNorm();
-  const double c = alongRobot.dot(between), f = alongWorld.dot(between);
-  const double determinant = a * e - b * b;
-  const double sine = std::sqrt(std::max(0.0, determinant / (a * e)));
-  if (!(sine > 1e-6)) return std::nullopt;
-  const double s = (b * f - c * e) / determinant, t = (a * f - b * c) / determinant;
-  if (s < -1e-9 || s > 1 + 1e-9 || t < -1e-9 || t > 1 + 1e-9) return std::nullopt;
-  const Point3 onRobot = robot0 + s * alongRobot, onWorld = world0 + t * alongWorld;
-  const double gap = (onRobot - onWorld).norm();
-  return (onRobot - at).head<2>().norm() * (1 + 1e-12) + 4 * (slack + gap) / sine;
-}
 
 }  // namespace
 
@@ -136,33 +116,19 @@ std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std
 
 // Turned about its axis at a fixed (x, y), the robot's point in the contact moves by
 // at most its distance from the axis times the angle; translating the robot back by
-// that much puts the point where the contact was, touching again. The point: the
-// robot's vertex (VF), the environment's vertex's place on the robot (FV), or where
-// the robot's edge crosses the environment's (EE; its farther end when the edges are
-// nearly parallel).
+// that much puts the point where the contact was, touching again. An edge's point
+// moves no faster than its farther end (the bound where the crossing is not known
+// well: edges nearly parallel).
 double ClearanceBoxes::contactLever(const Clearance& clearance, double theta, double slack) const {
+  const std::optional<ContactPoint> point = contactPoint(space_, clearance, theta, slack);
+  const double known = point ? std::hypot(point->fromAxis[0], point->fromAxis[1]) + point->error : HUGE_VAL;
+  if (clearance.contact->kind != ContactKind::EdgeEdge) return known;
   const PerturbedMeshes& meshes = space_.meshes();
-  const auto robotVertex = [&](std::uint32_t vertex) { return Point3(meshes.robot.vertices()[vertex] / meshes.scale); };
-  const auto fromAxis = [&](std::uint32_t vertex) { return robotVertex(vertex).head<2>().norm(); };
-  const std::array<std::uint32_t, 4>& vertices = clearance.contactVertices;
-  switch (clearance.contact->kind) {
-    case ContactKind::VertexFacet:
-      return fromAxis(vertices[0]);
-    case ContactKind::FacetVertex: {
-      const Point3& w = meshes.world.vertices()[vertices[0]];
-      return std::hypot(w.x() / meshes.scale - clearance.nearest[0], w.y() / meshes.scale - clearance.nearest[1]);
-    }
-    case ContactKind::EdgeEdge:
-      break;
-  }
-  const double fartherEnd = std::max(fromAxis(vertices[0]), fromAxis(vertices[1]));
-  const Eigen::Matrix3d turn = Eigen::AngleAxisd(theta, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  const Point3 at(clearance.nearest[0], clearance.nearest[1], 0);
-  const Point3 robot0 = turn * robotVertex(vertices[0]) + at, robot1 = turn * robotVertex(vertices[1]) + at;
-  const Point3 world0 = meshes.world.vertices()[vertices[2]] / meshes.scale;
-  const Point3 world1 = meshes.world.vertices()[vertices[3]] / meshes.scale;
-  const std::optional<double> crossing = crossingFromAxis(robot0, robot1, world0, world1, at, slack);
-  return crossing ? std::min(*crossing, fartherEnd) : fartherEnd;
+  const auto fromAxis = [&](std::uint32_t vertex) {
+    const Point3& p = meshes.robot.vertices()[vertex];
+    return std::hypot(p.x(), p.y()) / meshes.scale;
+  };
+  return std::min(known, std::max(fromAxis(clearance.contactVertices[0]), fromAxis(clearance.contactVertices[1])));
 }
 
 double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <optional>
 
+#include "contact_point.h"
 #include "freespace/numbers/angle_reduction.h"
 
 namespace freespace {
@@ -27,13 +28,17 @@ constexpr double kNearFloor = 1.1;
 /// kHalvings times.
 constexpr double kDip = 0.99;
 constexpr int kHalvings = 4;
+/// A step is at most this share of the waypoint's clearance: in |dxy| + r |dtheta|
+/// (at most sqrt 2 times its length) shorter than the clearance, so the waypoint stays
+/// in its cell.
+constexpr double kLongestStep = 0.5;
 
-/// A waypoint being pushed: its clearance, and the step it tries next in (x, y) and
-/// in theta (both shrink when a try fails to raise the clearance).
+/// A waypoint being pushed: its clearance, and the length of the step it tries next
+/// in (x, y, r theta) (it shrinks when a try fails to raise the clearance).
 struct PushedWaypoint {
   Pose2 pose;
   Clearance clearance;
-  double step = 0, turnStep = 0;
+  double step = 0;
   /// The certified bound on the motion to the next waypoint, while neither moves.
   std::optional<double> motionBound;
 };
@@ -42,8 +47,8 @@ double metricLength(const Pose2& from, const Pose2& to, double reach) {
   return std::hypot(to.x - from.x, to.y - from.y) + reach * std::fabs(MotionChecker::shorterTurn(from.theta, to.theta));
 }
 
-PushedWaypoint pushedWaypoint(const Pose2& pose, const Clearance& clearance, double reach) {
-  return {pose, clearance, 0.5 * clearance.lower, 0.5 * clearance.lower / reach, std::nullopt};
+PushedWaypoint pushedWaypoint(const Pose2& pose, const Clearance& clearance) {
+  return {pose, clearance, kLongestStep * clearance.lower, std::nullopt};
 }
 
 /// Cuts each motion k into partsOf(k) equal parts, but never into more than
@@ -59,24 +64,13 @@ bool cutMotions(const FreeSpace& space, double reach, PartsOf partsOf, std::vect
     for (int part = 1; part < parts && waypoints.size() + cut.size() < kMostWaypoints; ++part) {
       const Pose2 pose = MotionChecker::interpolate(from, to, static_cast<double>(part) / parts);
       const Clearance clearance = space.clearance(pose, MotionChecker::kClearanceWidth);
-      if (clearance.location.free) cut.push_back(pushedWaypoint(pose, clearance, reach));
+      if (clearance.location.free) cut.push_back(pushedWaypoint(pose, clearance));
     }
     cut.push_back(waypoints[k + 1]);
   }
   const bool any = cut.size() > waypoints.size();
   waypoints = std::move(cut);
   return any;
-}
-
-/// Replaces the waypoint by `candidate` when that is free with more clearance. A
-/// candidate less than the clearance away (in |dxy| + r |dtheta|) is joined to it by
-/// a free motion: the waypoint stays in its cell.
-bool tryMove(const FreeSpace& space, PushedWaypoint& waypoint, const Pose2& candidate) {
-  const Clearance clearance = space.clearance(candidate, MotionChecker::kClearanceWidth);
-  if (!clearance.location.free || clearance.lower <= waypoint.clearance.lower) return false;
-  waypoint.pose = candidate;
-  waypoint.clearance = clearance;
-  return true;
 }
 
 /// A move of a waypoint in (x, y, r theta) without its part along the path's
@@ -93,31 +87,75 @@ std::array<double, 3> acrossPath(std::array<double, 3> move, const Pose2& previo
   return move;
 }
 
-Pose2 moved(const Pose2& pose, const std::array<double, 3>& move, double reach) {
-  return {pose.x + move[0], pose.y + move[1], reducedAngle(pose.theta + move[2] / reach)};
+/// The clearance's gradient at a waypoint in (x, y, r theta), from its witness: away
+/// from the contact in (x, y); in theta, how fast turning moves the robot's point in
+/// the contact away from it. None without a contact.
+std::optional<std::array<double, 3>> gradient(const FreeSpace& space, const PushedWaypoint& waypoint, double reach) {
+  const Clearance& clearance = waypoint.clearance;
+  const std::optional<ContactPoint> point = contactPoint(space, clearance, waypoint.pose.theta, 0);
+  if (!point) return std::nullopt;
+  const std::array<double, 2>& toContact = clearance.direction;
+  // Turning by dtheta moves the point by dtheta (-y, x).
+  const double towardContact = toContact[0] * -point->fromAxis[1] + toContact[1] * point->fromAxis[0];
+  return std::array<double, 3>{-toContact[0], -toContact[1], -towardContact / reach};
 }
 
-/// One push of a waypoint between two others: away from its nearest contact, then
-/// turned either way (each across the path); whether it moved.
+double norm(const std::array<double, 3>& v) { return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+/// The point of the segment from a to b nearest the origin: the direction that raises
+/// both of two distances with these gradients fastest (it is 0 where no direction
+/// raises both).
+std::array<double, 3> leastOfSegment(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+  std::array<double, 3> difference{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+  const double squared = difference[0] * difference[0] + difference[1] * difference[1] + difference[2] * difference[2];
+  double share = 0;  // of the way from a to b
+  if (squared > 0) {
+    share = std::clamp(-(a[0] * difference[0] + a[1] * difference[1] + a[2] * difference[2]) / squared, 0.0, 1.0);
+  }
+  return {a[0] + share * difference[0], a[1] + share * difference[1], a[2] + share * difference[2]};
+}
+
+Pose2 moved(const Pose2& pose, const std::array<double, 3>& direction, double length, double reach) {
+  const double scale = length / norm(direction);
+  return {pose.x + scale * direction[0], pose.y + scale * direction[1],
+          reducedAngle(pose.theta + scale * direction[2] / reach)};
+}
+
+/// One push of a waypoint between two others, across the path: up the clearance's
+/// gradient; where that meets another contact, up both of theirs (the direction
+/// between the two gradients that raises both: the clearance is the least of them);
+/// else each coordinate alone (away from the contact in (x, y), turning either way).
+/// Whether it moved.
 bool push(const FreeSpace& space, double reach, const Pose2& previous, const Pose2& next, PushedWaypoint& waypoint) {
+  if (waypoint.step <= 1e-6 * waypoint.clearance.lower) return false;
+  const PushedWaypoint from = waypoint;
+  Clearance there;
+  Pose2 tried;
+  const auto raises = [&](const std::array<double, 3>& direction) {
+    const std::array<double, 3> across = acrossPath(direction, previous, next, reach);
+    if (norm(across) <= 1e-9) return false;
+    tried = moved(from.pose, across, from.step, reach);
+    there = space.clearance(tried, MotionChecker::kClearanceWidth);
+    return there.location.free && there.lower > from.clearance.lower;
+  };
   bool raised = false;
-  const std::array<double, 2> toContact = waypoint.clearance.direction;
-  if (waypoint.step > 1e-6 * waypoint.clearance.lower && (toContact[0] != 0 || toContact[1] != 0)) {
-    const std::array<double, 3> away =
-        acrossPath({-waypoint.step * toContact[0], -waypoint.step * toContact[1], 0}, previous, next, reach);
-    const bool pushed = tryMove(space, waypoint, moved(waypoint.pose, away, reach));
-    waypoint.step = std::min(pushed ? 1.5 * waypoint.step : 0.5 * waypoint.step, 0.5 * waypoint.clearance.lower);
-    raised |= pushed;
+  if (const std::optional<std::array<double, 3>> up = gradient(space, from, reach)) {
+    raised = raises(*up);
+    if (!raised && there.location.free) {
+      const std::optional<std::array<double, 3>> otherUp = gradient(space, {tried, there, 0, std::nullopt}, reach);
+      if (otherUp) raised = raises(leastOfSegment(*up, *otherUp));
+    }
   }
-  if (waypoint.turnStep * reach > 1e-6 * waypoint.clearance.lower) {
-    const std::array<double, 3> turn = acrossPath({0, 0, reach * waypoint.turnStep}, previous, next, reach);
-    const Pose2 pose = waypoint.pose;
-    const bool turned = tryMove(space, waypoint, moved(pose, turn, reach)) ||
-                        tryMove(space, waypoint, moved(pose, {-turn[0], -turn[1], -turn[2]}, reach));
-    waypoint.turnStep =
-        std::min(turned ? 1.5 * waypoint.turnStep : 0.5 * waypoint.turnStep, 0.5 * waypoint.clearance.lower / reach);
-    raised |= turned;
+  const std::array<double, 3> alone[] = {
+      {-from.clearance.direction[0], -from.clearance.direction[1], 0}, {0, 0, 1}, {0, 0, -1}};
+  for (const std::array<double, 3>& direction : alone) {
+    if (!raised) raised = raises(direction);
   }
+  if (raised) {
+    waypoint.pose = tried;
+    waypoint.clearance = there;
+  }
+  waypoint.step = std::min(raised ? 1.5 * from.step : 0.5 * from.step, kLongestStep * waypoint.clearance.lower);
   return raised;
 }
 
@@ -183,7 +221,7 @@ std::optional<Passage> raisedPassage(const FreeSpace& space, const MotionChecker
   for (const Pose2& pose : passage.waypoints) {
     const Clearance clearance = space.clearance(pose, MotionChecker::kClearanceWidth);
     if (!clearance.location.free) return std::nullopt;
-    waypoints.push_back(pushedWaypoint(pose, clearance, reach));
+    waypoints.push_back(pushedWaypoint(pose, clearance));
   }
   // Motions that dip well below their ends' clearance (cutting a bend) are halved
   // and their middles pushed too.
