@@ -155,40 +155,6 @@ std::optional<Passage> certifiedRoutePath(const FreeSpace& space, const MotionCh
   return passage;
 }
 
-/// Raises the certified clearance of each motion towards its least (parts halved
-/// until each part's bound is within 2% of its ends' clearance: freedom alone needs
-/// far fewer), the tightest motions first, within a quarter of the time left (each
-/// may take half of what is left of that); a motion whose tighter check does not
-/// finish keeps its bound.
-void tightenBounds(const MotionChecker& checker, Passage& passage, Clock::time_point deadline, QueryRate& rate,
-                   const Cancellation& cancellation) {
-  const Clock::time_point began = Clock::now();
-  const double seconds = 0.25 * std::max(0.0, std::chrono::duration<double>(deadline - began).count());
-  std::vector<std::size_t> order(passage.motionClearance.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(),
-            [&](std::size_t a, std::size_t b) { return passage.motionClearance[a] < passage.motionClearance[b]; });
-  // Twice: the motions not finished at first get another try at the rate measured
-  // meanwhile (the first guess may be far too low).
-  for (int pass = 0; pass < 2 && !order.empty() && secondsSince(began) < seconds; ++pass) {
-    std::vector<std::size_t> unfinished;
-    for (const std::size_t k : order) {
-      cancellation.check();
-      const double secondsLeft = seconds - secondsSince(began);
-      if (secondsLeft <= 0) break;
-      const MotionCheck check =
-          rate.check(checker, passage.waypoints[k], passage.waypoints[k + 1], 0.02, secondsLeft / 2);
-      if (check.free) {
-        passage.motionClearance[k] = std::max(passage.motionClearance[k], check.minClearance);
-      } else {
-        unfinished.push_back(k);
-      }
-    }
-    order = std::move(unfinished);
-  }
-  passage.lower = *std::min_element(passage.motionClearance.begin(), passage.motionClearance.end());
-}
-
 /// Replaces runs of waypoints between `first` and `last` by single motions certified
 /// to keep at least `level`, the longest found by doubling jumps from each waypoint.
 void shorten(const MotionChecker& checker, std::size_t first, std::size_t last, double level, MaxClearancePath& path) {
@@ -256,7 +222,7 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   std::optional<Passage> routed = certifiedRoutePath(space, checker, passageStart, passageEnd, deadline, rate, options);
   if (routed) {
     path.secondsToFirstPath = secondsSince(began);
-    if (!routed->motionClearance.empty()) tightenBounds(checker, *routed, deadline, rate, options.cancellation);
+    if (!routed->motionClearance.empty()) tightenBounds(checker, *routed, 0.02, deadline, rate, options.cancellation);
     // The route keeps to the middle of the faces' triangles, not of the passages:
     // pushed to their middle, its least clearance rises (within a share of the time).
     const Clock::time_point raisingDeadline =

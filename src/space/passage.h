@@ -1,9 +1,12 @@
 #pragma once
 
 #include <algorithm>
+#include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
+#include "freespace/geometry/cancellation.h"
 #include "freespace/geometry/stage_clock.h"
 #include "freespace/space/motion_checker.h"
 
@@ -36,5 +39,14 @@ class QueryRate {
   double perSecond() const { return queries_ > 200 && seconds_ > 0 ? queries_ / seconds_ : 5000; }
   double queries_ = 0, seconds_ = 0;
 };
+
+/// Raises the certified clearance of each motion towards its least (parts halved
+/// until each part's bound is within `slack` of its ends' clearance: freedom alone
+/// needs far fewer), the tightest motions first, within a quarter of the time left
+/// (each may take half of what is left of that); a motion whose tighter check does
+/// not finish keeps its bound.
+void tightenBounds(const MotionChecker& checker, Passage& passage, double slack,
+                   std::chrono::steady_clock::time_point deadline, QueryRate& rate,
+                   const Cancellation& cancellation = {});
 
 }  // namespace freespace

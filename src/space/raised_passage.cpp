@@ -18,7 +18,7 @@ using Clock = std::chrono::steady_clock;
 /// that waypoints pushed to a passage's middle keep the motions between them there.
 constexpr double kPartsPerPassage = 200;
 /// Pushing rounds over all waypoints, at most.
-constexpr int kRounds = 40;
+constexpr int kRounds = 100;
 constexpr std::size_t kMostWaypoints = 4000;
 /// Only waypoints whose clearance is within this factor of the least are pushed:
 /// those with more are not in the way, and pushed toward wider places they would
@@ -237,6 +237,8 @@ std::optional<Passage> raisedPassage(const FreeSpace& space, const MotionChecker
     };
     if (!cutMotions(space, reach, partsOf, waypoints)) break;
   }
+  // Its tightest motions' bounds within 0.3% of their ends' clearance.
+  if (raised) tightenBounds(checker, *raised, 0.003, deadline, rate, cancellation);
   return raised;
 }
 

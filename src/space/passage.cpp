@@ -1,0 +1,34 @@
+#include "passage.h"
+
+namespace freespace {
+
+void tightenBounds(const MotionChecker& checker, Passage& passage, double slack,
+                   std::chrono::steady_clock::time_point deadline, QueryRate& rate, const Cancellation& cancellation) {
+  const std::chrono::steady_clock::time_point began = std::chrono::steady_clock::now();
+  const double seconds = 0.25 * std::max(0.0, std::chrono::duration<double>(deadline - began).count());
+  std::vector<std::size_t> order(passage.motionClearance.size());
+  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return passage.motionClearance[a] < passage.motionClearance[b]; });
+  // Twice: the motions not finished at first get another try at the rate measured
+  // meanwhile (the first guess may be far too low).
+  for (int pass = 0; pass < 2 && !order.empty() && secondsSince(began) < seconds; ++pass) {
+    std::vector<std::size_t> unfinished;
+    for (const std::size_t k : order) {
+      cancellation.check();
+      const double secondsLeft = seconds - secondsSince(began);
+      if (secondsLeft <= 0) break;
+      const MotionCheck check =
+          rate.check(checker, passage.waypoints[k], passage.waypoints[k + 1], slack, secondsLeft / 2);
+      if (check.free) {
+        passage.motionClearance[k] = std::max(passage.motionClearance[k], check.minClearance);
+      } else {
+        unfinished.push_back(k);
+      }
+    }
+    order = std::move(unfinished);
+  }
+  passage.lower = *std::min_element(passage.motionClearance.begin(), passage.motionClearance.end());
+}
+
+}  // namespace freespace
