@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <random>
 #include <string>
 #include <tuple>
@@ -239,6 +240,43 @@ TEST_P(BundledCellGraph, SliceFacesHoldTheirConfigurations) {
   }
   std::cout << GetParam() << ": " << checked << " configurations checked against the slices' faces\n";
   EXPECT_GT(checked, 500);
+}
+
+/// One node's face from its own pieces (SliceFaces::faceOf) against the whole slice's
+/// (SliceFaces::at): the same loops, corner for corner, for every node at random
+/// angles; none for nodes whose run misses the angle.
+TEST_P(BundledCellGraph, OneNodesFaceIsTheWholeSlicesFaceOfIt) {
+  const LoadedProblem loaded = problem();
+  const FreeSpace space(loaded.robot, loaded.world);
+  const CellGraph& graph = space.cellGraph();
+  RandomConfigurations random(space, 7);
+  const SliceFaces sliceFaces(space.arrangement(), graph, [&](SubFaceId face) { return space.cellOfSubFace(face); });
+  int compared = 0;
+  for (int slice = 0; slice < 12; ++slice) {
+    const AlgebraicAngle angle = AlgebraicAngle::rational(HalfAngle::fromRadians(random.next().theta));
+    std::vector<SliceFace> faces;
+    try {
+      faces = sliceFaces.at(angle, space.algebra());
+    } catch (const std::invalid_argument&) {
+      continue;  // a critical angle
+    }
+    std::map<std::uint32_t, const SliceFace*> byNode;
+    for (const SliceFace& face : faces) byNode[face.node] = &face;
+    for (std::uint32_t node = 0; node < graph.nodes().size(); ++node) {
+      const std::optional<SliceFace> alone = sliceFaces.faceOf(node, angle, space.algebra());
+      const auto whole = byNode.find(node);
+      ASSERT_EQ(alone.has_value(), whole != byNode.end()) << "node " << node;
+      if (!alone) continue;
+      EXPECT_EQ(alone->cell, whole->second->cell);
+      EXPECT_EQ(alone->unbounded, whole->second->unbounded);
+      ASSERT_EQ(alone->loops.size(), whole->second->loops.size()) << "node " << node;
+      for (std::size_t k = 0; k < alone->loops.size(); ++k) {
+        EXPECT_EQ(alone->loops[k].corners, whole->second->loops[k].corners) << "node " << node << " loop " << k;
+      }
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 10);
 }
 
 /// A saved free space holds its graph: read back, it has the same nodes and edges,

@@ -25,7 +25,7 @@ constexpr std::size_t kMostFailedCrossings = 200;
 constexpr double kLeastTravelShare = 1e-4;
 /// At most this many clearances to certify one step of a turn in place.
 constexpr std::size_t kTurnQueryLimit = 4096;
-/// At most this many slices kept for reuse.
+/// At most this many faces kept for reuse.
 constexpr std::size_t kSlicesKept = 256;
 /// The relative width of the certified clearances the walk asks for.
 constexpr double kWidth = MotionChecker::kClearanceWidth;
@@ -83,26 +83,22 @@ class RouteWalker {
   }
   std::array<double, 2> scaled(const Pose2& pose) const { return {pose.x * scale_, pose.y * scale_}; }
 
-  /// The node's face in the slice at theta (none at a critical angle). Slices are kept
-  /// (up to kSlicesKept): a travel estimates an angle's translation, then makes it.
+  /// The node's face in the slice at theta (none at a critical angle, or outside the
+  /// node's angles). Faces are kept (up to kSlicesKept): a travel estimates an angle's
+  /// translation, then makes it.
   std::optional<SliceFace> faceAt(std::uint32_t node, double theta) const {
-    auto kept = slices_.find(theta);
-    if (kept == slices_.end()) {
-      if (slices_.size() >= kSlicesKept) slices_.clear();
-      std::optional<std::vector<SliceFace>> faces;
+    auto kept = faces_.find({theta, node});
+    if (kept == faces_.end()) {
+      if (faces_.size() >= kSlicesKept) faces_.clear();
+      std::optional<SliceFace> face;
       try {
-        faces = sliceFaces_.at(AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space_.algebra());
+        face = sliceFaces_.faceOf(node, AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space_.algebra());
       } catch (const std::invalid_argument&) {
         // A critical angle: no faces.
       }
-      kept = slices_.emplace(theta, std::move(faces)).first;
+      kept = faces_.emplace(std::pair(theta, node), std::move(face)).first;
     }
-    if (!kept->second) return std::nullopt;
-    const std::vector<SliceFace>& faces = *kept->second;
-    for (const SliceFace& face : faces) {
-      if (face.node == node) return face;
-    }
-    return std::nullopt;
+    return kept->second;
   }
 
   /// The clearance of a point inside the face (construction coordinates) at the face's
@@ -470,7 +466,7 @@ class RouteWalker {
   std::vector<Pose2> waypoints_;
   std::vector<std::optional<double>> certified_;  // per motion between waypoints
   int steps_ = 0;
-  mutable std::map<double, std::optional<std::vector<SliceFace>>> slices_;  // by angle; none at a critical one
+  mutable std::map<std::pair<double, std::uint32_t>, std::optional<SliceFace>> faces_;  // by angle and node
 };
 
 }  // namespace

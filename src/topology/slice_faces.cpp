@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "freespace/topology/slice_pieces.h"
+#include "gluing_parts.h"
 #include "slice_loops.h"
 
 namespace freespace {
@@ -75,14 +76,26 @@ SliceFaces::SliceFaces(const Arrangement& arrangement, const CellGraph& graph, C
     : arrangement_(arrangement),
       graph_(graph),
       cellOf_(std::move(cellOf)),
-      neighbours_(std::make_unique<cellgraph::PieceNeighbours>(arrangement, graph)) {}
+      neighbours_(std::make_unique<cellgraph::PieceNeighbours>(arrangement, graph)),
+      piecesOfNode_(graph.nodes().size()) {
+  const std::vector<std::vector<CellGraph::NodeRun>>& runs = graph.parts().runsOfPiece;
+  for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
+    const std::vector<PatchSlab>& slabs = arrangement.subdivisions[patch].slabs;
+    for (std::uint32_t slab = 0; slab < slabs.size(); ++slab) {
+      for (std::uint32_t gap = 0; gap < slabs[slab].faces.size(); ++gap) {
+        for (const CellGraph::NodeRun& run : runs[graph.pieceIndex(patch, slab, gap)]) {
+          std::vector<PieceId>& pieces = piecesOfNode_[run.node];
+          if (pieces.empty() || pieces.back() != PieceId{patch, slab, gap}) pieces.push_back({patch, slab, gap});
+        }
+      }
+    }
+  }
+}
 
 SliceFaces::~SliceFaces() = default;
 
-std::vector<SliceFace> SliceFaces::at(const AlgebraicAngle& rationalAngle, AngleAlgebra& algebra) const {
-  const IntervalLoops loops = piecesAt(arrangement_, graph_, cellOf_, rationalAngle, algebra);
-  const std::uint32_t interval = graph_.intervalOf(rationalAngle, algebra);
-  const slices::IntervalSlice slice = *slices::IntervalSlice::at(rationalAngle);
+std::map<std::uint32_t, SliceFace> SliceFaces::facesOf(const IntervalLoops& loops, std::uint32_t interval) const {
+  const slices::IntervalSlice slice = *slices::IntervalSlice::at(loops.sample);
   std::map<std::uint32_t, SliceFace> faces;
   if (const std::optional<std::uint32_t> node = graph_.unboundedNode(interval)) {
     faces[*node] = SliceFace{*node, 0, true, {}};
@@ -102,9 +115,51 @@ std::vector<SliceFace> SliceFaces::at(const AlgebraicAngle& rationalAngle, Angle
     face.cell = graph_.nodes()[*node].cell;
     face.loops.push_back(std::move(loop));
   }
+  return faces;
+}
+
+std::vector<SliceFace> SliceFaces::at(const AlgebraicAngle& rationalAngle, AngleAlgebra& algebra) const {
+  const IntervalLoops loops = piecesAt(arrangement_, graph_, cellOf_, rationalAngle, algebra);
   std::vector<SliceFace> result;
-  for (auto& [node, face] : faces) result.push_back(std::move(face));
+  for (auto& [node, face] : facesOf(loops, graph_.intervalOf(rationalAngle, algebra)))
+    result.push_back(std::move(face));
   return result;
+}
+
+std::optional<SliceFace> SliceFaces::faceOf(std::uint32_t node, const AlgebraicAngle& rationalAngle,
+                                            AngleAlgebra& algebra) const {
+  const std::uint32_t interval = graph_.intervalOf(rationalAngle, algebra);
+  const std::vector<AlgebraicAngle>& critical = graph_.criticalAngles();
+  if (!critical.empty() && algebra.compare(critical[interval], rationalAngle) == 0) {
+    throw std::invalid_argument("SliceFaces: the angle is critical");
+  }
+  const CellGraphNode& run = graph_.nodes()[node];
+  const std::uint32_t count = static_cast<std::uint32_t>(graph_.intervalCount());
+  if ((interval + count - run.firstInterval) % count > (run.lastInterval + count - run.firstInterval) % count) {
+    return std::nullopt;
+  }
+  // The node's pieces whose slab holds the angle (each slab looked at once) and which
+  // bound its face over this interval.
+  IntervalLoops loops;
+  loops.sample = rationalAngle;
+  std::optional<std::pair<std::uint32_t, std::uint32_t>> lastSlab;
+  bool slabHolds = false;
+  for (const PieceId& piece : piecesOfNode_[node]) {
+    const auto [patch, slab, gap] = piece;
+    if (lastSlab != std::pair(patch, slab)) {
+      lastSlab = {patch, slab};
+      slabHolds = gluing::holds(arrangement_.subdivisions[patch].slabs[slab], rationalAngle, algebra);
+      if (slabHolds) loops.slabs.push_back({patch, slab});
+    }
+    const std::size_t index = graph_.pieceIndex(patch, slab, gap);
+    if (!slabHolds || graph_.nodeOfPiece(index, interval) != node) continue;
+    loops.pieces.push_back({patch, slab, gap});
+    loops.pieceIndices.push_back(index);
+  }
+  std::map<std::uint32_t, SliceFace> faces = facesOf(loops, interval);
+  const auto found = faces.find(node);
+  if (found == faces.end()) throw std::logic_error("SliceFaces: a node's run holds an angle where it has no face");
+  return std::move(found->second);
 }
 
 }  // namespace freespace

@@ -3,6 +3,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -31,7 +32,8 @@ struct SliceFace {
 
 namespace cellgraph {
 class PieceNeighbours;
-}
+struct IntervalLoops;
+}  // namespace cellgraph
 
 /// The faces of the free space's slices: the free pieces at an angle joined into
 /// loops (slice_loops' PieceNeighbours, made once for every slice asked for), each
@@ -47,11 +49,27 @@ class SliceFaces {
   /// Throws std::invalid_argument for a critical angle.
   std::vector<SliceFace> at(const AlgebraicAngle& rationalAngle, AngleAlgebra& algebra) const;
 
+  /// The face of one node in that slice (the same as at()'s, from the pieces of that
+  /// node alone: a loop's pieces all bound one face); none when the node's run of
+  /// intervals does not hold the angle. Throws std::invalid_argument for a critical
+  /// angle.
+  std::optional<SliceFace> faceOf(std::uint32_t node, const AlgebraicAngle& rationalAngle, AngleAlgebra& algebra) const;
+
  private:
+  /// A free piece: (patch, slab, gap).
+  using PieceId = std::array<std::uint32_t, 3>;
+
+  /// The faces the pieces' loops bound at their angle (in `interval`), by node; the
+  /// unbounded node's (empty) among them when the interval has one.
+  std::map<std::uint32_t, SliceFace> facesOf(const cellgraph::IntervalLoops& loops, std::uint32_t interval) const;
+
   const Arrangement& arrangement_;
   const CellGraph& graph_;
   CellGraph::CellOfFace cellOf_;
   std::unique_ptr<const cellgraph::PieceNeighbours> neighbours_;
+  /// The pieces that bound each node's face over some interval of its run, node by
+  /// node, by CellGraph::pieceIndex.
+  std::vector<std::vector<PieceId>> piecesOfNode_;
 };
 
 }  // namespace freespace
