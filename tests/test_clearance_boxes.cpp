@@ -4,7 +4,9 @@
 // and blocked centres' depths),
 // and a box with a positive lower bound holds only free configurations with at least
 // that much. Boxes of many sizes: random leaves are halved again
-// and again, so anchors pass from parents and neighbours to children.
+// and again (in theta alone where ClearanceBoxes::axesToSplit says so), so anchors
+// pass from parents and neighbours to children; each sample's leaf is found again by
+// leafAt.
 #include <gtest/gtest.h>
 
 #include <random>
@@ -29,9 +31,13 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
   ClearanceBoxes boxes(space, {volume.min().x(), volume.min().y()}, {volume.max().x(), volume.max().y()},
                        MotionChecker(space).reach(), 8);
   std::mt19937_64 random(20261205);
+  int thetaOnly = 0;
   for (int round = 0; round < 600; ++round) {
     const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random);
-    if (!boxes.box(box).split) boxes.split(box);
+    if (boxes.box(box).split) continue;
+    const std::uint8_t axes = boxes.axesToSplit(box);
+    thetaOnly += axes == ClearanceBoxes::kThetaAxis;
+    boxes.split(box, axes);
   }
   std::uniform_real_distribution<double> unit(0, 1);
   int free = 0, certified = 0, freeBesideBlockedCentres = 0;
@@ -42,6 +48,7 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
     const Pose2 pose{leaf.low[0] + (leaf.high[0] - leaf.low[0]) * unit(random),
                      leaf.low[1] + (leaf.high[1] - leaf.low[1]) * unit(random),
                      leaf.low[2] + (leaf.high[2] - leaf.low[2]) * unit(random)};
+    EXPECT_EQ(boxes.leafAt(pose), box) << pose.x << " " << pose.y << " " << pose.theta;
     const Clearance clearance = space.clearance(pose);
     if (clearance.location.free) {
       ++free;
@@ -60,6 +67,9 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
   EXPECT_GT(certified, 10);
   // Bounded by blocked centres too: their depth bounds the slice at their angle.
   EXPECT_GT(freeBesideBlockedCentres, 10);
+  // Boxes halved in theta alone (blocked centres deeper than their half diagonal) are
+  // among them.
+  EXPECT_GT(thetaOnly, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, BundledClearanceBoxes,

@@ -183,38 +183,47 @@ std::uint32_t ClearanceBoxes::leafAt(const Pose2& pose) const {
       intervalOf(rootEdges_[2], at[2]));
   while (boxes_[index].split) {
     const ClearanceBox& box = boxes_[index];
-    std::uint32_t child = 0;
+    std::uint32_t child = 0, bit = 0;
     for (int axis = 0; axis < 3; ++axis) {
-      if (at[axis] > 0.5 * (box.low[axis] + box.high[axis])) child |= 1u << axis;
+      if (!(box.splitAxes >> axis & 1)) continue;
+      if (at[axis] > 0.5 * (box.low[axis] + box.high[axis])) child |= 1u << bit;
+      ++bit;
     }
     index = box.firstChild + child;
   }
   return index;
 }
 
-void ClearanceBoxes::split(std::uint32_t index) {
+void ClearanceBoxes::split(std::uint32_t index, std::uint8_t axes) {
   const std::uint32_t first = static_cast<std::uint32_t>(boxes_.size());
-  for (std::uint32_t child = 0; child < 8; ++child) {
+  int halved = 0;
+  for (int axis = 0; axis < 3; ++axis) halved += axes >> axis & 1;
+  const std::uint32_t parts = 1u << halved;
+  for (std::uint32_t child = 0; child < parts; ++child) {
     std::array<double, 3> low = boxes_[index].low, high = boxes_[index].high;
-    for (int axis = 0; axis < 3; ++axis) {
+    for (int axis = 0, bit = 0; axis < 3; ++axis) {
+      if (!(axes >> axis & 1)) continue;
       const double middle = 0.5 * (low[axis] + high[axis]);
-      (child >> axis & 1 ? low : high)[axis] = middle;
+      (child >> bit & 1 ? low : high)[axis] = middle;
+      ++bit;
     }
     addBox(low, high);
   }
   boxes_[index].split = true;
+  boxes_[index].splitAxes = axes;
   boxes_[index].firstChild = first;
   // The halves touch one another (they share the centre) and each of the box's
   // neighbours (not split, not dropped) they touch, both ways.
   const std::vector<std::uint32_t> neighbours = boxes_[index].neighbours;
-  for (std::uint32_t child = first; child < first + 8; ++child) {
-    for (std::uint32_t sibling = first; sibling < first + 8; ++sibling) {
+  const std::uint32_t end = first + parts;
+  for (std::uint32_t child = first; child < end; ++child) {
+    for (std::uint32_t sibling = first; sibling < end; ++sibling) {
       if (sibling != child) boxes_[child].neighbours.push_back(sibling);
     }
   }
   for (std::uint32_t neighbour : neighbours) {
     if (boxes_[neighbour].split || boxes_[neighbour].dropped) continue;
-    for (std::uint32_t child = first; child < first + 8; ++child) {
+    for (std::uint32_t child = first; child < end; ++child) {
       if (!touch(boxes_[child], boxes_[neighbour])) continue;
       boxes_[child].neighbours.push_back(neighbour);
       boxes_[neighbour].neighbours.push_back(child);
@@ -223,14 +232,21 @@ void ClearanceBoxes::split(std::uint32_t index) {
   // Each half is bounded by the best of the parent's anchors and the halves' and
   // neighbours' own.
   std::vector<ClearanceAnchor> candidates = boxes_[index].anchors;
-  for (std::uint32_t child = first; child < first + 8; ++child) {
+  for (std::uint32_t child = first; child < end; ++child) {
     candidates.insert(candidates.end(), boxes_[child].own.begin(), boxes_[child].own.end());
   }
   for (std::uint32_t neighbour : neighbours) {
     if (boxes_[neighbour].split || boxes_[neighbour].dropped) continue;
     candidates.insert(candidates.end(), boxes_[neighbour].own.begin(), boxes_[neighbour].own.end());
   }
-  for (std::uint32_t child = first; child < first + 8; ++child) bound(boxes_[child], candidates);
+  for (std::uint32_t child = first; child < end; ++child) bound(boxes_[child], candidates);
+}
+
+std::uint8_t ClearanceBoxes::axesToSplit(std::uint32_t index) const {
+  const ClearanceBox& box = boxes_[index];
+  if (box.centreCell || box.own.empty()) return kEveryAxis;
+  const double halfDiagonal = std::hypot(box.high[0] - box.low[0], box.high[1] - box.low[1]) / 2;
+  return box.own.front().upper + halfDiagonal < 0 ? kThetaAxis : kEveryAxis;
 }
 
 void ClearanceBoxes::dropBelow(double level) {

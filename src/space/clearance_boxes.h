@@ -29,9 +29,12 @@ struct ClearanceBox {
   /// 0), then the anchors that bound it best among its own, its neighbours' and its
   /// parent's (upper is the least of their bounds).
   std::vector<ClearanceAnchor> own, anchors;
-  /// Once split, its eight halves are boxes firstChild to firstChild + 7.
+  /// Once split, its parts are boxes firstChild on: halved along the axes of
+  /// `splitAxes` (bit k for axis k), 2 to the number of those axes of them, part i
+  /// on the upper side of the j-th of those axes when bit j of i is set.
   std::uint32_t firstChild = 0;
   bool split = false;
+  std::uint8_t splitAxes = 0;
   /// Never useful again: its clearance is below a bottleneck already reached.
   bool dropped = false;
   /// The free cell holding the box's centre (none when it is blocked).
@@ -79,8 +82,14 @@ class ClearanceBoxes {
 
   /// The box (not split) holding a configuration of the domain.
   std::uint32_t leafAt(const Pose2& pose) const;
-  /// Halves a box along every axis (eight clearances).
-  void split(std::uint32_t box);
+  /// Halves a box along the axes of `axes` (bit k for axis k; every axis: eight
+  /// clearances).
+  void split(std::uint32_t box, std::uint8_t axes = kEveryAxis);
+  static constexpr std::uint8_t kEveryAxis = 7, kThetaAxis = 4;
+  /// The axes worth halving a box along: theta alone when its centre lies deeper in
+  /// the obstacle than its half diagonal in (x, y) (its upper bound then comes from
+  /// its theta width alone, docs/design.md section 7), else every axis.
+  std::uint8_t axesToSplit(std::uint32_t box) const;
   /// Drops every box whose upper bound is below `level`.
   void dropBelow(double level);
   /// Drops every box that lies in another free cell than `cell`: free throughout

@@ -291,7 +291,7 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     // The limit is looked at between halvings too: a round can halve thousands.
     for (std::uint32_t box : uncertain) {
       if (secondsSince(began) > options.secondsLimit) break;
-      boxes.split(box);
+      boxes.split(box, boxes.axesToSplit(box));
     }
     ++path.refinements;
   }
