@@ -223,6 +223,12 @@ void ClearanceBoxes::split(std::uint32_t index, std::uint8_t axes) {
   }
   for (std::uint32_t neighbour : neighbours) {
     if (boxes_[neighbour].split || boxes_[neighbour].dropped) continue;
+    // Its list loses the box split (and any other split or dropped since): the
+    // searches over chains walk these lists every round.
+    std::vector<std::uint32_t>& list = boxes_[neighbour].neighbours;
+    list.erase(std::remove_if(list.begin(), list.end(),
+                              [&](std::uint32_t other) { return boxes_[other].split || boxes_[other].dropped; }),
+               list.end());
     for (std::uint32_t child = first; child < end; ++child) {
       if (!touch(boxes_[child], boxes_[neighbour])) continue;
       boxes_[child].neighbours.push_back(neighbour);
@@ -240,6 +246,7 @@ void ClearanceBoxes::split(std::uint32_t index, std::uint8_t axes) {
     candidates.insert(candidates.end(), boxes_[neighbour].own.begin(), boxes_[neighbour].own.end());
   }
   for (std::uint32_t child = first; child < end; ++child) bound(boxes_[child], candidates);
+  boxes_[index].neighbours = {};
 }
 
 std::uint8_t ClearanceBoxes::axesToSplit(std::uint32_t index) const {
