@@ -1,6 +1,5 @@
 #include "clearance_boxes.h"
 
-#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <optional>

@@ -222,13 +222,13 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   std::optional<Passage> routed = certifiedRoutePath(space, checker, passageStart, passageEnd, deadline, rate, options);
   if (routed) {
     path.secondsToFirstPath = secondsSince(began);
-    if (!routed->motionClearance.empty()) tightenBounds(checker, *routed, 0.02, deadline, rate, options.cancellation);
-    // The route keeps to the middle of the faces' triangles, not of the passages:
-    // pushed to their middle, its least clearance rises (within a share of the time).
-    const Clock::time_point raisingDeadline =
-        std::min(deadline, Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                              std::chrono::duration<double>(kRaisingShare * options.secondsLimit)));
-    if (routed->motionClearance.size() > 0) {
+    if (!routed->motionClearance.empty()) {
+      tightenBounds(checker, *routed, 0.02, deadline, rate, options.cancellation);
+      // The route keeps to the middle of the faces' triangles, not of the passages:
+      // pushed to their middle, its least clearance rises (within a share of the time).
+      const Clock::time_point raisingDeadline =
+          std::min(deadline, Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                std::chrono::duration<double>(kRaisingShare * options.secondsLimit)));
       std::optional<Passage> raised =
           raisedPassage(space, checker, *routed, raisingDeadline, rate, options.cancellation);
       if (raised && raised->lower > routed->lower) routed = std::move(raised);

@@ -1,5 +1,9 @@
 #include "passage.h"
 
+#include <algorithm>
+
+#include "freespace/geometry/stage_clock.h"
+
 namespace freespace {
 
 void tightenBounds(const MotionChecker& checker, Passage& passage, double slack,

@@ -1,14 +1,12 @@
 #pragma once
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstddef>
 #include <vector>
 
 #include "freespace/geometry/cancellation.h"
-#include "freespace/geometry/stage_clock.h"
 #include "freespace/space/motion_checker.h"
+#include "query_rate.h"
 
 namespace freespace {
 
@@ -18,26 +16,6 @@ struct Passage {
   std::vector<Pose2> waypoints;
   std::vector<double> motionClearance;
   double lower = HUGE_VAL;
-};
-
-/// Clearance queries per second of motion checks, measured as they run (a guess of
-/// 5,000 until 200 have run), shared by the stages that budget motion checks by the
-/// time left.
-class QueryRate {
- public:
-  MotionCheck check(const MotionChecker& checker, const Pose2& from, const Pose2& to, double slack,
-                    double secondsLeft) {
-    const auto began = std::chrono::steady_clock::now();
-    const auto limit = static_cast<std::size_t>(100 + std::max(0.0, secondsLeft) * perSecond());
-    const MotionCheck result = checker.check(from, to, slack, limit);
-    queries_ += static_cast<double>(result.clearanceQueries);
-    seconds_ += secondsSince(began);
-    return result;
-  }
-
- private:
-  double perSecond() const { return queries_ > 200 && seconds_ > 0 ? queries_ / seconds_ : 5000; }
-  double queries_ = 0, seconds_ = 0;
 };
 
 /// Raises the certified clearance of each motion towards its least (parts halved

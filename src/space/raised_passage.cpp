@@ -17,7 +17,8 @@ using Clock = std::chrono::steady_clock;
 /// At most this many parts per motion of the whole passage's length: fine enough
 /// that waypoints pushed to a passage's middle keep the motions between them there.
 constexpr double kPartsPerPassage = 200;
-/// Pushing rounds over all waypoints, at most.
+/// Pushing rounds over all waypoints, and waypoints in all (motions are cut no
+/// further), at most.
 constexpr int kRounds = 100;
 constexpr std::size_t kMostWaypoints = 4000;
 /// Only waypoints whose clearance is within this factor of the least are pushed:
@@ -55,7 +56,7 @@ PushedWaypoint pushedWaypoint(const Pose2& pose, const Clearance& clearance) {
 /// kMostWaypoints waypoints in all; whether it cut any. A blocked cut is left out (the
 /// motion's check will fail).
 template <typename PartsOf>
-bool cutMotions(const FreeSpace& space, double reach, PartsOf partsOf, std::vector<PushedWaypoint>& waypoints) {
+bool cutMotions(const FreeSpace& space, PartsOf partsOf, std::vector<PushedWaypoint>& waypoints) {
   std::vector<PushedWaypoint> cut{waypoints.front()};
   for (std::size_t k = 0; k + 1 < waypoints.size(); ++k) {
     const Pose2 &from = waypoints[k].pose, &to = waypoints[k + 1].pose;
@@ -169,7 +170,7 @@ bool relax(const FreeSpace& space, double reach, double spacing, std::vector<Pus
         1, static_cast<int>(std::ceil(metricLength(waypoints[k].pose, waypoints[k + 1].pose, reach) / spacing)));
   };
   for (int round = 0; round < kRounds; ++round) {
-    bool moved = cutMotions(space, reach, partsOf, waypoints);
+    bool moved = cutMotions(space, partsOf, waypoints);
     double floor = HUGE_VAL;
     for (const PushedWaypoint& waypoint : waypoints) floor = std::min(floor, waypoint.clearance.lower);
     for (std::size_t k = 1; k + 1 < waypoints.size(); ++k) {
@@ -235,7 +236,7 @@ std::optional<Passage> raisedPassage(const FreeSpace& space, const MotionChecker
       const double ends = std::min(waypoints[k].clearance.lower, waypoints[k + 1].clearance.lower);
       return next->motionClearance[k] < kDip * ends ? 2 : 1;
     };
-    if (!cutMotions(space, reach, partsOf, waypoints)) break;
+    if (!cutMotions(space, partsOf, waypoints)) break;
   }
   // Its tightest motions' bounds within 0.3% of their ends' clearance.
   if (raised) tightenBounds(checker, *raised, 0.003, deadline, rate, cancellation);
