@@ -88,12 +88,12 @@ std::array<double, 3> acrossPath(std::array<double, 3> move, const Pose2& previo
   return move;
 }
 
-/// The clearance's gradient at a waypoint in (x, y, r theta), from its witness: away
-/// from the contact in (x, y); in theta, how fast turning moves the robot's point in
-/// the contact away from it. None without a contact.
-std::optional<std::array<double, 3>> gradient(const FreeSpace& space, const PushedWaypoint& waypoint, double reach) {
-  const Clearance& clearance = waypoint.clearance;
-  const std::optional<ContactPoint> point = contactPoint(space, clearance, waypoint.pose.theta, 0);
+/// The clearance's gradient at a configuration at angle theta in (x, y, r theta),
+/// from its witness: away from the contact in (x, y); in theta, how fast turning moves
+/// the robot's point in the contact away from it. None without a contact.
+std::optional<std::array<double, 3>> gradient(const FreeSpace& space, const Clearance& clearance, double theta,
+                                              double reach) {
+  const std::optional<ContactPoint> point = contactPoint(space, clearance, theta, 0);
   if (!point) return std::nullopt;
   const std::array<double, 2>& toContact = clearance.direction;
   // Turning by dtheta moves the point by dtheta (-y, x).
@@ -140,10 +140,10 @@ bool push(const FreeSpace& space, double reach, const Pose2& previous, const Pos
     return there.location.free && there.lower > from.clearance.lower;
   };
   bool raised = false;
-  if (const std::optional<std::array<double, 3>> up = gradient(space, from, reach)) {
+  if (const std::optional<std::array<double, 3>> up = gradient(space, from.clearance, from.pose.theta, reach)) {
     raised = raises(*up);
     if (!raised && there.location.free) {
-      const std::optional<std::array<double, 3>> otherUp = gradient(space, {tried, there, 0, std::nullopt}, reach);
+      const std::optional<std::array<double, 3>> otherUp = gradient(space, there, tried.theta, reach);
       if (otherUp) raised = raises(leastOfSegment(*up, *otherUp));
     }
   }

@@ -26,7 +26,7 @@ constexpr double kLeastTravelShare = 1e-4;
 /// At most this many clearances to certify one step of a turn in place.
 constexpr std::size_t kTurnQueryLimit = 4096;
 /// At most this many faces kept for reuse.
-constexpr std::size_t kSlicesKept = 256;
+constexpr std::size_t kFacesKept = 256;
 /// The relative width of the certified clearances the walk asks for.
 constexpr double kWidth = MotionChecker::kClearanceWidth;
 
@@ -84,12 +84,12 @@ class RouteWalker {
   std::array<double, 2> scaled(const Pose2& pose) const { return {pose.x * scale_, pose.y * scale_}; }
 
   /// The node's face in the slice at theta (none at a critical angle, or outside the
-  /// node's angles). Faces are kept (up to kSlicesKept): a travel estimates an angle's
+  /// node's angles). Faces are kept (up to kFacesKept): a travel estimates an angle's
   /// translation, then makes it.
   std::optional<SliceFace> faceAt(std::uint32_t node, double theta) const {
     auto kept = faces_.find({theta, node});
     if (kept == faces_.end()) {
-      if (faces_.size() >= kSlicesKept) faces_.clear();
+      if (faces_.size() >= kFacesKept) faces_.clear();
       std::optional<SliceFace> face;
       try {
         face = sliceFaces_.faceOf(node, AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space_.algebra());
@@ -184,12 +184,6 @@ class RouteWalker {
                         translateTo(*face, triangulation, roomy.front(), 0.5 * here)) ||
                        (estimatedClearance(*face, *middle) > here && translateTo(*face, triangulation, *middle));
     return moved ? estimatedClearance(*face, current()) : here;
-  }
-
-  /// Whether an interval lies in the node's run of intervals.
-  bool runHolds(const CellGraphNode& node, std::uint32_t interval) const {
-    const std::uint32_t count = graph_.intervalCount();
-    return (interval + count - node.firstInterval) % count <= (node.lastInterval + count - node.firstInterval) % count;
   }
 
   /// The signed turn from the current angle to `theta` staying inside the node's arc
@@ -330,7 +324,7 @@ class RouteWalker {
     for (std::uint32_t step = 0; step < count; ++step) {
       // The interval `step` away from the critical angle, and its end nearer to it.
       const std::uint32_t interval = before ? (index + 2 * count - 1 - step) % count : (index + step) % count;
-      if (!runHolds(run, interval)) return std::nullopt;
+      if (!graph_.runHolds(run, interval)) return std::nullopt;
       const auto [low, width] = graph_.arc(interval, interval);
       if (width < 1e-9) continue;
       const double inside = std::min(1e-4, width / 2);
@@ -385,8 +379,8 @@ class RouteWalker {
     const std::uint32_t count = graph_.intervalCount();
     const std::uint32_t before = (angle + count - 1) % count, after = angle;
     const CellGraphNode &from = graph_.nodes()[node], &to = graph_.nodes()[next];
-    if (runHolds(from, before) && runHolds(to, after)) return true;
-    if (runHolds(from, after) && runHolds(to, before)) return false;
+    if (graph_.runHolds(from, before) && graph_.runHolds(to, after)) return true;
+    if (graph_.runHolds(from, after) && graph_.runHolds(to, before)) return false;
     return std::nullopt;
   }
 

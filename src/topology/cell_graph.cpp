@@ -783,6 +783,11 @@ double CellGraph::arcWidth(std::uint32_t node) const {
   return arc(parts_.nodes[node].firstInterval, parts_.nodes[node].lastInterval).second;
 }
 
+bool CellGraph::runHolds(const CellGraphNode& node, std::uint32_t interval) const {
+  const auto count = static_cast<std::uint32_t>(intervalCount());
+  return (interval + count - node.firstInterval) % count <= (node.lastInterval + count - node.firstInterval) % count;
+}
+
 std::optional<std::vector<std::uint32_t>> CellGraph::route(
     std::uint32_t from, std::uint32_t to, const std::function<bool(std::uint32_t, std::uint32_t)>& usable) const {
   // Each node's edges: (the node across, the edge's critical angle).

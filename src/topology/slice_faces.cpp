@@ -133,11 +133,7 @@ std::optional<SliceFace> SliceFaces::faceOf(std::uint32_t node, const AlgebraicA
   if (!critical.empty() && algebra.compare(critical[interval], rationalAngle) == 0) {
     throw std::invalid_argument("SliceFaces: the angle is critical");
   }
-  const CellGraphNode& run = graph_.nodes()[node];
-  const std::uint32_t count = static_cast<std::uint32_t>(graph_.intervalCount());
-  if ((interval + count - run.firstInterval) % count > (run.lastInterval + count - run.firstInterval) % count) {
-    return std::nullopt;
-  }
+  if (!graph_.runHolds(graph_.nodes()[node], interval)) return std::nullopt;
   // The node's pieces whose slab holds the angle (each slab looked at once) and which
   // bound its face over this interval.
   IntervalLoops loops;

@@ -111,6 +111,8 @@ class CellGraph {
   std::pair<double, double> arc(std::uint32_t first, std::uint32_t last) const;
   /// The length in radians of a node's arc of angles (2 pi for every angle).
   double arcWidth(std::uint32_t node) const;
+  /// Whether an interval lies in a node's run of intervals (theta wrapping around).
+  bool runHolds(const CellGraphNode& node, std::uint32_t interval) const;
 
   /// The interval whose open arc holds an angle; a critical angle gets the interval
   /// it starts.
