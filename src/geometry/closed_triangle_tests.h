@@ -1,6 +1,8 @@
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <vector>
 
 #include "freespace/numbers/sign.h"
 
@@ -45,6 +47,40 @@ class ClosedTriangleTests {
                        p_.orient3d(a, b, T[2], T[0]));
   }
 
+  /// A point where two triangles meet on the boundary of either, named by the
+  /// features that make it: a corner of either (`edge` twice that corner), or where
+  /// the edge `edge` of one crosses the plane of the other (`plane`) strictly
+  /// between its ends. Equal keys name one point, whichever triangle it is found from.
+  struct BoundaryPoint {
+    std::array<Id, 2> edge;
+    Triangle plane;
+    std::array<Id, 4> key;
+  };
+
+  /// Where closed triangles P and Q, which do not lie in one plane, meet on the
+  /// boundary of either, each point once. Their intersection lies on the line where
+  /// their planes cross; it is convex, so it is the point or segment these points span.
+  std::vector<BoundaryPoint> boundaryMeetingPoints(const Triangle& P, const Triangle& Q) {
+    std::vector<BoundaryPoint> points;
+    addBoundaryPoints(P, Q, points);
+    addBoundaryPoints(Q, P, points);
+    return points;
+  }
+
+  /// Whether closed triangles in one plane share interior points (their intersection
+  /// has an area): no edge of either has the other on its line or beyond it.
+  bool coplanarInteriorsOverlap(const Triangle& P, const Triangle& Q) {
+    const int axis = projectionAxis(P);
+    return !separatedByAnEdge(P, Q, axis, Sign::Zero) && !separatedByAnEdge(Q, P, axis, Sign::Zero);
+  }
+
+  bool inPlaneOf(const Triangle& plane, const Triangle& T) {
+    for (Id corner : T) {
+      if (p_.orient3d(plane[0], plane[1], plane[2], corner) != Sign::Zero) return false;
+    }
+    return true;
+  }
+
   /// Contribution of triangle T to the winding number of point q, counted along the
   /// ray from q in direction +x. The ray's start is perturbed symbolically to
   /// (q.y + eps, q.z + eps^2) so that it never meets an edge; triangles parallel to
@@ -81,11 +117,38 @@ class ClosedTriangleTests {
            s0 == p_.orient3d(plane[0], plane[1], plane[2], T[2]);
   }
 
-  bool inPlaneOf(const Triangle& plane, const Triangle& T) {
-    for (Id corner : T) {
-      if (p_.orient3d(plane[0], plane[1], plane[2], corner) != Sign::Zero) return false;
+  /// The corners of T that lie in `other`, and the points where T's edges cross
+  /// `other`'s plane inside it (closed), added to `points` unless their key is there.
+  void addBoundaryPoints(const Triangle& T, const Triangle& other, std::vector<BoundaryPoint>& points) {
+    const auto add = [&](const BoundaryPoint& point) {
+      const auto same = [&](const BoundaryPoint& known) { return known.key == point.key; };
+      if (std::none_of(points.begin(), points.end(), same)) points.push_back(point);
+    };
+    std::array<Sign, 3> side;
+    for (int i = 0; i < 3; ++i) side[i] = p_.orient3d(other[0], other[1], other[2], T[i]);
+    for (int i = 0; i < 3; ++i) {
+      const Id a = T[i], b = T[(i + 1) % 3];
+      if (side[i] == Sign::Zero && insideClosedTriangle(a, other, projectionAxis(other))) {
+        add({{a, a}, other, {a, a, a, a}});
+      }
+      if (side[i] == Sign::Zero || side[(i + 1) % 3] != -side[i]) continue;
+      // The line ab crosses the plane at a point of the closed triangle unless it
+      // passes two edges on opposite sides; on one edge's line (a zero), the point is
+      // on that edge, and found again from the other triangle; on two, it is their corner.
+      std::array<Sign, 3> around;
+      for (int k = 0; k < 3; ++k) around[k] = p_.orient3d(a, b, other[k], other[(k + 1) % 3]);
+      if (mixedSigns(around[0], around[1], around[2])) continue;
+      const auto zeros = std::count(around.begin(), around.end(), Sign::Zero);
+      if (zeros > 1) continue;  // a corner of `other`, which lies in T
+      const std::array<Id, 2> edge{std::min(a, b), std::max(a, b)};
+      std::array<Id, 2> crossed = edge;
+      for (int k = 0; k < 3; ++k) {
+        if (around[k] != Sign::Zero) continue;
+        crossed = {std::min(other[k], other[(k + 1) % 3]), std::max(other[k], other[(k + 1) % 3])};
+      }
+      const auto& [low, high] = std::minmax(edge, crossed);
+      add({{a, b}, other, {low[0], low[1], high[0], high[1]}});
     }
-    return true;
   }
 
   /// Closed triangles in one plane are apart exactly when an edge of one has the
@@ -94,14 +157,17 @@ class ClosedTriangleTests {
   /// degenerate (nor then Q).
   bool coplanarTrianglesIntersect(const Triangle& P, const Triangle& Q) {
     const int axis = projectionAxis(P);
-    return !separatedByAnEdge(P, Q, axis) && !separatedByAnEdge(Q, P, axis);
+    return !separatedByAnEdge(P, Q, axis, Sign::Negative) && !separatedByAnEdge(Q, P, axis, Sign::Negative);
   }
 
-  bool separatedByAnEdge(const Triangle& T, const Triangle& other, int axis) {
+  /// Whether an edge of T has every corner of `other` on its outer side, or also on
+  /// its line when `lowestSide` is Zero (with T's corners seen turning positively;
+  /// Negative: strictly outside).
+  bool separatedByAnEdge(const Triangle& T, const Triangle& other, int axis, Sign lowestSide) {
     for (int i = 0; i < 3; ++i) {
       const Id from = T[i], to = T[(i + 1) % 3];
-      const Sign outside = -p_.orient2d(from, to, T[(i + 2) % 3], axis);
-      const auto beyond = [&](Id corner) { return p_.orient2d(from, to, corner, axis) == outside; };
+      const Sign turn = p_.orient2d(from, to, T[(i + 2) % 3], axis);
+      const auto beyond = [&](Id corner) { return turn * p_.orient2d(from, to, corner, axis) <= lowestSide; };
       if (beyond(other[0]) && beyond(other[1]) && beyond(other[2])) return true;
     }
     return false;

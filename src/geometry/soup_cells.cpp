@@ -13,16 +13,15 @@
 // ray joins: from a point of a face, off one side, to the first face it meets (see
 // Cells for which cells are bounded).
 
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Interval_nt.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
 #include <stdexcept>
-
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-#include <CGAL/Interval_nt.h>
 
 #include "disjoint_sets.h"
 #include "soup_boundary.h"
@@ -118,12 +117,12 @@ struct RayHit {
 
 class RayCaster {
  public:
-  explicit RayCaster(const SoupComplex& complex) : complex_(complex) {
+  explicit RayCaster(const SoupComplex& complex) {
     triangles_.reserve(complex.faces.size());
     for (const TriangleIndices& face : complex.faces) {
       triangles_.emplace_back(complex.points[face[0]], complex.points[face[1]], complex.points[face[2]]);
     }
-    tree_.insert(triangles_.begin(), triangles_.end());
+    for (Index face = 0; face < triangles_.size(); ++face) tree_.insert(FacePrimitive(triangles_, face));
     tree_.build();
   }
 
@@ -138,8 +137,30 @@ class RayCaster {
   }
 
  private:
-  using Primitive = CGAL::AABB_triangle_primitive<ExactKernel, std::vector<ExactTriangle>::const_iterator>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<ExactKernel, Primitive>>;
+  // A face for CGAL's AABB tree, with a reference point in doubles: any point of the
+  // face's box serves to split the tree, and comparing exact corners, many of them
+  // equal on walls parallel to coordinate planes, would evaluate them exactly.
+  class FacePrimitive {
+   public:
+    using Id = Index;
+    using Datum = ExactTriangle;
+    using Point = ExactPoint;
+
+    FacePrimitive(const std::vector<ExactTriangle>& triangles, Index face) : triangles_(&triangles), face_(face) {
+      const CGAL::Bbox_3 box = triangles[face].bbox();
+      reference_ = ExactPoint(box.xmin(), box.ymin(), box.zmin());
+    }
+
+    const Datum& datum() const { return (*triangles_)[face_]; }
+    Id id() const { return face_; }
+    const Point& reference_point() const { return reference_; }
+
+   private:
+    const std::vector<ExactTriangle>* triangles_;
+    Index face_;
+    ExactPoint reference_;
+  };
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<ExactKernel, FacePrimitive>>;
   static constexpr int kAttempts = 32;
 
   // The face's normal on the side's side, tilted after the first attempt by a
@@ -153,29 +174,20 @@ class RayCaster {
     return normal + along * (scale * ((attempt % 3) - 1)) + across * (scale * ((attempt % 5) - 2) / 2);
   }
 
+  // The nearest face the ray meets decides: faces of a complex meet only in shared
+  // edges and vertices, so a point inside one face lies on no other.
   RayHit cast(Index side, int attempt) const {
     const Index face = faceOf(side);
     const ExactTriangle& triangle = triangles_[face];
     const ExactPoint origin = CGAL::centroid(triangle[0], triangle[1], triangle[2]);
     const ExactVector towards = direction(triangle, isFront(side), attempt);
-    const ExactRay ray(origin, towards);
-    std::vector<typename Tree::template Intersection_and_primitive_id<ExactRay>::Type> hits;
-    tree_.all_intersections(ray, std::back_inserter(hits));
-    RayHit result;
-    std::optional<ExactKernel::FT> nearest;
-    for (const auto& [where, primitive] : hits) {
-      const Index other = static_cast<Index>(primitive - triangles_.begin());
-      if (other == face) continue;
-      const ExactPoint* point = boost::get<ExactPoint>(&where);
-      if (!point || onBoundary(triangles_[other], *point)) return {true, std::nullopt};
-      const ExactKernel::FT distance = CGAL::squared_distance(origin, *point);
-      if (nearest && distance == *nearest) return {true, std::nullopt};
-      if (nearest && distance > *nearest) continue;
-      nearest = distance;
-      const ExactVector normal = CGAL::normal(triangles_[other][0], triangles_[other][1], triangles_[other][2]);
-      result.side = CGAL::scalar_product(normal, towards) < 0 ? frontSide(other) : backSide(other);
-    }
-    return result;
+    const auto hit = tree_.first_intersection(ExactRay(origin, towards), [&](Index other) { return other == face; });
+    if (!hit) return {};
+    const Index other = hit->second;
+    const ExactPoint* point = boost::get<ExactPoint>(&hit->first);
+    if (!point || onBoundary(triangles_[other], *point)) return {true, std::nullopt};
+    const ExactVector normal = CGAL::normal(triangles_[other][0], triangles_[other][1], triangles_[other][2]);
+    return {false, CGAL::scalar_product(normal, towards) < 0 ? frontSide(other) : backSide(other)};
   }
 
   static bool onBoundary(const ExactTriangle& triangle, const ExactPoint& point) {
@@ -185,7 +197,6 @@ class RayCaster {
     return false;
   }
 
-  const SoupComplex& complex_;
   std::vector<ExactTriangle> triangles_;
   Tree tree_;
 };
@@ -266,7 +277,8 @@ class Cells {
  public:
   Cells(const SoupComplex& complex, const EdgeFans& fans) : sides_(2 * complex.faces.size()) {
     for (const std::vector<EdgeFace>& fan : fans.fans()) {
-      for (std::size_t i = 0; i < fan.size(); ++i) sides_.unite(risingSide(fan[i]), fallingSide(fan[(i + 1) % fan.size()]));
+      for (std::size_t i = 0; i < fan.size(); ++i)
+        sides_.unite(risingSide(fan[i]), fallingSide(fan[(i + 1) % fan.size()]));
     }
     std::map<Index, std::vector<Index>> shells;  // first side -> its sides
     for (Index side = 0; side < 2 * complex.faces.size(); ++side) shells[sides_.find(side)].push_back(side);
@@ -332,8 +344,8 @@ SoupComplex withoutWithdrawnCaps(const SoupComplex& complex, Index firstCap, con
 
 double approximateArea(const SoupComplex& complex, Index face) {
   const TriangleIndices& corners = complex.faces[face];
-  return std::sqrt(CGAL::to_double(CGAL::squared_area(complex.points[corners[0]], complex.points[corners[1]],
-                                                      complex.points[corners[2]])));
+  return std::sqrt(CGAL::to_double(
+      CGAL::squared_area(complex.points[corners[0]], complex.points[corners[1]], complex.points[corners[2]])));
 }
 
 // Withdraws the caps of every enclosed region whose caps make up half its boundary or
@@ -374,8 +386,8 @@ bool isSliver(const SoupComplex& complex, Index face, double tolerance) {
     const ExactPoint& point = complex.points[complex.faces[face][i]];
     corners[i] = Point3(CGAL::to_double(point.x()), CGAL::to_double(point.y()), CGAL::to_double(point.z()));
   }
-  const double longest = std::max({(corners[1] - corners[0]).norm(), (corners[2] - corners[1]).norm(),
-                                   (corners[0] - corners[2]).norm()});
+  const double longest =
+      std::max({(corners[1] - corners[0]).norm(), (corners[2] - corners[1]).norm(), (corners[0] - corners[2]).norm()});
   return (corners[1] - corners[0]).cross(corners[2] - corners[0]).norm() <= tolerance * longest;
 }
 
@@ -386,11 +398,14 @@ EnclosedSolid classifiedFaces(const SoupComplex& complex, const EdgeFans& fans, 
                               double tolerance) {
   EnclosedSolid solid;
   solid.boundedCells = cells.boundedCount();
-  const auto isBoundary = [&](Index face) { return cells.isOutside(frontSide(face)) != cells.isOutside(backSide(face)); };
+  const auto isBoundary = [&](Index face) {
+    return cells.isOutside(frontSide(face)) != cells.isOutside(backSide(face));
+  };
   std::vector<BoundaryPairing> pairings;
   for (const std::vector<EdgeFace>& fan : fans.fans()) {
     std::vector<EdgeFace> boundary;
-    std::copy_if(fan.begin(), fan.end(), std::back_inserter(boundary), [&](const EdgeFace& entry) { return isBoundary(entry.face); });
+    std::copy_if(fan.begin(), fan.end(), std::back_inserter(boundary),
+                 [&](const EdgeFace& entry) { return isBoundary(entry.face); });
     for (std::size_t i = 0; i < boundary.size(); ++i) {
       if (cells.isOutside(risingSide(boundary[i]))) continue;
       const TriangleIndices& corners = complex.faces[boundary[i].face];
@@ -448,7 +463,7 @@ EnclosedSolid enclosedSolid(const std::vector<Point3>& vertices, const std::vect
   const std::vector<std::pair<Index, Index>> withCaps = capMeetingPairs(points, all, firstCap);
   pairs.insert(pairs.end(), withCaps.begin(), withCaps.end());
 
-  const SoupComplex complex = refineSoup(points, all, pairs);
+  const SoupComplex complex = refineSoup(vertices, points, all, pairs);
   EnclosedSolid solid = enclosedSolid(complex, firstCap, tolerance);
   solid.meetingPairs = soupPairs;
   solid.refinedTriangles = complex.refinedTriangles;

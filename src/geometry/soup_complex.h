@@ -5,12 +5,12 @@
 // of determinants of input coordinates, but refining triangles along their
 // intersections needs new points (exact constructions), which CGAL provides.
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+
 #include <cstdint>
 #include <initializer_list>
 #include <utility>
 #include <vector>
-
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include "soup_enclosure.h"
 #include "triangle_box_tree.h"
@@ -41,8 +41,10 @@ struct SoupComplex {
 };
 
 /// `pairs` lists every pair of the triangles (on `points`) that meet beyond their
-/// shared features; the other triangles become faces as they are.
-SoupComplex refineSoup(const std::vector<ExactPoint>& points, const std::vector<TriangleIndices>& triangles,
+/// shared features; the other triangles become faces as they are. The first points
+/// are `vertices` (the soup's, in doubles); the others are new.
+SoupComplex refineSoup(const std::vector<Point3>& vertices, const std::vector<ExactPoint>& points,
+                       const std::vector<TriangleIndices>& triangles,
                        const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs);
 
 /// Triangles that would close a soup's planar openings (see enclosedSolid), on the

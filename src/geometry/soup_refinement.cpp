@@ -1,14 +1,18 @@
 // Refinement of a soup's triangles along their intersections (soup_complex.h).
 
-#include <map>
-#include <optional>
-
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/intersections.h>
 
+#include <array>
+#include <map>
+#include <optional>
+
+#include "closed_triangle_tests.h"
 #include "disjoint_sets.h"
+#include "freespace/numbers/double_double_interval.h"
 #include "soup_complex.h"
+#include "vertex_predicates.h"
 
 namespace freespace::detail {
 
@@ -17,15 +21,12 @@ namespace {
 using Index = std::uint32_t;
 using ExactSegment = ExactKernel::Segment_3;
 using ExactTriangle = ExactKernel::Triangle_3;
-// A point, a segment, a triangle or a polygon (the last two: coplanar overlaps).
-using TriangleIntersection =
-    decltype(CGAL::intersection(std::declval<ExactTriangle>(), std::declval<ExactTriangle>()))::value_type;
 
-// What a cluster of coplanar triangles must be split along: segments and points where
-// other triangles meet them.
+// What a cluster of coplanar triangles must be split along: segments and points
+// (indices of the complex's points) where other triangles meet them.
 struct Constraints {
-  std::vector<ExactSegment> segments;
-  std::vector<ExactPoint> points;
+  std::vector<std::pair<Index, Index>> segments;
+  std::vector<Index> points;
 };
 
 struct LessXyz {
@@ -58,15 +59,30 @@ ExactTriangle exactTriangle(const PointIndex& points, const TriangleIndices& tri
   return {points[triangle[0]], points[triangle[1]], points[triangle[2]]};
 }
 
-// A coplanar intersection with area: the two triangles are triangulated together.
-bool hasArea(const TriangleIntersection& intersection) {
-  return boost::get<ExactTriangle>(&intersection) != nullptr ||
-         boost::get<std::vector<ExactPoint>>(&intersection) != nullptr;
+// How two triangles that meet do: overlapping in one plane (an area: they are
+// triangulated together), else in a point or a segment (its ends), indices of the
+// complex's points, that splits both.
+struct Meeting {
+  bool overlap = false;
+  std::vector<Index> points;
+};
+
+void addConstraint(const Meeting& meeting, Constraints& constraints) {
+  if (meeting.points.size() == 1) constraints.points.push_back(meeting.points[0]);
+  if (meeting.points.size() == 2) constraints.segments.emplace_back(meeting.points[0], meeting.points[1]);
 }
 
-void addIntersection(const TriangleIntersection& intersection, Constraints& constraints) {
-  if (const auto* point = boost::get<ExactPoint>(&intersection)) constraints.points.push_back(*point);
-  if (const auto* segment = boost::get<ExactSegment>(&intersection)) constraints.segments.push_back(*segment);
+// The meeting of two triangles by CGAL's intersection of triangles, nothing if they are apart.
+std::optional<Meeting> generalMeeting(const ExactTriangle& first, const ExactTriangle& second, PointIndex& points) {
+  const auto intersection = CGAL::intersection(first, second);
+  if (!intersection) return std::nullopt;
+  Meeting meeting;
+  meeting.overlap = boost::get<ExactTriangle>(&*intersection) || boost::get<std::vector<ExactPoint>>(&*intersection);
+  if (const auto* point = boost::get<ExactPoint>(&*intersection)) meeting.points = {points.indexOf(*point)};
+  if (const auto* segment = boost::get<ExactSegment>(&*intersection)) {
+    meeting.points = {points.indexOf(segment->source()), points.indexOf(segment->target())};
+  }
+  return meeting;
 }
 
 // The axis to drop so that the plane's projection keeps its area: the normal's
@@ -117,6 +133,90 @@ class ClusterPlane {
   int dropped_;
 };
 
+// How pairs of triangles on a soup's vertices meet, from signs of determinants of
+// the vertices' coordinates (decided in doubles almost always): a new point is made
+// only where an edge crosses the other triangle's plane, as one construction from
+// that edge and plane, evaluated exactly when compared. CGAL's intersection of two
+// triangles would evaluate every degenerate meeting in exact rationals at once (a
+// corner on the other's face, faces in one plane: most pairs of a soup of boxes).
+// Each crossing is made once, whichever pairs of triangles meet there: looking up
+// a point among the others compares it exactly with its equals. Triangles with new
+// points (caps), and the rare pairs whose meeting is not a point, a segment spanned
+// by two boundary points or an overlap, go to CGAL.
+class PairMeetings {
+ public:
+  PairMeetings(const std::vector<Point3>& vertices, PointIndex& points)
+      : vertices_(vertices), points_(points), predicates_(vertices, statistics_) {}
+
+  // Inside a NearestRoundingScope.
+  std::optional<Meeting> of(const TriangleIndices& first, const TriangleIndices& second) {
+    if (onSoupVertices(first) && onSoupVertices(second)) {
+      Tests tests(predicates_);
+      const Triangle p{first[0], first[1], first[2]}, q{second[0], second[1], second[2]};
+      if (!tests.inPlaneOf(p, q)) {
+        const std::vector<Tests::BoundaryPoint> found = tests.boundaryMeetingPoints(p, q);
+        if (found.size() == 1) return Meeting{false, {indexOf(found[0])}};
+        if (found.size() == 2) return Meeting{false, {indexOf(found[0]), indexOf(found[1])}};
+      } else if (tests.coplanarInteriorsOverlap(p, q)) {
+        return Meeting{true, {}};
+      }
+    }
+    return generalMeeting(exactTriangle(points_, first), exactTriangle(points_, second), points_);
+  }
+
+ private:
+  using Tests = ClosedTriangleTests<VertexPredicates, Index>;
+  using Triangle = Tests::Triangle;
+
+  bool onSoupVertices(const TriangleIndices& triangle) const {
+    return std::all_of(triangle.begin(), triangle.end(), [&](Index vertex) { return vertex < vertices_.size(); });
+  }
+
+  // A boundary point's key names it among every pair's points once the plane of
+  // a crossing of a face is added (the edges of a crossing of two edges name it).
+  using CrossingKey = std::pair<std::array<Index, 4>, Triangle>;
+
+  Index indexOf(const Tests::BoundaryPoint& point) {
+    const auto [a, b] = point.edge;
+    if (a == b) return a;
+    Triangle plane{};
+    if (point.key[0] == point.key[2] && point.key[1] == point.key[3]) {
+      plane = point.plane;
+      std::sort(plane.begin(), plane.end());
+    }
+    const auto [found, inserted] = crossings_.try_emplace({point.key, plane});
+    if (inserted) found->second = points_.indexOf(crossing(a, b, point.plane));
+    return found->second;
+  }
+
+  // Where the edge ab crosses the plane of `plane`: one construction, but each
+  // coordinate that the edge or the plane keeps constant is that double, so the
+  // crossings of walls parallel to coordinate planes are doubles, or nearly, whose
+  // degenerate predicates CGAL's interval filter decides without exact evaluation.
+  ExactPoint crossing(Index a, Index b, const Triangle& plane) const {
+    const ExactPoint general = ExactKernel().construct_plane_line_intersection_point_3_object()(
+        points_[plane[0]], points_[plane[1]], points_[plane[2]], points_[a], points_[b]);
+    std::array<ExactKernel::FT, 3> coordinates;
+    for (int axis = 0; axis < 3; ++axis) {
+      const auto constant = [&](Index u, Index w) { return vertices_[u][axis] == vertices_[w][axis]; };
+      if (constant(a, b)) {
+        coordinates[axis] = vertices_[a][axis];
+      } else if (constant(plane[0], plane[1]) && constant(plane[0], plane[2])) {
+        coordinates[axis] = vertices_[plane[0]][axis];
+      } else {
+        coordinates[axis] = general.cartesian(axis);
+      }
+    }
+    return {coordinates[0], coordinates[1], coordinates[2]};
+  }
+
+  const std::vector<Point3>& vertices_;
+  PointIndex& points_;
+  std::map<CrossingKey, Index> crossings_;
+  PredicateStatistics statistics_;
+  VertexPredicates predicates_;
+};
+
 // Triangulates the union of a cluster's coplanar triangles with its constraints and
 // appends the faces inside the triangles (each vertex of the soup keeps its index).
 void triangulateCluster(const std::vector<Index>& members, const std::vector<TriangleIndices>& triangles,
@@ -127,30 +227,30 @@ void triangulateCluster(const std::vector<Index>& members, const std::vector<Tri
       ExactKernel, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>, CGAL::Exact_intersections_tag>;
   const ClusterPlane plane(exactTriangle(points, triangles[members.front()]));
   Triangulation triangulation;
-  std::map<Index, ClusterPlane::Point2> projected;  // the members' corners
+  std::map<Index, ClusterPlane::Point2> projected;  // the points inserted, by index
   const auto corner = [&](Index vertex) {
     const auto [found, inserted] = projected.try_emplace(vertex);
     if (inserted) found->second = plane.project(points[vertex]);
     return found->second;
   };
-  const auto insertCorner = [&](Index vertex) {
+  const auto insertPoint = [&](Index vertex) {
     const auto handle = triangulation.insert(corner(vertex));
     handle->info() = vertex;
     return handle;
   };
   for (Index t : members) {
     for (int k = 0; k < 3; ++k) {
-      triangulation.insert_constraint(insertCorner(triangles[t][k]), insertCorner(triangles[t][(k + 1) % 3]));
+      triangulation.insert_constraint(insertPoint(triangles[t][k]), insertPoint(triangles[t][(k + 1) % 3]));
     }
   }
-  for (const ExactSegment& segment : constraints.segments) {
-    if (segment.is_degenerate()) {
-      triangulation.insert(plane.project(segment.source()));
+  for (const auto& [source, target] : constraints.segments) {
+    if (source == target) {
+      insertPoint(source);
     } else {
-      triangulation.insert_constraint(plane.project(segment.source()), plane.project(segment.target()));
+      triangulation.insert_constraint(insertPoint(source), insertPoint(target));
     }
   }
-  for (const ExactPoint& point : constraints.points) triangulation.insert(plane.project(point));
+  for (Index point : constraints.points) insertPoint(point);
 
   const auto inside = [&](Index t, const ClusterPlane::Point2& point) {
     const ClusterPlane::Point2 &a = corner(triangles[t][0]), &b = corner(triangles[t][1]), &c = corner(triangles[t][2]);
@@ -158,8 +258,9 @@ void triangulateCluster(const std::vector<Index>& members, const std::vector<Tri
     return CGAL::orientation(a, b, point) == turn && CGAL::orientation(b, c, point) == turn &&
            CGAL::orientation(c, a, point) == turn;
   };
-  // A new vertex is lifted and looked up once (its faces share it): the lookup
-  // compares equal points, which makes CGAL evaluate them exactly.
+  // A vertex the triangulation made (where constraints cross) is lifted and looked up
+  // once (its faces share it): the lookup compares equal points, which makes CGAL
+  // evaluate them exactly.
   const auto indexOf = [&](const typename Triangulation::Vertex_handle& vertex) {
     if (!vertex->info()) vertex->info() = points.indexOf(plane.lift(vertex->point()));
     return *vertex->info();
@@ -223,7 +324,8 @@ std::vector<std::pair<Index, Index>> capMeetingPairs(const std::vector<ExactPoin
   return pairs;
 }
 
-SoupComplex refineSoup(const std::vector<ExactPoint>& soupPoints, const std::vector<TriangleIndices>& triangles,
+SoupComplex refineSoup(const std::vector<Point3>& soupVertices, const std::vector<ExactPoint>& soupPoints,
+                       const std::vector<TriangleIndices>& triangles,
                        const std::vector<std::pair<Index, Index>>& pairs) {
   PointIndex points(soupPoints);
   std::vector<bool> refined(triangles.size(), false);
@@ -235,24 +337,27 @@ SoupComplex refineSoup(const std::vector<ExactPoint>& soupPoints, const std::vec
 
   // Intersections: coplanar overlaps join clusters, the rest constrain them.
   DisjointSets clusters(triangles.size());
-  std::vector<std::pair<Index, TriangleIntersection>> pieces;  // (triangle, piece)
-  for (const auto& [first, second] : pairs) {
-    const auto intersection =
-        CGAL::intersection(exactTriangle(points, triangles[first]), exactTriangle(points, triangles[second]));
-    if (!intersection) continue;
-    if (hasArea(*intersection)) {
-      clusters.unite(first, second);
-      continue;
+  std::vector<std::pair<Index, Meeting>> pieces;  // (triangle, piece)
+  {
+    PairMeetings meetings(soupVertices, points);
+    const NearestRoundingScope rounding;
+    for (const auto& [first, second] : pairs) {
+      const std::optional<Meeting> meeting = meetings.of(triangles[first], triangles[second]);
+      if (!meeting) continue;
+      if (meeting->overlap) {
+        clusters.unite(first, second);
+        continue;
+      }
+      pieces.emplace_back(first, *meeting);
+      pieces.emplace_back(second, *meeting);
     }
-    pieces.emplace_back(first, *intersection);
-    pieces.emplace_back(second, *intersection);
   }
   std::map<Index, std::vector<Index>> members;  // cluster -> its triangles
   std::map<Index, Constraints> constraints;     // cluster -> what splits it
   for (Index t = 0; t < triangles.size(); ++t) {
     if (refined[t]) members[clusters.find(t)].push_back(t);
   }
-  for (const auto& [triangle, piece] : pieces) addIntersection(piece, constraints[clusters.find(triangle)]);
+  for (const auto& [triangle, piece] : pieces) addConstraint(piece, constraints[clusters.find(triangle)]);
 
   SoupComplex complex;
   for (Index t = 0; t < triangles.size(); ++t) {

@@ -8,6 +8,8 @@ enum class Sign : int { Negative = -1, Zero = 0, Positive = 1 };
 
 inline Sign operator-(Sign s) { return static_cast<Sign>(-static_cast<int>(s)); }
 
+inline Sign operator*(Sign a, Sign b) { return static_cast<Sign>(static_cast<int>(a) * static_cast<int>(b)); }
+
 /// The sign of an integer (a comparison result, GMP's sign()).
 inline Sign signOf(int value) { return value > 0 ? Sign::Positive : (value < 0 ? Sign::Negative : Sign::Zero); }
 
