@@ -1,15 +1,15 @@
 // How two triangles meet, from signs of determinants (ClosedTriangleTests: the
 // soup refinement's fast path), against CGAL's exact intersection of two triangles.
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/intersections.h>
-#include <gtest/gtest.h>
-
 #include <algorithm>
 #include <array>
 #include <map>
 #include <random>
 #include <vector>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/intersections.h>
+#include <gtest/gtest.h>
 
 #include "freespace/numbers/double_double_interval.h"
 #include "geometry/closed_triangle_tests.h"

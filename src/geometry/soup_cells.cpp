@@ -13,15 +13,14 @@
 // ray joins: from a point of a face, off one side, to the first face it meets (see
 // Cells for which cells are bounded).
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/Interval_nt.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <stdexcept>
+
+#include <CGAL/Interval_nt.h>
 
 #include "disjoint_sets.h"
 #include "soup_boundary.h"
@@ -115,6 +114,10 @@ struct RayHit {
   std::optional<Index> side;
 };
 
+// Rays through the complex: faces in an R-tree of boxes in doubles, widened by a
+// margin that covers the difference between a ray and its rounded copy; candidates
+// are met exactly, in the order the rounded ray enters their boxes, until the
+// nearest meeting so far lies before the next box.
 class RayCaster {
  public:
   explicit RayCaster(const SoupComplex& complex) {
@@ -122,8 +125,21 @@ class RayCaster {
     for (const TriangleIndices& face : complex.faces) {
       triangles_.emplace_back(complex.points[face[0]], complex.points[face[1]], complex.points[face[2]]);
     }
-    for (Index face = 0; face < triangles_.size(); ++face) tree_.insert(FacePrimitive(triangles_, face));
-    tree_.build();
+    CGAL::Bbox_3 scene;
+    for (const ExactTriangle& triangle : triangles_) scene += triangle.bbox();
+    const double diagonal = std::hypot(scene.xmax() - scene.xmin(), scene.ymax() - scene.ymin(),
+                                       scene.zmax() - scene.zmin());
+    margin_ = kRelativeMargin * diagonal + std::numeric_limits<double>::min();
+    reach_ = 4 * diagonal + margin_;
+    std::vector<TreeEntry> entries;
+    entries.reserve(triangles_.size());
+    for (Index face = 0; face < triangles_.size(); ++face) {
+      const CGAL::Bbox_3 box = triangles_[face].bbox();
+      entries.emplace_back(TreeBox(TreePoint(box.xmin() - margin_, box.ymin() - margin_, box.zmin() - margin_),
+                                   TreePoint(box.xmax() + margin_, box.ymax() + margin_, box.zmax() + margin_)),
+                           face);
+    }
+    tree_ = TriangleTree(entries.begin(), entries.end());
   }
 
   // The side of the first face that a ray from the centre of `side`'s face, leaving
@@ -137,31 +153,8 @@ class RayCaster {
   }
 
  private:
-  // A face for CGAL's AABB tree, with a reference point in doubles: any point of the
-  // face's box serves to split the tree, and comparing exact corners, many of them
-  // equal on walls parallel to coordinate planes, would evaluate them exactly.
-  class FacePrimitive {
-   public:
-    using Id = Index;
-    using Datum = ExactTriangle;
-    using Point = ExactPoint;
-
-    FacePrimitive(const std::vector<ExactTriangle>& triangles, Index face) : triangles_(&triangles), face_(face) {
-      const CGAL::Bbox_3 box = triangles[face].bbox();
-      reference_ = ExactPoint(box.xmin(), box.ymin(), box.zmin());
-    }
-
-    const Datum& datum() const { return (*triangles_)[face_]; }
-    Id id() const { return face_; }
-    const Point& reference_point() const { return reference_; }
-
-   private:
-    const std::vector<ExactTriangle>* triangles_;
-    Index face_;
-    ExactPoint reference_;
-  };
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<ExactKernel, FacePrimitive>>;
   static constexpr int kAttempts = 32;
+  static constexpr double kRelativeMargin = 1e-9;
 
   // The face's normal on the side's side, tilted after the first attempt by a
   // smaller amount each time (so the ray stays on that side).
@@ -174,6 +167,39 @@ class RayCaster {
     return normal + along * (scale * ((attempt % 3) - 1)) + across * (scale * ((attempt % 5) - 2) / 2);
   }
 
+  // Where the ray from `from` along the unit vector `direction` enters `box`
+  // (slabs), in doubles.
+  static double entryDistance(const TreeBox& box, const Point3& from, const Point3& direction) {
+    double entry = 0;
+    const double low[3] = {bg::get<0>(box.min_corner()), bg::get<1>(box.min_corner()), bg::get<2>(box.min_corner())};
+    const double high[3] = {bg::get<0>(box.max_corner()), bg::get<1>(box.max_corner()), bg::get<2>(box.max_corner())};
+    for (int axis = 0; axis < 3; ++axis) {
+      if (direction[axis] == 0) continue;
+      const double a = (low[axis] - from[axis]) / direction[axis], b = (high[axis] - from[axis]) / direction[axis];
+      entry = std::max(entry, std::min(a, b));
+    }
+    return entry;
+  }
+
+  // The boxes the ray may meet, ordered by where its rounded copy enters them.
+  std::vector<std::pair<double, Index>> candidates(const ExactPoint& origin, const ExactVector& towards,
+                                                   Index face) const {
+    const Point3 from(CGAL::to_double(origin.x()), CGAL::to_double(origin.y()), CGAL::to_double(origin.z()));
+    const Point3 direction =
+        Point3(CGAL::to_double(towards.x()), CGAL::to_double(towards.y()), CGAL::to_double(towards.z())).normalized();
+    const Point3 to = from + reach_ * direction;
+    std::vector<TreeEntry> near;
+    const bg::model::segment<TreePoint> segment(TreePoint(from.x(), from.y(), from.z()),
+                                                TreePoint(to.x(), to.y(), to.z()));
+    tree_.query(bgi::intersects(segment), std::back_inserter(near));
+    std::vector<std::pair<double, Index>> ordered;
+    for (const auto& [box, other] : near) {
+      if (other != face) ordered.emplace_back(entryDistance(box, from, direction) - margin_, other);
+    }
+    std::sort(ordered.begin(), ordered.end());
+    return ordered;
+  }
+
   // The nearest face the ray meets decides: faces of a complex meet only in shared
   // edges and vertices, so a point inside one face lies on no other.
   RayHit cast(Index side, int attempt) const {
@@ -181,13 +207,30 @@ class RayCaster {
     const ExactTriangle& triangle = triangles_[face];
     const ExactPoint origin = CGAL::centroid(triangle[0], triangle[1], triangle[2]);
     const ExactVector towards = direction(triangle, isFront(side), attempt);
-    const auto hit = tree_.first_intersection(ExactRay(origin, towards), [&](Index other) { return other == face; });
-    if (!hit) return {};
-    const Index other = hit->second;
-    const ExactPoint* point = boost::get<ExactPoint>(&hit->first);
-    if (!point || onBoundary(triangles_[other], *point)) return {true, std::nullopt};
-    const ExactVector normal = CGAL::normal(triangles_[other][0], triangles_[other][1], triangles_[other][2]);
-    return {false, CGAL::scalar_product(normal, towards) < 0 ? frontSide(other) : backSide(other)};
+    const ExactRay ray(origin, towards);
+    std::optional<ExactPoint> nearest;
+    Index nearestFace = 0;
+    std::optional<ExactKernel::FT> nearestDistance;  // squared
+    double bound = std::numeric_limits<double>::infinity();  // above the nearest distance
+    for (const auto& [entry, other] : candidates(origin, towards, face)) {
+      if (entry > bound) break;
+      const auto where = CGAL::intersection(ray, triangles_[other]);
+      if (!where) continue;
+      const ExactPoint* point = boost::get<ExactPoint>(&*where);
+      if (!point) return {true, std::nullopt};  // along a face
+      const ExactKernel::FT distance = CGAL::squared_distance(origin, *point);
+      if (nearestDistance && distance == *nearestDistance) return {true, std::nullopt};
+      if (nearestDistance && distance > *nearestDistance) continue;
+      nearest = *point;
+      nearestFace = other;
+      nearestDistance = distance;
+      bound = std::sqrt(CGAL::to_interval(distance).second) * (1 + 1e-9) + margin_;
+    }
+    if (!nearest) return {};
+    if (onBoundary(triangles_[nearestFace], *nearest)) return {true, std::nullopt};
+    const ExactTriangle& hit = triangles_[nearestFace];
+    const ExactVector normal = CGAL::normal(hit[0], hit[1], hit[2]);
+    return {false, CGAL::scalar_product(normal, towards) < 0 ? frontSide(nearestFace) : backSide(nearestFace)};
   }
 
   static bool onBoundary(const ExactTriangle& triangle, const ExactPoint& point) {
@@ -198,7 +241,9 @@ class RayCaster {
   }
 
   std::vector<ExactTriangle> triangles_;
-  Tree tree_;
+  TriangleTree tree_;
+  double margin_ = 0;  // widens the boxes
+  double reach_ = 0;   // the rounded ray's length, beyond the scene
 };
 
 // The sign of the volume a shell bounds, its faces turned towards the shell's cell:

@@ -5,12 +5,12 @@
 // of determinants of input coordinates, but refining triangles along their
 // intersections needs new points (exact constructions), which CGAL provides.
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-
 #include <cstdint>
 #include <initializer_list>
 #include <utility>
 #include <vector>
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 
 #include "soup_enclosure.h"
 #include "triangle_box_tree.h"

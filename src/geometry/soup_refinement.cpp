@@ -1,12 +1,12 @@
 // Refinement of a soup's triangles along their intersections (soup_complex.h).
 
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/intersections.h>
-
 #include <array>
 #include <map>
 #include <optional>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/intersections.h>
 
 #include "closed_triangle_tests.h"
 #include "disjoint_sets.h"
