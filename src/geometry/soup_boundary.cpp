@@ -13,10 +13,14 @@ namespace {
 using Index = std::uint32_t;
 using Edge = std::pair<Index, Index>;
 
-Point3 rounded(const ExactPoint& point) {
-  return {CGAL::to_double(CGAL::exact(point.x())), CGAL::to_double(CGAL::exact(point.y())),
-          CGAL::to_double(CGAL::exact(point.z()))};
+// A coordinate that CGAL approximates by a single double is that double: only the
+// others are evaluated exactly.
+double rounded(const ExactKernel::FT& coordinate) {
+  const auto [low, high] = CGAL::to_interval(coordinate);
+  return low == high ? low : CGAL::to_double(CGAL::exact(coordinate));
 }
+
+Point3 rounded(const ExactPoint& point) { return {rounded(point.x()), rounded(point.y()), rounded(point.z())}; }
 
 // The boundary's components: faces joined by pairings, numbered in face order.
 class Components {

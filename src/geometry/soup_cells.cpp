@@ -127,8 +127,8 @@ class RayCaster {
     }
     CGAL::Bbox_3 scene;
     for (const ExactTriangle& triangle : triangles_) scene += triangle.bbox();
-    const double diagonal = std::hypot(scene.xmax() - scene.xmin(), scene.ymax() - scene.ymin(),
-                                       scene.zmax() - scene.zmin());
+    const double diagonal =
+        std::hypot(scene.xmax() - scene.xmin(), scene.ymax() - scene.ymin(), scene.zmax() - scene.zmin());
     margin_ = kRelativeMargin * diagonal + std::numeric_limits<double>::min();
     reach_ = 4 * diagonal + margin_;
     std::vector<TreeEntry> entries;
@@ -210,7 +210,7 @@ class RayCaster {
     const ExactRay ray(origin, towards);
     std::optional<ExactPoint> nearest;
     Index nearestFace = 0;
-    std::optional<ExactKernel::FT> nearestDistance;  // squared
+    std::optional<ExactKernel::FT> nearestDistance;          // squared
     double bound = std::numeric_limits<double>::infinity();  // above the nearest distance
     for (const auto& [entry, other] : candidates(origin, towards, face)) {
       if (entry > bound) break;

@@ -3,6 +3,7 @@
 #include <array>
 #include <map>
 #include <optional>
+#include <tuple>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -172,20 +173,43 @@ class PairMeetings {
     return std::all_of(triangle.begin(), triangle.end(), [&](Index vertex) { return vertex < vertices_.size(); });
   }
 
-  // A boundary point's key names it among every pair's points once the plane of
-  // a crossing of a face is added (the edges of a crossing of two edges name it).
-  using CrossingKey = std::pair<std::array<Index, 4>, Triangle>;
+  // Where an edge crosses a plane, by the edge's ends (in order) and the plane: its
+  // axis and offset when it is parallel to a coordinate plane (one name for every
+  // triangle in it, such as the faces of walls glued together), else the corners of
+  // the triangle that spans it (in order), with axis -1.
+  using PlaneCrossing = std::tuple<Index, Index, int, double, Triangle>;
 
+  PlaneCrossing planeCrossing(Index a, Index b, const Triangle& plane) const {
+    for (int axis = 0; axis < 3; ++axis) {
+      const double offset = vertices_[plane[0]][axis];
+      if (vertices_[plane[1]][axis] == offset && vertices_[plane[2]][axis] == offset) {
+        return {std::min(a, b), std::max(a, b), axis, offset, Triangle{}};
+      }
+    }
+    Triangle corners = plane;
+    std::sort(corners.begin(), corners.end());
+    return {std::min(a, b), std::max(a, b), -1, 0.0, corners};
+  }
+
+  // Each crossing point is made once under every name it is met by: its edge and
+  // plane, and for a crossing of two edges (a boundary point's key then names the
+  // two), those edges. Another name for it still finds it among the points, by an
+  // exact comparison.
   Index indexOf(const Tests::BoundaryPoint& point) {
     const auto [a, b] = point.edge;
     if (a == b) return a;
-    Triangle plane{};
-    if (point.key[0] == point.key[2] && point.key[1] == point.key[3]) {
-      plane = point.plane;
-      std::sort(plane.begin(), plane.end());
+    const bool onTwoEdges = point.key[0] != point.key[2] || point.key[1] != point.key[3];
+    const PlaneCrossing byPlane = planeCrossing(a, b, point.plane);
+    if (onTwoEdges) {
+      const auto known = edgeCrossings_.find(point.key);
+      if (known != edgeCrossings_.end()) {
+        planeCrossings_.emplace(byPlane, known->second);
+        return known->second;
+      }
     }
-    const auto [found, inserted] = crossings_.try_emplace({point.key, plane});
+    const auto [found, inserted] = planeCrossings_.try_emplace(byPlane);
     if (inserted) found->second = points_.indexOf(crossing(a, b, point.plane));
+    if (onTwoEdges) edgeCrossings_.emplace(point.key, found->second);
     return found->second;
   }
 
@@ -212,7 +236,8 @@ class PairMeetings {
 
   const std::vector<Point3>& vertices_;
   PointIndex& points_;
-  std::map<CrossingKey, Index> crossings_;
+  std::map<PlaneCrossing, Index> planeCrossings_;
+  std::map<std::array<Index, 4>, Index> edgeCrossings_;
   PredicateStatistics statistics_;
   VertexPredicates predicates_;
 };
