@@ -2,12 +2,17 @@
 
 #include <array>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <tuple>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/intersections.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
 
 #include "closed_triangle_tests.h"
 #include "disjoint_sets.h"
@@ -242,40 +247,71 @@ class PairMeetings {
   VertexPredicates predicates_;
 };
 
+using ClusterTriangulation = CGAL::Constrained_Delaunay_triangulation_2<
+    ExactKernel,
+    CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_with_info_2<std::optional<Index>, ExactKernel>,
+                                         CGAL::Constrained_triangulation_face_base_2<ExactKernel>>,
+    CGAL::Exact_intersections_tag>;
+
+// The points of a cluster (the members' corners, the constraints' ends and points),
+// each once, inserted in spatial order (by their approximations), each located from
+// the last one: a short walk, whose orientation tests at degenerate places (points on
+// lines through others, everywhere on walls parallel to coordinate planes) are
+// evaluated exactly. Returns each index's vertex.
+std::map<Index, ClusterTriangulation::Vertex_handle> insertPoints(
+    const std::map<Index, ClusterPlane::Point2>& projected, ClusterTriangulation& triangulation) {
+  using Approximate = CGAL::Exact_predicates_inexact_constructions_kernel;
+  std::vector<Approximate::Point_2> approximations;
+  std::vector<std::map<Index, ClusterPlane::Point2>::const_iterator> entries;
+  for (auto entry = projected.begin(); entry != projected.end(); ++entry) {
+    approximations.emplace_back(CGAL::to_double(entry->second.x()), CGAL::to_double(entry->second.y()));
+    entries.push_back(entry);
+  }
+  std::vector<std::size_t> order(entries.size());
+  std::iota(order.begin(), order.end(), 0);
+  using Traits =
+      CGAL::Spatial_sort_traits_adapter_2<Approximate, CGAL::Pointer_property_map<Approximate::Point_2>::type>;
+  CGAL::spatial_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(approximations)));
+  std::map<Index, ClusterTriangulation::Vertex_handle> vertices;
+  ClusterTriangulation::Face_handle hint;
+  for (std::size_t k : order) {
+    const auto vertex = triangulation.insert(entries[k]->second, hint);
+    vertex->info() = entries[k]->first;
+    vertices[entries[k]->first] = vertex;
+    hint = vertex->face();
+  }
+  return vertices;
+}
+
 // Triangulates the union of a cluster's coplanar triangles with its constraints and
 // appends the faces inside the triangles (each vertex of the soup keeps its index).
 void triangulateCluster(const std::vector<Index>& members, const std::vector<TriangleIndices>& triangles,
                         const Constraints& constraints, PointIndex& points, SoupComplex& complex) {
-  using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<std::optional<Index>, ExactKernel>;
-  using FaceBase = CGAL::Constrained_triangulation_face_base_2<ExactKernel>;
-  using Triangulation = CGAL::Constrained_Delaunay_triangulation_2<
-      ExactKernel, CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>, CGAL::Exact_intersections_tag>;
   const ClusterPlane plane(exactTriangle(points, triangles[members.front()]));
-  Triangulation triangulation;
   std::map<Index, ClusterPlane::Point2> projected;  // the points inserted, by index
   const auto corner = [&](Index vertex) {
     const auto [found, inserted] = projected.try_emplace(vertex);
     if (inserted) found->second = plane.project(points[vertex]);
     return found->second;
   };
-  const auto insertPoint = [&](Index vertex) {
-    const auto handle = triangulation.insert(corner(vertex));
-    handle->info() = vertex;
-    return handle;
-  };
+  for (Index t : members) {
+    for (Index vertex : triangles[t]) corner(vertex);
+  }
+  for (const auto& [source, target] : constraints.segments) {
+    corner(source);
+    corner(target);
+  }
+  for (Index point : constraints.points) corner(point);
+  ClusterTriangulation triangulation;
+  const std::map<Index, ClusterTriangulation::Vertex_handle> vertices = insertPoints(projected, triangulation);
   for (Index t : members) {
     for (int k = 0; k < 3; ++k) {
-      triangulation.insert_constraint(insertPoint(triangles[t][k]), insertPoint(triangles[t][(k + 1) % 3]));
+      triangulation.insert_constraint(vertices.at(triangles[t][k]), vertices.at(triangles[t][(k + 1) % 3]));
     }
   }
   for (const auto& [source, target] : constraints.segments) {
-    if (source == target) {
-      insertPoint(source);
-    } else {
-      triangulation.insert_constraint(insertPoint(source), insertPoint(target));
-    }
+    if (source != target) triangulation.insert_constraint(vertices.at(source), vertices.at(target));
   }
-  for (Index point : constraints.points) insertPoint(point);
 
   const auto inside = [&](Index t, const ClusterPlane::Point2& point) {
     const ClusterPlane::Point2 &a = corner(triangles[t][0]), &b = corner(triangles[t][1]), &c = corner(triangles[t][2]);
@@ -286,7 +322,7 @@ void triangulateCluster(const std::vector<Index>& members, const std::vector<Tri
   // A vertex the triangulation made (where constraints cross) is lifted and looked up
   // once (its faces share it): the lookup compares equal points, which makes CGAL
   // evaluate them exactly.
-  const auto indexOf = [&](const typename Triangulation::Vertex_handle& vertex) {
+  const auto indexOf = [&](const ClusterTriangulation::Vertex_handle& vertex) {
     if (!vertex->info()) vertex->info() = points.indexOf(plane.lift(vertex->point()));
     return *vertex->info();
   };
