@@ -326,10 +326,15 @@ void triangulateCluster(const std::vector<Index>& members, const std::vector<Tri
     if (!vertex->info()) vertex->info() = points.indexOf(plane.lift(vertex->point()));
     return *vertex->info();
   };
-  for (auto face = triangulation.finite_faces_begin(); face != triangulation.finite_faces_end(); ++face) {
+  // The points of a lone triangle all lie in it, and so does every face.
+  const auto sourceOf = [&](const ClusterTriangulation::Face_handle& face) {
+    if (members.size() == 1) return members.begin();
     const ClusterPlane::Point2 centre =
         CGAL::centroid(face->vertex(0)->point(), face->vertex(1)->point(), face->vertex(2)->point());
-    const auto source = std::find_if(members.begin(), members.end(), [&](Index t) { return inside(t, centre); });
+    return std::find_if(members.begin(), members.end(), [&](Index t) { return inside(t, centre); });
+  };
+  for (auto face = triangulation.finite_faces_begin(); face != triangulation.finite_faces_end(); ++face) {
+    const auto source = sourceOf(face);
     if (source == members.end()) continue;  // in the convex hull of the triangles, outside them
     complex.faces.push_back({indexOf(face->vertex(0)), indexOf(face->vertex(1)), indexOf(face->vertex(2))});
     complex.sourceTriangle.push_back(*source);
