@@ -67,18 +67,27 @@ Index thirdVertex(const TriangleIndices& face, Index u, Index v) {
 // The faces around each edge, in the order of their angle about the edge.
 class EdgeFans {
  public:
+  // Fans in the order of their edges (lower vertex, then higher), each fan's faces
+  // first in face order.
   explicit EdgeFans(const SoupComplex& complex) : complex_(complex) {
-    std::map<std::pair<Index, Index>, std::vector<EdgeFace>> fans;
+    std::vector<std::pair<std::uint64_t, EdgeFace>> uses;  // (edge: lower vertex, higher vertex), face
+    uses.reserve(3 * complex.faces.size());
     for (Index f = 0; f < complex.faces.size(); ++f) {
       const TriangleIndices& face = complex.faces[f];
       for (int corner = 0; corner < 3; ++corner) {
         const Index from = face[corner], to = face[(corner + 1) % 3];
-        fans[{std::min(from, to), std::max(from, to)}].push_back({f, from < to});
+        uses.push_back({(std::uint64_t{std::min(from, to)} << 32) | std::max(from, to), {f, from < to}});
       }
     }
-    for (auto& [edge, fan] : fans) {
-      if (fan.size() > 2) sortByAngle(edge.first, edge.second, fan);
+    std::stable_sort(uses.begin(), uses.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (auto first = uses.begin(); first != uses.end();) {
+      const std::uint64_t edge = first->first;
+      const auto last = std::find_if(first, uses.end(), [&](const auto& use) { return use.first != edge; });
+      std::vector<EdgeFace> fan;
+      for (auto use = first; use != last; ++use) fan.push_back(use->second);
+      if (fan.size() > 2) sortByAngle(static_cast<Index>(edge >> 32), static_cast<Index>(edge), fan);
       fans_.push_back(std::move(fan));
+      first = last;
     }
   }
 
@@ -325,8 +334,14 @@ class Cells {
       for (std::size_t i = 0; i < fan.size(); ++i)
         sides_.unite(risingSide(fan[i]), fallingSide(fan[(i + 1) % fan.size()]));
     }
-    std::map<Index, std::vector<Index>> shells;  // first side -> its sides
-    for (Index side = 0; side < 2 * complex.faces.size(); ++side) shells[sides_.find(side)].push_back(side);
+    std::vector<std::pair<Index, Index>> shellOfSide;  // (shell: a side of it, side), by shell then side
+    for (Index side = 0; side < 2 * complex.faces.size(); ++side) shellOfSide.emplace_back(sides_.find(side), side);
+    std::sort(shellOfSide.begin(), shellOfSide.end());
+    std::vector<std::pair<Index, std::vector<Index>>> shells;  // shell -> its sides
+    for (const auto& [shell, side] : shellOfSide) {
+      if (shells.empty() || shells.back().first != shell) shells.emplace_back(shell, std::vector<Index>{});
+      shells.back().second.push_back(side);
+    }
     const ShellVolumes volumes(complex);
     const RayCaster rays(complex);
     std::vector<Index> outerShells;
