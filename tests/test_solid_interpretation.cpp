@@ -336,4 +336,31 @@ TEST(SoupRepair, ClosedSurfacesTouchingAtAVertexGetVerticesOfTheirOwn) {
   EXPECT_EQ(mesh.vertices().size(), 16u) << "the shared corner (1, 1, 1) once for each box";
 }
 
+TEST(SolidInterpretation, GluedBoxesInsideGluedBoxesAreFoundByRaysAtEveryScale) {
+  // Two pairs of boxes glued along a wall (soups: edges used by four triangles), the
+  // small pair inside the large one: its outside bounds a hole of the large pair's
+  // region, joined to it by a ray, and the small pair's volume is counted once. The
+  // rays meet boxes in doubles, at any scale (Boost.Geometry's segment test missed
+  // boxes of models 1e-20 across); where doubles cannot hold a rounded ray (normals
+  // beyond the largest double), every face is tried.
+  const std::vector<Box3> boxes{box(0, 0, 0, 4, 4, 4), box(4, 0, 0, 5, 4, 4), box(1, 1, 1, 2, 2, 2),
+                                box(2, 1, 1, 3, 2, 2)};
+  std::vector<TriangleSoup> soups;
+  for (const Box3& b : boxes) soups.push_back(soupOf(b));
+  const TriangleSoup unit = joinSoups(soups);
+  PreparationReport report;
+  const double volume = prepared(unit, &report).volume();
+  EXPECT_DOUBLE_EQ(volume, 4 * 4 * 4 + 4 * 4) << "the small pair is enclosed: part of the solid";
+  EXPECT_EQ(report.solid.enclosedRegions, 4u);
+  for (const double scale : {1e-60, 1e-20, 1e20, 1e60}) {
+    SCOPED_TRACE(scale);
+    TriangleSoup scaled = unit;
+    for (Point3& vertex : scaled.vertices) vertex *= scale;
+    EXPECT_NEAR(prepared(scaled).volume() / (scale * scale * scale), volume, 1e-9 * volume);
+  }
+  TriangleSoup huge = unit;
+  for (Point3& vertex : huge.vertices) vertex *= 1e200;  // the diagonal's square overflows, the normals too
+  EXPECT_NE(errorOf(huge), "") << "refused as input, not a crash or another exception";
+}
+
 }  // namespace freespace

@@ -176,34 +176,52 @@ class RayCaster {
     return normal + along * (scale * ((attempt % 3) - 1)) + across * (scale * ((attempt % 5) - 2) / 2);
   }
 
-  // Where the ray from `from` along the unit vector `direction` enters `box`
-  // (slabs), in doubles.
-  static double entryDistance(const TreeBox& box, const Point3& from, const Point3& direction) {
-    double entry = 0;
+  // Where the ray from `from` along the unit vector `direction` enters `box` (slabs,
+  // in doubles), or nothing if it misses the box.
+  static std::optional<double> entryDistance(const TreeBox& box, const Point3& from, const Point3& direction) {
+    double entry = 0, exit = std::numeric_limits<double>::infinity();
     const double low[3] = {bg::get<0>(box.min_corner()), bg::get<1>(box.min_corner()), bg::get<2>(box.min_corner())};
     const double high[3] = {bg::get<0>(box.max_corner()), bg::get<1>(box.max_corner()), bg::get<2>(box.max_corner())};
     for (int axis = 0; axis < 3; ++axis) {
-      if (direction[axis] == 0) continue;
+      if (direction[axis] == 0) {
+        if (from[axis] < low[axis] || from[axis] > high[axis]) return std::nullopt;
+        continue;
+      }
       const double a = (low[axis] - from[axis]) / direction[axis], b = (high[axis] - from[axis]) / direction[axis];
       entry = std::max(entry, std::min(a, b));
+      exit = std::min(exit, std::max(a, b));
     }
+    if (entry > exit) return std::nullopt;
     return entry;
   }
 
-  // The boxes the ray may meet, ordered by where its rounded copy enters them.
+  // The boxes the ray may meet, ordered by where its rounded copy enters them; every
+  // face, unordered, where doubles cannot hold the rounded ray (coordinates near the
+  // largest or the smallest double).
   std::vector<std::pair<double, Index>> candidates(const ExactPoint& origin, const ExactVector& towards,
                                                    Index face) const {
     const Point3 from(CGAL::to_double(origin.x()), CGAL::to_double(origin.y()), CGAL::to_double(origin.z()));
     const Point3 direction =
         Point3(CGAL::to_double(towards.x()), CGAL::to_double(towards.y()), CGAL::to_double(towards.z())).normalized();
     const Point3 to = from + reach_ * direction;
-    std::vector<TreeEntry> near;
-    const bg::model::segment<TreePoint> segment(TreePoint(from.x(), from.y(), from.z()),
-                                                TreePoint(to.x(), to.y(), to.z()));
-    tree_.query(bgi::intersects(segment), std::back_inserter(near));
     std::vector<std::pair<double, Index>> ordered;
+    if (!to.allFinite() || !direction.allFinite() || direction.squaredNorm() == 0) {
+      for (Index other = 0; other < triangles_.size(); ++other) {
+        if (other != face) ordered.emplace_back(0, other);
+      }
+      return ordered;
+    }
+    // The boxes that meet the rounded ray's box, then the ray itself (Boost.Geometry's
+    // segment test misses boxes of models a few 1e-20 across).
+    std::vector<TreeEntry> near;
+    const TreeBox around(TreePoint(std::min(from.x(), to.x()), std::min(from.y(), to.y()), std::min(from.z(), to.z())),
+                         TreePoint(std::max(from.x(), to.x()), std::max(from.y(), to.y()), std::max(from.z(), to.z())));
+    tree_.query(bgi::intersects(around), std::back_inserter(near));
     for (const auto& [box, other] : near) {
-      if (other != face) ordered.emplace_back(entryDistance(box, from, direction) - margin_, other);
+      if (other == face) continue;
+      if (const std::optional<double> entry = entryDistance(box, from, direction)) {
+        ordered.emplace_back(*entry - margin_, other);
+      }
     }
     std::sort(ordered.begin(), ordered.end());
     return ordered;

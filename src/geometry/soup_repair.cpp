@@ -428,7 +428,7 @@ RepairReport unrepairedReport(const TriangleSoup& soup, const RepairSettings& se
   }
   report.toleranceIsRelative = !settings.absoluteTolerance.has_value();
   report.relativeTolerance = settings.relativeTolerance;
-  report.tolerance = settings.absoluteTolerance.value_or(settings.relativeTolerance * bounds.diagonal().norm());
+  report.tolerance = settings.absoluteTolerance.value_or(settings.relativeTolerance * bounds.diagonal().stableNorm());
   if (!std::isfinite(report.tolerance) || report.tolerance < 0) {
     throw std::invalid_argument("repair tolerance must be finite and not negative");
   }
