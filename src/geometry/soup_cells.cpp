@@ -349,8 +349,7 @@ class Cells {
  public:
   Cells(const SoupComplex& complex, const EdgeFans& fans) : sides_(2 * complex.faces.size()) {
     for (const std::vector<EdgeFace>& fan : fans.fans()) {
-      for (std::size_t i = 0; i < fan.size(); ++i)
-        sides_.unite(risingSide(fan[i]), fallingSide(fan[(i + 1) % fan.size()]));
+      for (std::size_t i = 0; i < fan.size(); ++i) sides_.unite(risingSide(fan[i]), fallingSide(fan[(i + 1) % fan.size()]));
     }
     std::vector<std::pair<Index, Index>> shellOfSide;  // (shell: a side of it, side), by shell then side
     for (Index side = 0; side < 2 * complex.faces.size(); ++side) shellOfSide.emplace_back(sides_.find(side), side);
@@ -422,8 +421,8 @@ SoupComplex withoutWithdrawnCaps(const SoupComplex& complex, Index firstCap, con
 
 double approximateArea(const SoupComplex& complex, Index face) {
   const TriangleIndices& corners = complex.faces[face];
-  return std::sqrt(CGAL::to_double(
-      CGAL::squared_area(complex.points[corners[0]], complex.points[corners[1]], complex.points[corners[2]])));
+  return std::sqrt(CGAL::to_double(CGAL::squared_area(complex.points[corners[0]], complex.points[corners[1]],
+                                                      complex.points[corners[2]])));
 }
 
 // Withdraws the caps of every enclosed region whose caps make up half its boundary or
@@ -464,8 +463,8 @@ bool isSliver(const SoupComplex& complex, Index face, double tolerance) {
     const ExactPoint& point = complex.points[complex.faces[face][i]];
     corners[i] = Point3(CGAL::to_double(point.x()), CGAL::to_double(point.y()), CGAL::to_double(point.z()));
   }
-  const double longest =
-      std::max({(corners[1] - corners[0]).norm(), (corners[2] - corners[1]).norm(), (corners[0] - corners[2]).norm()});
+  const double longest = std::max({(corners[1] - corners[0]).norm(), (corners[2] - corners[1]).norm(),
+                                   (corners[0] - corners[2]).norm()});
   return (corners[1] - corners[0]).cross(corners[2] - corners[0]).norm() <= tolerance * longest;
 }
 
@@ -476,14 +475,11 @@ EnclosedSolid classifiedFaces(const SoupComplex& complex, const EdgeFans& fans, 
                               double tolerance) {
   EnclosedSolid solid;
   solid.boundedCells = cells.boundedCount();
-  const auto isBoundary = [&](Index face) {
-    return cells.isOutside(frontSide(face)) != cells.isOutside(backSide(face));
-  };
+  const auto isBoundary = [&](Index face) { return cells.isOutside(frontSide(face)) != cells.isOutside(backSide(face)); };
   std::vector<BoundaryPairing> pairings;
   for (const std::vector<EdgeFace>& fan : fans.fans()) {
     std::vector<EdgeFace> boundary;
-    std::copy_if(fan.begin(), fan.end(), std::back_inserter(boundary),
-                 [&](const EdgeFace& entry) { return isBoundary(entry.face); });
+    std::copy_if(fan.begin(), fan.end(), std::back_inserter(boundary), [&](const EdgeFace& entry) { return isBoundary(entry.face); });
     for (std::size_t i = 0; i < boundary.size(); ++i) {
       if (cells.isOutside(risingSide(boundary[i]))) continue;
       const TriangleIndices& corners = complex.faces[boundary[i].face];
