@@ -54,7 +54,10 @@ class ClosedTriangleTests {
   struct BoundaryPoint {
     std::array<Id, 2> edge;
     Triangle plane;
-    std::array<Id, 4> key;
+    std::array<Id, 4> key;  // a corner (c, c, c, c); an edge (a, b, a, b); two edges (a, b, c, d)
+
+    /// A crossing of an edge of each triangle, which its key names by both edges.
+    bool onTwoEdges() const { return key[0] != key[2] || key[1] != key[3]; }
   };
 
   /// Where closed triangles P and Q, which do not lie in one plane, meet on the

@@ -203,8 +203,8 @@ class PairMeetings {
   Index indexOf(const Tests::BoundaryPoint& point) {
     const auto [a, b] = point.edge;
     if (a == b) return a;
-    const bool onTwoEdges = point.key[0] != point.key[2] || point.key[1] != point.key[3];
     const PlaneCrossing byPlane = planeCrossing(a, b, point.plane);
+    const bool onTwoEdges = point.onTwoEdges();
     if (onTwoEdges) {
       const auto known = edgeCrossings_.find(point.key);
       if (known != edgeCrossings_.end()) {
@@ -223,8 +223,7 @@ class PairMeetings {
   // crossings of walls parallel to coordinate planes are doubles, or nearly, whose
   // degenerate predicates CGAL's interval filter decides without exact evaluation.
   ExactPoint crossing(Index a, Index b, const Triangle& plane) const {
-    const ExactPoint general = ExactKernel().construct_plane_line_intersection_point_3_object()(
-        points_[plane[0]], points_[plane[1]], points_[plane[2]], points_[a], points_[b]);
+    std::optional<ExactPoint> general;  // made only for a coordinate that needs it
     std::array<ExactKernel::FT, 3> coordinates;
     for (int axis = 0; axis < 3; ++axis) {
       const auto constant = [&](Index u, Index w) { return vertices_[u][axis] == vertices_[w][axis]; };
@@ -233,7 +232,11 @@ class PairMeetings {
       } else if (constant(plane[0], plane[1]) && constant(plane[0], plane[2])) {
         coordinates[axis] = vertices_[plane[0]][axis];
       } else {
-        coordinates[axis] = general.cartesian(axis);
+        if (!general) {
+          general = ExactKernel().construct_plane_line_intersection_point_3_object()(
+              points_[plane[0]], points_[plane[1]], points_[plane[2]], points_[a], points_[b]);
+        }
+        coordinates[axis] = general->cartesian(axis);
       }
     }
     return {coordinates[0], coordinates[1], coordinates[2]};
