@@ -13,14 +13,18 @@ namespace {
 using Index = std::uint32_t;
 using Edge = std::pair<Index, Index>;
 
-// A coordinate that CGAL approximates by a single double is that double: only the
-// others are evaluated exactly.
-double rounded(const ExactKernel::FT& coordinate) {
-  const auto [low, high] = CGAL::to_interval(coordinate);
-  return low == high ? low : CGAL::to_double(CGAL::exact(coordinate));
+// A coordinate that CGAL approximates by a single double is that double; the point
+// is evaluated exactly only for the others (CGAL's coordinate accessors would add a
+// node to its graph of constructions for each, evaluated on its own).
+Point3 rounded(const ExactPoint& point) {
+  const auto& approximation = CGAL::approx(point);
+  Point3 result;
+  for (int axis = 0; axis < 3; ++axis) {
+    const auto& interval = approximation[axis];
+    result[axis] = interval.inf() == interval.sup() ? interval.inf() : CGAL::to_double(CGAL::exact(point)[axis]);
+  }
+  return result;
 }
-
-Point3 rounded(const ExactPoint& point) { return {rounded(point.x()), rounded(point.y()), rounded(point.z())}; }
 
 // The boundary's components: faces joined by pairings, numbered in face order.
 class Components {
@@ -110,7 +114,8 @@ Point3 towardsFan(const SoupComplex& complex, const std::vector<BoundaryFace>& f
   const Point3 origin = rounded(complex.points[vertex]);
   for (const BoundaryFace& face : faces) {
     const TriangleIndices& corners = complex.faces[face.face];
-    if (std::find(corners.begin(), corners.end(), vertex) == corners.end() || fans.of(face.face, vertex) != fan) continue;
+    if (std::find(corners.begin(), corners.end(), vertex) == corners.end() || fans.of(face.face, vertex) != fan)
+      continue;
     for (Index corner : corners) {
       if (corner != vertex) sum += (rounded(complex.points[corner]) - origin).normalized();
     }
@@ -131,7 +136,8 @@ void assembleBoundary(const SoupComplex& complex, const std::vector<BoundaryFace
     const Index component = components.of(face.face);
     for (Index& corner : corners) {
       const int fan = fans.of(face.face, corner);
-      const auto [found, inserted] = copies.emplace(std::make_tuple(component, corner, fan), solid.boundary.vertices.size());
+      const auto [found, inserted] =
+          copies.emplace(std::make_tuple(component, corner, fan), solid.boundary.vertices.size());
       if (inserted) {
         Point3 position = rounded(complex.points[corner]);
         if (fan > 0) position += separation * towardsFan(complex, faces, fans, corner, fan);

@@ -8,6 +8,7 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Lazy.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/intersections.h>
@@ -34,6 +35,15 @@ struct Constraints {
   std::vector<std::pair<Index, Index>> segments;
   std::vector<Index> points;
 };
+
+// A construction of CGAL's lazy exact kernel from one functor template, written
+// once for both of its kernels: its result is one node of the kernel's graph of
+// constructions, evaluated exactly (in one step, when first needed) from its
+// arguments. CGAL's own constructions and coordinate accessors make a node each, and
+// the first exact evaluation of every node is synchronised (a system call each).
+template <template <class> class Functor>
+using LazyConstruction =
+    CGAL::Lazy_construction<ExactKernel, Functor<ExactKernel::Approximate_kernel>, Functor<ExactKernel::Exact_kernel>>;
 
 struct LessXyz {
   bool operator()(const ExactPoint& a, const ExactPoint& b) const { return CGAL::compare_xyz(a, b) == CGAL::SMALLER; }
@@ -100,10 +110,38 @@ int droppedAxis(const ExactTriangle& triangle) {
   return x >= y && x >= z ? 0 : (y >= z ? 1 : 2);
 }
 
+// The point p without its coordinate `dropped` (the next two in cyclic order), in
+// kernel K.
+template <class K>
+struct DropCoordinate {
+  using result_type = typename K::Point_2;
+  result_type operator()(const typename K::Point_3& p, int dropped) const {
+    return {p[(dropped + 1) % 3], p[(dropped + 2) % 3]};
+  }
+};
+
+// The point of `plane` whose coordinates other than `dropped` are q's (as
+// DropCoordinate orders them), in kernel K; the plane's normal has a nonzero
+// coordinate `dropped`.
+template <class K>
+struct LiftOntoPlane {
+  using result_type = typename K::Point_3;
+  result_type operator()(const typename K::Plane_3& plane, const typename K::Point_2& q, int dropped) const {
+    const std::array<typename K::FT, 3> normal{plane.a(), plane.b(), plane.c()};
+    const int u = (dropped + 1) % 3, v = (dropped + 2) % 3;
+    std::array<typename K::FT, 3> coordinates;
+    coordinates[u] = q.x();
+    coordinates[v] = q.y();
+    coordinates[dropped] = -(normal[u] * q.x() + normal[v] * q.y() + plane.d()) / normal[dropped];
+    return {coordinates[0], coordinates[1], coordinates[2]};
+  }
+};
+
 // A cluster's plane seen in the coordinate plane that keeps its area: points are
 // projected once (dropping one coordinate) and the triangulation runs on plane
 // points, whose predicates CGAL filters directly; a new point is lifted back onto
-// the plane exactly (solving the plane's equation for the dropped coordinate).
+// the plane exactly (solving the plane's equation for the dropped coordinate). Both
+// are single lazy nodes (LazyConstruction).
 class ClusterPlane {
  public:
   using Point2 = ExactKernel::Point_2;
@@ -112,31 +150,43 @@ class ClusterPlane {
       : plane_(triangle[0], triangle[1], triangle[2]), dropped_(droppedAxis(triangle)) {}
 
   Point2 project(const ExactPoint& p) const {
-    switch (dropped_) {
-      case 0:
-        return {p.y(), p.z()};
-      case 1:
-        return {p.z(), p.x()};
-      default:
-        return {p.x(), p.y()};
-    }
+    const LazyConstruction<DropCoordinate> drop;
+    return drop(p, dropped_);
   }
 
   ExactPoint lift(const Point2& q) const {
-    const ExactKernel::FT a = plane_.a(), b = plane_.b(), c = plane_.c(), d = plane_.d();
-    switch (dropped_) {
-      case 0:
-        return {-(b * q.x() + c * q.y() + d) / a, q.x(), q.y()};
-      case 1:
-        return {q.y(), -(a * q.y() + c * q.x() + d) / b, q.x()};
-      default:
-        return {q.x(), q.y(), -(a * q.x() + b * q.y() + d) / c};
-    }
+    const LazyConstruction<LiftOntoPlane> lift;
+    return lift(plane_, q, dropped_);
   }
 
  private:
   ExactKernel::Plane_3 plane_;
   int dropped_;
+};
+
+// Where the line through a and b crosses the plane through p, q and r (they are not
+// parallel), in kernel K, with each coordinate whose bit is set in `edgeConstant`
+// taken from a (the edge keeps it) and else, if set in `planeConstant`, from p.
+template <class K>
+struct EdgePlaneCrossing {
+  using Point = typename K::Point_3;
+  using result_type = Point;
+  Point operator()(const Point& p, const Point& q, const Point& r, const Point& a, const Point& b, int edgeConstant,
+                   int planeConstant) const {
+    std::optional<Point> general;  // made only for a coordinate that needs it
+    std::array<typename K::FT, 3> coordinates;
+    for (int axis = 0; axis < 3; ++axis) {
+      if (edgeConstant >> axis & 1) {
+        coordinates[axis] = a[axis];
+      } else if (planeConstant >> axis & 1) {
+        coordinates[axis] = p[axis];
+      } else {
+        if (!general) general = K().construct_plane_line_intersection_point_3_object()(p, q, r, a, b);
+        coordinates[axis] = (*general)[axis];
+      }
+    }
+    return {coordinates[0], coordinates[1], coordinates[2]};
+  }
 };
 
 // How pairs of triangles on a soup's vertices meet, from signs of determinants of
@@ -218,28 +268,20 @@ class PairMeetings {
     return found->second;
   }
 
-  // Where the edge ab crosses the plane of `plane`: one construction, but each
-  // coordinate that the edge or the plane keeps constant is that double, so the
+  // Where the edge ab crosses the plane of `plane`, one lazy node (EdgePlaneCrossing):
+  // each coordinate that the edge or the plane keeps constant is that double, so the
   // crossings of walls parallel to coordinate planes are doubles, or nearly, whose
   // degenerate predicates CGAL's interval filter decides without exact evaluation.
   ExactPoint crossing(Index a, Index b, const Triangle& plane) const {
-    std::optional<ExactPoint> general;  // made only for a coordinate that needs it
-    std::array<ExactKernel::FT, 3> coordinates;
+    int edgeConstant = 0, planeConstant = 0;  // bits by axis
     for (int axis = 0; axis < 3; ++axis) {
       const auto constant = [&](Index u, Index w) { return vertices_[u][axis] == vertices_[w][axis]; };
-      if (constant(a, b)) {
-        coordinates[axis] = vertices_[a][axis];
-      } else if (constant(plane[0], plane[1]) && constant(plane[0], plane[2])) {
-        coordinates[axis] = vertices_[plane[0]][axis];
-      } else {
-        if (!general) {
-          general = ExactKernel().construct_plane_line_intersection_point_3_object()(
-              points_[plane[0]], points_[plane[1]], points_[plane[2]], points_[a], points_[b]);
-        }
-        coordinates[axis] = general->cartesian(axis);
-      }
+      if (constant(a, b)) edgeConstant |= 1 << axis;
+      if (constant(plane[0], plane[1]) && constant(plane[0], plane[2])) planeConstant |= 1 << axis;
     }
-    return {coordinates[0], coordinates[1], coordinates[2]};
+    const LazyConstruction<EdgePlaneCrossing> construct;
+    return construct(points_[plane[0]], points_[plane[1]], points_[plane[2]], points_[a], points_[b], edgeConstant,
+                     planeConstant);
   }
 
   const std::vector<Point3>& vertices_;
