@@ -328,7 +328,7 @@ const MalformedFile kMalformedFiles[] = {
     {"bad_truncated.obj", "OBJ line 13: a face with 2 vertices (at least 3 needed)"},
     {"bad_nonmanifold.obj", "1 triangle encloses nothing"},
     {"bad_zero_area.obj", "2 triangles enclose nothing"},
-    {"bad_flat.obj", "3 triangles enclose nothing"},
+    {"bad_flat.obj", "4 triangles enclose nothing"},
     {"bad_nan.obj", "a vertex at (0, 0, nan) as read: coordinates must be finite"},
     {"bad_no_triangles.obj", "contains no triangles"},
     {"bad_index.obj", "cannot read mesh: OBJ: vertex index out of range"},

@@ -7,8 +7,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
+#include <set>
 
 #include "freespace/geometry/mesh_preparation.h"
 #include "freespace/input_error.h"
@@ -144,6 +146,26 @@ TEST(SolidInterpretation, InterpenetratingDoubleSidedBoxesAreTheirUnion) {
     const Mesh mesh = prepared(doubleSided(joinSoups(soups)));
     expectSameSolid(mesh, boxes, trial);
   }
+}
+
+TEST(SolidInterpretation, CrossingWallsGetNoPointsWhereTheyCrossTheCutsOfEachOthersFaces) {
+  // Walls without bottoms (a soup), each face two triangles cut along a diagonal;
+  // the other wall crosses the cuts at points such as (4, 4, 4/3), which only the
+  // cut makes and doubles cannot hold. The solid's boundary has none of them: every
+  // coordinate of its vertices is one of the boxes'.
+  const std::vector<Box3> boxes{box(0, 4, 0, 9, 5, 3), box(4, 0, 0, 5, 9, 2)};
+  const Mesh mesh =
+      prepared(doubleSided(joinSoups({withoutFace(soupOf(boxes[0]), 2, 0), withoutFace(soupOf(boxes[1]), 2, 0)})));
+  EXPECT_EQ(mesh.componentCount(), 1u);
+  EXPECT_DOUBLE_EQ(mesh.volume(), 27 + 18 - 2);
+  const std::array<std::set<double>, 3> coordinates{std::set<double>{0, 4, 5, 9}, std::set<double>{0, 4, 5, 9},
+                                                    std::set<double>{0, 2, 3}};
+  for (const Point3& vertex : mesh.vertices()) {
+    for (int axis = 0; axis < 3; ++axis) {
+      EXPECT_EQ(coordinates[axis].count(vertex[axis]), 1u) << "vertex " << vertex.transpose();
+    }
+  }
+  expectSameSolid(mesh, boxes, 5);
 }
 
 TEST(SolidInterpretation, OpenEndedWallsBuriedInOneAnotherCloseTogether) {

@@ -154,7 +154,8 @@ std::pair<OpenTriangles, OpenTriangles> openTriangles(const std::vector<detail::
     OpenTriangles& kind = beyond ? outOfReach : inReach;
     ++kind.pieces;
     kind.bounds.extend(face.bounds);
-    (beyond ? outOfReachSources : inReachSources).push_back(face.sourceTriangle);
+    std::vector<Index>& sources = beyond ? outOfReachSources : inReachSources;
+    sources.insert(sources.end(), face.sourceTriangles.begin(), face.sourceTriangles.end());
   }
   inReach.sourceTriangles = countDistinct(inReachSources);
   outOfReach.sourceTriangles = countDistinct(outOfReachSources);

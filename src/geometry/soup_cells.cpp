@@ -21,6 +21,7 @@
 #include <stdexcept>
 
 #include <CGAL/Interval_nt.h>
+#include <CGAL/intersections.h>
 
 #include "disjoint_sets.h"
 #include "soup_boundary.h"
@@ -397,8 +398,29 @@ class Cells {
   std::vector<bool> bounded_;
 };
 
+ExactKernel::Triangle_3 exactTriangle(const SoupComplex& complex, const TriangleIndices& corners) {
+  return {complex.points[corners[0]], complex.points[corners[1]], complex.points[corners[2]]};
+}
+
+// Whether two triangles in one plane share an area (CGAL's intersection is then a
+// triangle or a polygon), decided exactly.
+bool shareArea(const ExactKernel::Triangle_3& first, const ExactKernel::Triangle_3& second) {
+  const auto intersection = CGAL::intersection(first, second);
+  return intersection &&
+         (boost::get<ExactKernel::Triangle_3>(&*intersection) || boost::get<std::vector<ExactPoint>>(&*intersection));
+}
+
 OpenFace openFace(const SoupComplex& complex, Index face) {
-  OpenFace open{complex.sourceTriangle[face], {}};
+  const Index source = complex.sourceTriangle[face];
+  OpenFace open{{source}, {}};
+  const ExactKernel::Triangle_3 faceTriangle = exactTriangle(complex, complex.faces[face]);
+  if (complex.clusterOf[face] != SoupComplex::kNoCluster) {
+    for (const auto& [member, corners] : complex.clusters[complex.clusterOf[face]]) {
+      if (member != source && shareArea(faceTriangle, exactTriangle(complex, corners))) {
+        open.sourceTriangles.push_back(member);
+      }
+    }
+  }
   for (Index corner : complex.faces[face]) {
     const ExactPoint& point = complex.points[corner];
     open.bounds.extend(Point3(CGAL::to_double(point.x()), CGAL::to_double(point.y()), CGAL::to_double(point.z())));
@@ -410,11 +432,13 @@ OpenFace openFace(const SoupComplex& complex, Index face) {
 SoupComplex withoutWithdrawnCaps(const SoupComplex& complex, Index firstCap, const std::vector<bool>& withdrawn) {
   SoupComplex kept;
   kept.points = complex.points;
+  kept.clusters = complex.clusters;
   for (Index face = 0; face < complex.faces.size(); ++face) {
     const Index source = complex.sourceTriangle[face];
     if (source >= firstCap && withdrawn[source - firstCap]) continue;
     kept.faces.push_back(complex.faces[face]);
     kept.sourceTriangle.push_back(source);
+    kept.clusterOf.push_back(complex.clusterOf[face]);
   }
   return kept;
 }
@@ -537,7 +561,7 @@ EnclosedSolid enclosedSolid(const std::vector<Point3>& vertices, const std::vect
   const std::vector<std::pair<Index, Index>> withCaps = capMeetingPairs(points, all, firstCap);
   pairs.insert(pairs.end(), withCaps.begin(), withCaps.end());
 
-  const SoupComplex complex = refineSoup(vertices, points, all, pairs);
+  const SoupComplex complex = refineSoup(vertices, points, all, pairs, firstCap);
   EnclosedSolid solid = enclosedSolid(complex, firstCap, tolerance);
   solid.meetingPairs = soupPairs;
   solid.refinedTriangles = complex.refinedTriangles;

@@ -34,18 +34,27 @@ inline TreeBox boxAround(std::initializer_list<const ExactPoint*> points) {
 /// triangles that overlap are triangulated together, so their common parts become
 /// one face).
 struct SoupComplex {
+  static constexpr std::uint32_t kNoCluster = ~std::uint32_t{0};
+
   std::vector<ExactPoint> points;  // the soup's vertices (same indices), then new points
   std::vector<TriangleIndices> faces;
   std::vector<std::uint32_t> sourceTriangle;  // the soup triangle each face lies in (one of them, if several)
-  std::size_t refinedTriangles = 0;           // soup triangles that were split
+  /// A face of coplanar soup triangles triangulated together (they overlap, or
+  /// continue one another across a seam: soup_seams.h) may lie in several of them:
+  /// its cluster (an index into `clusters`, else kNoCluster), each cluster's soup
+  /// triangles with their corners.
+  std::vector<std::uint32_t> clusterOf;
+  std::vector<std::vector<std::pair<std::uint32_t, TriangleIndices>>> clusters;
+  std::size_t refinedTriangles = 0;  // soup triangles that were split
 };
 
 /// `pairs` lists every pair of the triangles (on `points`) that meet beyond their
 /// shared features; the other triangles become faces as they are. The first points
-/// are `vertices` (the soup's, in doubles); the others are new.
+/// are `vertices` (the soup's, in doubles); the others are new. Triangles from
+/// `firstCap` on are caps, never the sides of a seam (soup_seams.h).
 SoupComplex refineSoup(const std::vector<Point3>& vertices, const std::vector<ExactPoint>& points,
                        const std::vector<TriangleIndices>& triangles,
-                       const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs);
+                       const std::vector<std::pair<std::uint32_t, std::uint32_t>>& pairs, std::uint32_t firstCap);
 
 /// Triangles that would close a soup's planar openings (see enclosedSolid), on the
 /// soup's vertices and new points where its edges cross in the plane.

@@ -11,9 +11,10 @@
 
 namespace freespace::detail {
 
-/// A face that encloses nothing: the soup triangle it lies in and a box holding it.
+/// A face that encloses nothing: the soup triangles it lies in (has area in) and a
+/// box holding it.
 struct OpenFace {
-  std::uint32_t sourceTriangle = 0;
+  std::vector<std::uint32_t> sourceTriangles;
   Box3 bounds;
 };
 

@@ -4,6 +4,7 @@
 #include <map>
 #include <numeric>
 #include <optional>
+#include <set>
 #include <tuple>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -19,6 +20,7 @@
 #include "disjoint_sets.h"
 #include "freespace/numbers/double_double_interval.h"
 #include "soup_complex.h"
+#include "soup_seams.h"
 #include "vertex_predicates.h"
 
 namespace freespace::detail {
@@ -201,8 +203,8 @@ struct EdgePlaneCrossing {
 // by two boundary points or an overlap, go to CGAL.
 class PairMeetings {
  public:
-  PairMeetings(const std::vector<Point3>& vertices, PointIndex& points)
-      : vertices_(vertices), points_(points), predicates_(vertices, statistics_) {}
+  PairMeetings(const std::vector<Point3>& vertices, PointIndex& points, SeamPoints& seamPoints)
+      : vertices_(vertices), points_(points), seamPoints_(seamPoints), predicates_(vertices, statistics_) {}
 
   // Inside a NearestRoundingScope.
   std::optional<Meeting> of(const TriangleIndices& first, const TriangleIndices& second) {
@@ -211,18 +213,28 @@ class PairMeetings {
       const Triangle p{first[0], first[1], first[2]}, q{second[0], second[1], second[2]};
       if (!tests.inPlaneOf(p, q)) {
         const std::vector<Tests::BoundaryPoint> found = tests.boundaryMeetingPoints(p, q);
-        if (found.size() == 1) return Meeting{false, {indexOf(found[0])}};
+        if (found.size() == 1) return touching(indexOf(found[0]));
         if (found.size() == 2) return Meeting{false, {indexOf(found[0]), indexOf(found[1])}};
       } else if (tests.coplanarInteriorsOverlap(p, q)) {
         return Meeting{true, {}};
       }
     }
-    return generalMeeting(exactTriangle(points_, first), exactTriangle(points_, second), points_);
+    std::optional<Meeting> meeting =
+        generalMeeting(exactTriangle(points_, first), exactTriangle(points_, second), points_);
+    if (meeting) {
+      for (Index point : meeting->points) seamPoints_.keep(point);
+    }
+    return meeting;
   }
 
  private:
   using Tests = ClosedTriangleTests<VertexPredicates, Index>;
   using Triangle = Tests::Triangle;
+
+  Meeting touching(Index point) {
+    seamPoints_.keep(point);
+    return {false, {point}};
+  }
 
   bool onSoupVertices(const TriangleIndices& triangle) const {
     return std::all_of(triangle.begin(), triangle.end(), [&](Index vertex) { return vertex < vertices_.size(); });
@@ -249,10 +261,21 @@ class PairMeetings {
   // Each crossing point is made once under every name it is met by: its edge and
   // plane, and for a crossing of two edges (a boundary point's key then names the
   // two), those edges. Another name for it still finds it among the points, by an
-  // exact comparison.
+  // exact comparison. Every name tells the seam points which edges the point lies on.
   Index indexOf(const Tests::BoundaryPoint& point) {
     const auto [a, b] = point.edge;
     if (a == b) return a;
+    const Index index = crossingIndex(point);
+    seamPoints_.liesOn(index, a, b);
+    if (point.onTwoEdges()) {
+      seamPoints_.liesOn(index, point.key[0], point.key[1]);
+      seamPoints_.liesOn(index, point.key[2], point.key[3]);
+    }
+    return index;
+  }
+
+  Index crossingIndex(const Tests::BoundaryPoint& point) {
+    const auto [a, b] = point.edge;
     const PlaneCrossing byPlane = planeCrossing(a, b, point.plane);
     const bool onTwoEdges = point.onTwoEdges();
     if (onTwoEdges) {
@@ -286,6 +309,7 @@ class PairMeetings {
 
   const std::vector<Point3>& vertices_;
   PointIndex& points_;
+  SeamPoints& seamPoints_;
   std::map<PlaneCrossing, Index> planeCrossings_;
   std::map<std::array<Index, 4>, Index> edgeCrossings_;
   PredicateStatistics statistics_;
@@ -331,7 +355,7 @@ std::map<Index, ClusterTriangulation::Vertex_handle> insertPoints(
 // Triangulates the union of a cluster's coplanar triangles with its constraints and
 // appends the faces inside the triangles (each vertex of the soup keeps its index).
 void triangulateCluster(const std::vector<Index>& members, const std::vector<TriangleIndices>& triangles,
-                        const Constraints& constraints, PointIndex& points, SoupComplex& complex) {
+                        const Constraints& constraints, const Seams& seams, PointIndex& points, SoupComplex& complex) {
   const ClusterPlane plane(exactTriangle(points, triangles[members.front()]));
   std::map<Index, ClusterPlane::Point2> projected;  // the points inserted, by index
   const auto corner = [&](Index vertex) {
@@ -351,18 +375,21 @@ void triangulateCluster(const std::vector<Index>& members, const std::vector<Tri
   const std::map<Index, ClusterTriangulation::Vertex_handle> vertices = insertPoints(projected, triangulation);
   for (Index t : members) {
     for (int k = 0; k < 3; ++k) {
-      triangulation.insert_constraint(vertices.at(triangles[t][k]), vertices.at(triangles[t][(k + 1) % 3]));
+      const Index a = triangles[t][k], b = triangles[t][(k + 1) % 3];
+      if (!seams.sides(a, b)) triangulation.insert_constraint(vertices.at(a), vertices.at(b));
     }
   }
   for (const auto& [source, target] : constraints.segments) {
     if (source != target) triangulation.insert_constraint(vertices.at(source), vertices.at(target));
   }
 
+  // Closed: a face's interior lies inside the members' union or outside it (its
+  // boundary edges are constraints), but may cross a seam, with its centre on it.
   const auto inside = [&](Index t, const ClusterPlane::Point2& point) {
     const ClusterPlane::Point2 &a = corner(triangles[t][0]), &b = corner(triangles[t][1]), &c = corner(triangles[t][2]);
-    const CGAL::Orientation turn = CGAL::orientation(a, b, c);
-    return CGAL::orientation(a, b, point) == turn && CGAL::orientation(b, c, point) == turn &&
-           CGAL::orientation(c, a, point) == turn;
+    const CGAL::Orientation beyond = CGAL::opposite(CGAL::orientation(a, b, c));
+    return CGAL::orientation(a, b, point) != beyond && CGAL::orientation(b, c, point) != beyond &&
+           CGAL::orientation(c, a, point) != beyond;
   };
   // A vertex the triangulation made (where constraints cross) is lifted and looked up
   // once (its faces share it): the lookup compares equal points, which makes CGAL
@@ -378,11 +405,17 @@ void triangulateCluster(const std::vector<Index>& members, const std::vector<Tri
         CGAL::centroid(face->vertex(0)->point(), face->vertex(1)->point(), face->vertex(2)->point());
     return std::find_if(members.begin(), members.end(), [&](Index t) { return inside(t, centre); });
   };
+  const auto cluster = static_cast<Index>(members.size() == 1 ? SoupComplex::kNoCluster : complex.clusters.size());
+  if (cluster != SoupComplex::kNoCluster) {
+    complex.clusters.emplace_back();
+    for (Index t : members) complex.clusters.back().emplace_back(t, triangles[t]);
+  }
   for (auto face = triangulation.finite_faces_begin(); face != triangulation.finite_faces_end(); ++face) {
     const auto source = sourceOf(face);
     if (source == members.end()) continue;  // in the convex hull of the triangles, outside them
     complex.faces.push_back({indexOf(face->vertex(0)), indexOf(face->vertex(1)), indexOf(face->vertex(2))});
     complex.sourceTriangle.push_back(*source);
+    complex.clusterOf.push_back(cluster);
   }
 }
 
@@ -408,6 +441,32 @@ bool meetBeyondSharedFeatures(const std::vector<ExactPoint>& points, const Trian
                          (segment->source() == points[shared[1]] && segment->target() == points[shared[0]]));
   }
   return true;
+}
+
+// A meeting of two triangles as it splits one of them (`own`).
+struct Piece {
+  Index own;
+  Index other;
+  Meeting meeting;
+};
+
+// What splits each cluster (by its representative), with the points that only cuts
+// of planar faces made left out where nothing needs them (SeamPoints).
+std::map<Index, Constraints> clusterConstraints(const std::vector<Piece>& pieces, DisjointSets& clusters,
+                                                SeamPoints& seamPoints) {
+  std::map<Index, Constraints> constraints;
+  for (const Piece& piece : pieces) {
+    const Index cluster = clusters.find(piece.own);
+    addConstraint(piece.meeting, constraints[cluster]);
+    if (piece.meeting.points.size() == 2) {
+      seamPoints.addSegment(cluster, piece.own, piece.other, {piece.meeting.points[0], piece.meeting.points[1]});
+    }
+  }
+  for (auto& [cluster, around] : seamPoints.joins()) {
+    Constraints& split = constraints[cluster];
+    split.segments = SeamPoints::joined(split.segments, std::move(around));
+  }
+  return constraints;
 }
 
 }  // namespace
@@ -436,8 +495,8 @@ std::vector<std::pair<Index, Index>> capMeetingPairs(const std::vector<ExactPoin
 }
 
 SoupComplex refineSoup(const std::vector<Point3>& soupVertices, const std::vector<ExactPoint>& soupPoints,
-                       const std::vector<TriangleIndices>& triangles,
-                       const std::vector<std::pair<Index, Index>>& pairs) {
+                       const std::vector<TriangleIndices>& triangles, const std::vector<std::pair<Index, Index>>& pairs,
+                       Index firstCap) {
   PointIndex points(soupPoints);
   std::vector<bool> refined(triangles.size(), false);
   for (const auto& [first, second] : pairs) refined[first] = refined[second] = true;
@@ -445,12 +504,16 @@ SoupComplex refineSoup(const std::vector<Point3>& soupVertices, const std::vecto
     if (!refined[t]) continue;
     for (Index vertex : triangles[t]) points.addSoupVertex(vertex);
   }
+  std::vector<bool> seamSides = refined;  // caps are never cut by a modelling tool
+  std::fill(seamSides.begin() + std::min<std::size_t>(firstCap, triangles.size()), seamSides.end(), false);
+  const Seams seams(soupVertices, triangles, seamSides);
+  SeamPoints seamPoints(soupVertices, triangles, seams);
 
-  // Intersections: coplanar overlaps join clusters, the rest constrain them.
+  // Intersections: coplanar overlaps and seams join clusters, the rest constrain them.
   DisjointSets clusters(triangles.size());
-  std::vector<std::pair<Index, Meeting>> pieces;  // (triangle, piece)
+  std::vector<Piece> pieces;
   {
-    PairMeetings meetings(soupVertices, points);
+    PairMeetings meetings(soupVertices, points, seamPoints);
     const NearestRoundingScope rounding;
     for (const auto& [first, second] : pairs) {
       const std::optional<Meeting> meeting = meetings.of(triangles[first], triangles[second]);
@@ -459,25 +522,26 @@ SoupComplex refineSoup(const std::vector<Point3>& soupVertices, const std::vecto
         clusters.unite(first, second);
         continue;
       }
-      pieces.emplace_back(first, *meeting);
-      pieces.emplace_back(second, *meeting);
+      pieces.push_back({first, second, *meeting});
+      pieces.push_back({second, first, *meeting});
     }
   }
+  for (const auto& [edge, sides] : seams.all()) clusters.unite(sides.first, sides.second);
   std::map<Index, std::vector<Index>> members;  // cluster -> its triangles
-  std::map<Index, Constraints> constraints;     // cluster -> what splits it
   for (Index t = 0; t < triangles.size(); ++t) {
     if (refined[t]) members[clusters.find(t)].push_back(t);
   }
-  for (const auto& [triangle, piece] : pieces) addConstraint(piece, constraints[clusters.find(triangle)]);
+  std::map<Index, Constraints> constraints = clusterConstraints(pieces, clusters, seamPoints);
 
   SoupComplex complex;
   for (Index t = 0; t < triangles.size(); ++t) {
     if (refined[t]) continue;
     complex.faces.push_back(triangles[t]);
     complex.sourceTriangle.push_back(t);
+    complex.clusterOf.push_back(SoupComplex::kNoCluster);
   }
   for (const auto& [cluster, clusterMembers] : members) {
-    triangulateCluster(clusterMembers, triangles, constraints[cluster], points, complex);
+    triangulateCluster(clusterMembers, triangles, constraints[cluster], seams, points, complex);
     complex.refinedTriangles += clusterMembers.size();
   }
   complex.points = points.release();
