@@ -168,6 +168,26 @@ TEST(SolidInterpretation, CrossingWallsGetNoPointsWhereTheyCrossTheCutsOfEachOth
   expectSameSolid(mesh, boxes, 5);
 }
 
+TEST(SolidInterpretation, RandomCrossingWallsWithoutBottomsAreTheirUnion) {
+  // Walls standing on z = 0 without their bottom faces (capped), double-sided, cut
+  // along their faces' diagonals and crossing one another at random: the seams'
+  // crossings are left out where nothing needs them, and the solid stays the union.
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> corner(0, 6), length(1, 5), thickness(0.2, 1), height(1, 3);
+  for (int trial = 0; trial < 6; ++trial) {
+    std::vector<Box3> boxes;
+    std::vector<TriangleSoup> soups;
+    for (int i = 0; i < 6; ++i) {
+      const bool alongX = i % 2 == 0;
+      const double x = corner(random), y = corner(random), along = length(random), across = thickness(random);
+      boxes.push_back(box(x, y, 0, x + (alongX ? along : across), y + (alongX ? across : along), height(random)));
+      soups.push_back(withoutFace(soupOf(boxes.back()), 2, 0));
+    }
+    const Mesh mesh = prepared(doubleSided(joinSoups(soups)));
+    expectSameSolid(mesh, boxes, 20 + trial);
+  }
+}
+
 TEST(SolidInterpretation, OpenEndedWallsBuriedInOneAnotherCloseTogether) {
   // An L of two walls, each without the end face that lies inside the other: the
   // soup's only closed region is their union.
