@@ -46,12 +46,15 @@ Seams::Seams(const std::vector<Point3>& vertices, const std::vector<TriangleIndi
   VertexPredicates predicates(vertices, statistics);
   const NearestRoundingScope rounding;
   for (std::size_t i = 0; i < uses.size();) {
-    std::size_t end = i;
+    std::size_t end = i + 1;
     while (end < uses.size() && uses[end].first == uses[i].first) ++end;
-    const Index first = uses[i].second, second = uses[i + 1 < end ? i + 1 : i].second;
-    if (end - i == 2 && candidate[first] && candidate[second] &&
-        continueInOnePlane(uses[i].first, triangles[first], triangles[second], predicates)) {
-      sides_.emplace(uses[i].first, Sides{first, second});
+    if (end - i == 2) {
+      const Edge& edge = uses[i].first;
+      const Index first = uses[i].second, second = uses[i + 1].second;
+      if (candidate[first] && candidate[second] &&
+          continueInOnePlane(edge, triangles[first], triangles[second], predicates)) {
+        sides_.emplace(edge, Sides{first, second});
+      }
     }
     i = end;
   }

@@ -58,7 +58,8 @@ class SeamPoints {
   SeamPoints(const std::vector<Point3>& vertices, const std::vector<TriangleIndices>& triangles, const Seams& seams)
       : vertices_(vertices), triangles_(triangles), seams_(seams) {}
 
-  /// The new point `point` is known to lie on the edge between vertices a and b.
+  /// The new point `point` is known to lie on the edge between vertices a and b
+  /// (only seams matter: a point on two seams is kept).
   void liesOn(std::uint32_t point, std::uint32_t a, std::uint32_t b);
   /// The point is needed (something touches there, or it was made without a name).
   void keep(std::uint32_t point) { kept_.insert(point); }
