@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <string>
 
 #include "bundled_problem.h"
@@ -31,7 +32,7 @@ TEST_P(BundledFacePaths, EveryMotionIsCertifiedFree) {
   RandomConfigurations random(space, 5);
   const SliceFaces sliceFaces(space.arrangement(), space.cellGraph(),
                               [&](SubFaceId face) { return space.cellOfSubFace(face); });
-  int paths = 0, motions = 0, uncertified = 0, estimates = 0, misestimated = 0;
+  int paths = 0, motions = 0, uncertified = 0, estimates = 0, misestimated = 0, located = 0, mislocated = 0;
   for (int slice = 0; slice < 4; ++slice) {
     const double theta = random.next().theta;
     std::vector<SliceFace> faces;
@@ -41,6 +42,10 @@ TEST_P(BundledFacePaths, EveryMotionIsCertifiedFree) {
       continue;  // a critical angle
     }
     std::map<std::uint32_t, Pose2> previousInNode;
+    std::map<std::uint32_t, std::unique_ptr<FaceTriangulation>> triangulations;  // faces with loops, by node
+    for (const SliceFace& face : faces) {
+      if (!face.loops.empty()) triangulations[face.node] = std::make_unique<FaceTriangulation>(face);
+    }
     for (int sample = 0; sample < 150; ++sample) {
       Pose2 pose = random.next();
       pose.theta = theta;
@@ -50,6 +55,11 @@ TEST_P(BundledFacePaths, EveryMotionIsCertifiedFree) {
       const std::optional<Pose2> previous =
           found == previousInNode.end() ? std::nullopt : std::optional<Pose2>(found->second);
       previousInNode[*node] = pose;
+      // The face's triangulation holds the pose exactly when its node does (locate's).
+      for (const auto& [faceNode, triangulation] : triangulations) {
+        ++located;
+        mislocated += triangulation->contains({pose.x * scale, pose.y * scale}) != (faceNode == *node);
+      }
       const SliceFace& face =
           *std::find_if(faces.begin(), faces.end(), [&](const SliceFace& f) { return f.node == *node; });
       if (!face.loops.empty()) {
@@ -72,11 +82,14 @@ TEST_P(BundledFacePaths, EveryMotionIsCertifiedFree) {
   }
   std::cout << GetParam() << ": " << paths << " paths, " << motions << " motions, " << uncertified
             << " not certified free; " << estimates << " clearances from the loops, " << misestimated
-            << " more than 1e-9 off\n";
+            << " more than 1e-9 off; " << located << " located in faces' triangulations, " << mislocated
+            << " wrongly\n";
   EXPECT_GT(paths, 20);
   EXPECT_EQ(uncertified, 0);
   EXPECT_GT(estimates, 100);
   EXPECT_EQ(misestimated, 0);
+  EXPECT_GT(located, 100);
+  EXPECT_EQ(mislocated, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledFacePaths,

@@ -183,6 +183,10 @@ std::optional<std::array<double, 2>> FaceTriangulation::incentreAt(const std::ar
   return incircle->first;
 }
 
+bool FaceTriangulation::contains(const std::array<double, 2>& point) const {
+  return impl_->inFace(impl_->triangulation.locate(pointOf(point)));
+}
+
 std::optional<std::vector<std::array<double, 2>>> pathInFace(const SliceFace& face, const std::array<double, 2>& from,
                                                              const std::array<double, 2>& to) {
   if (face.loops.empty()) return std::vector<std::array<double, 2>>{from, to};

@@ -123,7 +123,7 @@ class RouteWalker {
     for (std::size_t k = 1; k < path->size(); ++k) {
       const Pose2 to{(*path)[k][0] / scale_, (*path)[k][1] / scale_, theta};
       const double toClearance = estimatedClearance(face, to);
-      appendRoomier(face, poses.back(), fromClearance, to, toClearance, 0, poses);
+      appendRoomier(face, triangulation, poses.back(), fromClearance, to, toClearance, 0, poses);
       fromClearance = toClearance;
     }
     for (std::size_t k = 1; keeping > 0 && k < poses.size(); ++k) {
@@ -137,11 +137,13 @@ class RouteWalker {
   /// away from its contact where the leg is much tighter than at its ends (a leg
   /// cutting a corner between the middles of the triangulation's edges): its tightest
   /// of seven points, pushed as far as the ends' smaller clearance asks, while that
-  /// leaves it roomier and in the face's node; up to four times per leg (a retraction
-  /// towards the medial axis). The ends' clearances are given (each point's is
-  /// estimated once, from the face's loops).
-  void appendRoomier(const SliceFace& face, const Pose2& from, double fromClearance, const Pose2& to,
-                     double toClearance, int depth, std::vector<Pose2>& poses) const {
+  /// leaves it roomier and in the face (by its triangulation: the translations are
+  /// certified later); up to four times per leg (a retraction towards the medial
+  /// axis). The ends' clearances are given (each point's is estimated once, from the
+  /// face's loops).
+  void appendRoomier(const SliceFace& face, const FaceTriangulation& triangulation, const Pose2& from,
+                     double fromClearance, const Pose2& to, double toClearance, int depth,
+                     std::vector<Pose2>& poses) const {
     const double wanted = std::min(fromClearance, toClearance);
     std::optional<std::pair<Pose2, BoundaryPoint>> tightest;
     for (int k = 1; depth < 4 && k < 8; ++k) {
@@ -157,9 +159,9 @@ class RouteWalker {
                               (point[1] - contact.point[1]) / contact.distance};
       const Pose2 pushed{(point[0] + away[0] * push) / scale_, (point[1] + away[1] * push) / scale_, from.theta};
       const double pushedClearance = estimatedClearance(face, pushed);
-      if (pushedClearance * scale_ > contact.distance && space_.nodeOf(pushed) == face.node) {
-        appendRoomier(face, from, fromClearance, pushed, pushedClearance, depth + 1, poses);
-        appendRoomier(face, pushed, pushedClearance, to, toClearance, depth + 1, poses);
+      if (pushedClearance * scale_ > contact.distance && triangulation.contains(scaled(pushed))) {
+        appendRoomier(face, triangulation, from, fromClearance, pushed, pushedClearance, depth + 1, poses);
+        appendRoomier(face, triangulation, pushed, pushedClearance, to, toClearance, depth + 1, poses);
         return;
       }
     }
@@ -402,13 +404,23 @@ class RouteWalker {
       candidates.insert(candidates.end(), roomy.begin(), roomy.end());
     }
     // Those in both nodes, the roomiest first (a crossing point near a contact makes
-    // the translations to it and from it tight).
+    // the translations to it and from it tight): in both faces by their triangulations,
+    // confirmed by the exact rays before a turn from there is tried.
+    const FaceTriangulation exitTriangulation(*face);
+    std::optional<FaceTriangulation> entryTriangulation;
+    if (nextFace) entryTriangulation.emplace(*nextFace);
+    const auto inBothNodes = [&](const Pose2& there, const Pose2& turned) {
+      return space_.nodeOf(turned) == next && space_.nodeOf(there) == node;
+    };
     std::vector<std::pair<double, std::array<double, 2>>> usable;
     for (const std::array<double, 2>& point : candidates) {
       cancellation_.check();
       if (std::chrono::steady_clock::now() > deadline_) return false;
       const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
-      if (space_.nodeOf(turned) != next || space_.nodeOf(there) != node) continue;
+      const bool inBothFaces = entryTriangulation
+                                   ? exitTriangulation.contains(point) && entryTriangulation->contains(point)
+                                   : inBothNodes(there, turned);
+      if (!inBothFaces) continue;
       const double turnedClearance =
           nextFace ? estimatedClearance(*nextFace, turned) : space_.clearance(turned, kWidth).lower;
       usable.push_back({std::min(estimatedClearance(*face, there), turnedClearance), point});
@@ -418,11 +430,14 @@ class RouteWalker {
     // crossing point may be reached only through a face pinched to rounding), then
     // anywhere.
     std::vector<std::optional<MotionCheck>> turns(usable.size());
+    std::vector<std::optional<bool>> confirmed(usable.size());
     for (const double share : {kLeastTravelShare, 0.0}) {
       for (std::size_t k = 0; k < usable.size(); ++k) {
         if (std::chrono::steady_clock::now() > deadline_) return false;
         const auto& [clearance, point] = usable[k];
         const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
+        if (!confirmed[k]) confirmed[k] = inBothNodes(there, turned);
+        if (!*confirmed[k]) continue;
         if (!turns[k]) turns[k] = checker_.check(there, turned);
         if (!turns[k]->free) continue;
         if (point != candidates.front() && !travelTo(node, point, exit, share * clearance)) continue;

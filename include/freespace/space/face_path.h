@@ -36,6 +36,10 @@ class FaceTriangulation {
   /// The incentre of the face's triangle holding a point (none outside the face): in a
   /// passage, about its middle across.
   std::optional<std::array<double, 2>> incentreAt(const std::array<double, 2>& point) const;
+  /// Whether a point lies in one of the face's triangles (located in the
+  /// triangulation of its loops as rounded to doubles: far cheaper than the free
+  /// space's exact ray, and the same answer but within rounding of the loops).
+  bool contains(const std::array<double, 2>& point) const;
 
  private:
   struct Impl;
