@@ -406,9 +406,11 @@ class RouteWalker {
     // Those in both nodes, the roomiest first (a crossing point near a contact makes
     // the translations to it and from it tight): in both faces by their triangulations,
     // confirmed by the exact rays before a turn from there is tried.
-    const FaceTriangulation exitTriangulation(*face);
-    std::optional<FaceTriangulation> entryTriangulation;
-    if (nextFace) entryTriangulation.emplace(*nextFace);
+    std::optional<FaceTriangulation> exitTriangulation, entryTriangulation;  // faces with loops
+    if (nextFace && !face->loops.empty() && !nextFace->loops.empty()) {
+      exitTriangulation.emplace(*face);
+      entryTriangulation.emplace(*nextFace);
+    }
     const auto inBothNodes = [&](const Pose2& there, const Pose2& turned) {
       return space_.nodeOf(turned) == next && space_.nodeOf(there) == node;
     };
@@ -418,7 +420,7 @@ class RouteWalker {
       if (std::chrono::steady_clock::now() > deadline_) return false;
       const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
       const bool inBothFaces = entryTriangulation
-                                   ? exitTriangulation.contains(point) && entryTriangulation->contains(point)
+                                   ? exitTriangulation->contains(point) && entryTriangulation->contains(point)
                                    : inBothNodes(there, turned);
       if (!inBothFaces) continue;
       const double turnedClearance =
