@@ -398,25 +398,19 @@ class Cells {
   std::vector<bool> bounded_;
 };
 
-ExactKernel::Triangle_3 exactTriangle(const SoupComplex& complex, const TriangleIndices& corners) {
-  return {complex.points[corners[0]], complex.points[corners[1]], complex.points[corners[2]]};
-}
-
-// Whether two triangles in one plane share an area (CGAL's intersection is then a
-// triangle or a polygon), decided exactly.
+// Whether two triangles share an area, decided exactly.
 bool shareArea(const ExactKernel::Triangle_3& first, const ExactKernel::Triangle_3& second) {
   const auto intersection = CGAL::intersection(first, second);
-  return intersection &&
-         (boost::get<ExactKernel::Triangle_3>(&*intersection) || boost::get<std::vector<ExactPoint>>(&*intersection));
+  return intersection && hasArea(*intersection);
 }
 
 OpenFace openFace(const SoupComplex& complex, Index face) {
   const Index source = complex.sourceTriangle[face];
   OpenFace open{{source}, {}};
-  const ExactKernel::Triangle_3 faceTriangle = exactTriangle(complex, complex.faces[face]);
+  const ExactKernel::Triangle_3 faceTriangle = exactTriangle(complex.points, complex.faces[face]);
   if (complex.clusterOf[face] != SoupComplex::kNoCluster) {
     for (const auto& [member, corners] : complex.clusters[complex.clusterOf[face]]) {
-      if (member != source && shareArea(faceTriangle, exactTriangle(complex, corners))) {
+      if (member != source && shareArea(faceTriangle, exactTriangle(complex.points, corners))) {
         open.sourceTriangles.push_back(member);
       }
     }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <boost/variant/get.hpp>
 
 #include "soup_enclosure.h"
 #include "triangle_box_tree.h"
@@ -19,6 +20,19 @@ namespace freespace::detail {
 
 using ExactKernel = CGAL::Exact_predicates_exact_constructions_kernel;
 using ExactPoint = ExactKernel::Point_3;
+
+/// The triangle on three of `points` (exact points by index).
+template <class Points>
+ExactKernel::Triangle_3 exactTriangle(const Points& points, const TriangleIndices& corners) {
+  return {points[corners[0]], points[corners[1]], points[corners[2]]};
+}
+
+/// Whether CGAL's intersection of two triangles (one that is not empty) has an area:
+/// a triangle or a polygon, where triangles in one plane overlap.
+template <class Intersection>
+bool hasArea(const Intersection& intersection) {
+  return boost::get<ExactKernel::Triangle_3>(&intersection) || boost::get<std::vector<ExactPoint>>(&intersection);
+}
 
 /// A box in the soup's R-trees that holds exact points for certain (CGAL's boxes
 /// enclose its lazy points), so every box of input doubles that may hold them meets it.

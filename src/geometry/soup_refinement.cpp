@@ -73,10 +73,6 @@ class PointIndex {
   std::map<ExactPoint, Index, LessXyz> index_;
 };
 
-ExactTriangle exactTriangle(const PointIndex& points, const TriangleIndices& triangle) {
-  return {points[triangle[0]], points[triangle[1]], points[triangle[2]]};
-}
-
 // How two triangles that meet do: overlapping in one plane (an area: they are
 // triangulated together), else in a point or a segment (its ends), indices of the
 // complex's points, that splits both.
@@ -95,7 +91,7 @@ std::optional<Meeting> generalMeeting(const ExactTriangle& first, const ExactTri
   const auto intersection = CGAL::intersection(first, second);
   if (!intersection) return std::nullopt;
   Meeting meeting;
-  meeting.overlap = boost::get<ExactTriangle>(&*intersection) || boost::get<std::vector<ExactPoint>>(&*intersection);
+  meeting.overlap = hasArea(*intersection);
   if (const auto* point = boost::get<ExactPoint>(&*intersection)) meeting.points = {points.indexOf(*point)};
   if (const auto* segment = boost::get<ExactSegment>(&*intersection)) {
     meeting.points = {points.indexOf(segment->source()), points.indexOf(segment->target())};
@@ -427,8 +423,7 @@ bool meetBeyondSharedFeatures(const std::vector<ExactPoint>& points, const Trian
   for (Index vertex : first) {
     if (std::find(second.begin(), second.end(), vertex) != second.end()) shared.push_back(vertex);
   }
-  const ExactTriangle a(points[first[0]], points[first[1]], points[first[2]]);
-  const ExactTriangle b(points[second[0]], points[second[1]], points[second[2]]);
+  const ExactTriangle a = exactTriangle(points, first), b = exactTriangle(points, second);
   const auto intersection = CGAL::intersection(a, b);
   if (!intersection) return false;
   if (shared.size() == 1) {
