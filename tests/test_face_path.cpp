@@ -2,12 +2,16 @@
 // motion of every path between two configurations of one node, at their angle, is
 // certified free by the clearance (MotionChecker), an independent measure. The
 // distance to the face's loops (nearestOnBoundary) is the exact clearance there, up
-// to the corners' rounding.
+// to the corners' rounding. The certified clearance along a translation from the
+// loops (certifiedClearanceAlong) never exceeds the exact clearance at points along
+// it, is given only where the translation stays in the face, and at a point is the
+// exact clearance but for the corners' rounding (small).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
 #include <map>
+#include <random>
 #include <memory>
 #include <string>
 
@@ -90,6 +94,70 @@ TEST_P(BundledFacePaths, EveryMotionIsCertifiedFree) {
   EXPECT_EQ(misestimated, 0);
   EXPECT_GT(located, 100);
   EXPECT_EQ(mislocated, 0);
+}
+
+TEST_P(BundledFacePaths, LoopsCertifyTranslationsInsideTheFaceBelowTheExactClearance) {
+  const LoadedProblem loaded = loadBundledProblem(GetParam());
+  const FreeSpace space(loaded.robot, loaded.world);
+  const double scale = space.meshes().scale;
+  RandomConfigurations random(space, 7);
+  const SliceFaces sliceFaces(space.arrangement(), space.cellGraph(),
+                              [&](SubFaceId face) { return space.cellOfSubFace(face); });
+  std::uniform_real_distribution<double> fraction(0, 1);
+  std::mt19937 draw(11);
+  int segments = 0, certified = 0, wrong = 0, points = 0, loose = 0;
+  double widestRounding = 0;  // the corners' rounding, relative to the scene's size
+  const double size = space.meshes().world.bounds().diagonal().norm();
+  for (int slice = 0; slice < 4; ++slice) {
+    const double theta = random.next().theta;
+    std::vector<SliceFace> faces;
+    try {
+      faces = sliceFaces.at(AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space.algebra());
+    } catch (const std::invalid_argument&) {
+      continue;  // a critical angle
+    }
+    for (int sample = 0; sample < 100; ++sample) {
+      Pose2 from = random.next(), to = random.next();
+      from.theta = to.theta = theta;
+      // Short translations as often as long ones (from a tenth of the scene down).
+      const double shrink = std::pow(10.0, -4 * fraction(draw));
+      to = MotionChecker::interpolate(from, to, shrink);
+      const std::array<double, 2> a{from.x * scale, from.y * scale}, b{to.x * scale, to.y * scale};
+      for (const SliceFace& face : faces) {
+        ++segments;
+        const std::optional<double> along = certifiedClearanceAlong(face, a, b);
+        // A point: the exact clearance within its certified width when inside.
+        const std::optional<double> at = certifiedClearanceAlong(face, a, a);
+        const std::optional<std::uint32_t> node = space.nodeOf(from);
+        if (at) {
+          ++points;
+          const Clearance exact = space.clearance(from);
+          wrong += node != face.node || !(*at / scale <= exact.upper);
+          // The loops lie within their corners' rounding of the exact boundary.
+          loose += !(*at / scale >= exact.lower - 2 * face.cornerError / scale - 1e-9 * (1 + exact.lower));
+          widestRounding = std::max(widestRounding, face.cornerError / scale / size);
+        }
+        if (!along) continue;
+        ++certified;
+        wrong += !at;
+        for (int k = 0; k <= 50; ++k) {
+          const Pose2 pose = MotionChecker::interpolate(from, to, k / 50.0);
+          const Clearance exact = space.clearance(pose);
+          wrong += space.nodeOf(pose) != face.node ||
+                   !(*along / scale - MotionChecker::interpolationRounding(from, to) <= exact.upper);
+        }
+      }
+    }
+  }
+  std::cout << GetParam() << ": " << segments << " translations and faces, " << certified
+            << " certified by the loops, " << points << " points; " << wrong << " wrong, " << loose
+            << " points further below the exact clearance than twice their face's rounding "
+            << widestRounding << " (widest, relative to the scene)\n";
+  EXPECT_GT(certified, 20);
+  EXPECT_GT(points, 50);
+  EXPECT_EQ(wrong, 0);
+  EXPECT_EQ(loose, 0);
+  EXPECT_LT(widestRounding, 1e-6);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledFacePaths,

@@ -9,6 +9,8 @@
 #include <deque>
 #include <map>
 
+#include "freespace/numbers/interval.h"
+
 namespace freespace {
 
 namespace {
@@ -208,6 +210,86 @@ BoundaryPoint nearestOnBoundary(const SliceFace& face, const std::array<double, 
     }
   }
   return nearest;
+}
+
+namespace {
+
+using Point2 = std::array<double, 2>;
+
+/// A lower bound on the distance from `p` to the segment from `a` to `b` (inside a
+/// RoundingScope): to the end beyond which the foot of the perpendicular certainly
+/// lies, else to the segment's line.
+double leastDistanceToSegment(const Point2& p, const Point2& a, const Point2& b) {
+  const Interval wx = Interval(b[0]) - a[0], wy = Interval(b[1]) - a[1];
+  const Interval vx = Interval(p[0]) - a[0], vy = Interval(p[1]) - a[1];
+  const auto length = [](const Interval& x, const Interval& y) { return sqrt(x * x + y * y); };
+  const Interval squaredLength = wx * wx + wy * wy;
+  if (!(squaredLength.lower() > 0)) return std::max(0.0, (length(vx, vy) - sqrt(squaredLength)).lower());
+  const Interval along = (vx * wx + vy * wy) / squaredLength;
+  if (along.upper() < 0) return length(vx, vy).lower();
+  if (along.lower() > 1) return length(Interval(p[0]) - b[0], Interval(p[1]) - b[1]).lower();
+  const Interval cross = vx * wy - vy * wx;
+  return sqrt(cross * cross / squaredLength).lower();
+}
+
+/// A lower bound on the distance between the boxes of two segments (inside a
+/// RoundingScope), itself a lower bound on the segments' distance.
+double leastBoxGap(const Point2& a, const Point2& b, const Point2& c, const Point2& d) {
+  Interval squared(0);
+  for (int axis : {0, 1}) {
+    const double low0 = std::min(a[axis], b[axis]), high0 = std::max(a[axis], b[axis]);
+    const double low1 = std::min(c[axis], d[axis]), high1 = std::max(c[axis], d[axis]);
+    const Interval gap = low1 > high0 ? Interval(low1) - high0 : low0 > high1 ? Interval(low0) - high1 : Interval(0);
+    squared = squared + gap * gap;
+  }
+  return sqrt(squared).lower();
+}
+
+}  // namespace
+
+std::optional<double> certifiedClearanceAlong(const SliceFace& face, const std::array<double, 2>& from,
+                                              const std::array<double, 2>& to) {
+  if (face.loops.empty()) return face.unbounded ? std::optional<double>(HUGE_VAL) : std::nullopt;
+  if (!std::isfinite(face.cornerError)) return std::nullopt;
+  // The least distance, each loop edge's bounded by its box's gap first; edges whose
+  // segments' distance was bounded may meet the motion (their ends' distances say
+  // nothing then): those are tested exactly after the rounding scope.
+  double least = HUGE_VAL;
+  std::vector<std::pair<Point2, Point2>> near;
+  {
+    const RoundingScope rounding;
+    for (const SliceLoop& loop : face.loops) {
+      for (std::size_t k = 0; k < loop.corners.size(); ++k) {
+        const Point2 &c = loop.corners[k], &d = loop.corners[(k + 1) % loop.corners.size()];
+        if (leastBoxGap(from, to, c, d) >= least) continue;
+        least = std::min({least, leastDistanceToSegment(from, c, d), leastDistanceToSegment(to, c, d),
+                          leastDistanceToSegment(c, from, to), leastDistanceToSegment(d, from, to)});
+        if (c != d) near.push_back({c, d});
+      }
+    }
+    least = (Interval(least) - face.cornerError).lower();
+  }
+  if (!(least > 0)) return std::nullopt;
+  if (from != to) {
+    const Kernel::Segment_2 motion(pointOf(from), pointOf(to));
+    for (const auto& [c, d] : near) {
+      if (CGAL::do_intersect(motion, Kernel::Segment_2(pointOf(c), pointOf(d)))) return std::nullopt;
+    }
+  }
+  // Inside: an odd number of crossings of the ray toward +x with a bounded face's
+  // loops, an even number with an unbounded face's (an edge crossing the ray's line
+  // lies right of `from` when `from` lies left of it walked upward).
+  bool inside = face.unbounded;
+  for (const SliceLoop& loop : face.loops) {
+    for (std::size_t k = 0; k < loop.corners.size(); ++k) {
+      const Point2 &c = loop.corners[k], &d = loop.corners[(k + 1) % loop.corners.size()];
+      if ((c[1] > from[1]) == (d[1] > from[1])) continue;
+      const Point2 &low = c[1] < d[1] ? c : d, &high = c[1] < d[1] ? d : c;
+      if (CGAL::orientation(pointOf(low), pointOf(high), pointOf(from)) == CGAL::LEFT_TURN) inside = !inside;
+    }
+  }
+  if (!inside) return std::nullopt;
+  return least;
 }
 
 }  // namespace freespace

@@ -37,6 +37,22 @@ Pose2 MotionChecker::interpolate(const Pose2& from, const Pose2& to, double t) {
           from.theta + t * shorterTurn(from.theta, to.theta)};
 }
 
+double MotionChecker::interpolationRounding(const Pose2& from, const Pose2& to) {
+  return 1e-12 * (1 + std::max({std::fabs(from.x), std::fabs(from.y), std::fabs(to.x), std::fabs(to.y)}));
+}
+
+double MotionChecker::metricLength(const Pose2& from, const Pose2& to) const {
+  return std::hypot(to.x - from.x, to.y - from.y) * (1 + 1e-12) + reach_ * std::fabs(shorterTurn(from.theta, to.theta)) +
+         interpolationRounding(from, to);
+}
+
+std::optional<double> MotionChecker::leastClearanceBetween(const Pose2& from, const Pose2& to, double clearanceFrom,
+                                                           double clearanceTo) const {
+  const double least = leastClearanceOn(clearanceFrom, clearanceTo, metricLength(from, to));
+  if (!(least > 0)) return std::nullopt;
+  return least;
+}
+
 /// A part of the motion between fractions `from` and `to`, with the clearances there
 /// (certified lower bounds; 0 or less where the configuration is not free).
 struct MotionChecker::Part {
@@ -52,12 +68,7 @@ void MotionChecker::certify(const Pose2& from, const Pose2& to, Certain certain,
     const Clearance clearance = space_.clearance(interpolate(from, to, t), kClearanceWidth);
     return clearance.location.free ? clearance.lower : 0.0;
   };
-  // The motion's length in |dxy| + r |dtheta|, with room for the rounding of the
-  // interpolated configurations' coordinates.
-  const double rounding =
-      1e-12 * (1 + std::max({std::fabs(from.x), std::fabs(from.y), std::fabs(to.x), std::fabs(to.y)}));
-  const double length = std::hypot(to.x - from.x, to.y - from.y) * (1 + 1e-12) +
-                        reach_ * std::fabs(shorterTurn(from.theta, to.theta)) + rounding;
+  const double length = metricLength(from, to);
   result.minClearance = HUGE_VAL;
   // Parts from the start on, the nearest first, so that the certified prefix grows.
   std::vector<Part> parts{{0, 1, clearanceAt(0), clearanceAt(1)}};

@@ -126,11 +126,44 @@ class RouteWalker {
       appendRoomier(face, triangulation, poses.back(), fromClearance, to, toClearance, 0, poses);
       fromClearance = toClearance;
     }
-    for (std::size_t k = 1; keeping > 0 && k < poses.size(); ++k) {
-      if (!checker_.keepsClearance(poses[k - 1], poses[k], keeping, 64)) return false;
+    std::vector<std::optional<double>> certified(poses.size());
+    for (std::size_t k = 1; k < poses.size(); ++k) {
+      certified[k] = certifiedTranslation(face, poses[k - 1], poses[k]);
+      if (keeping > 0 && !(certified[k] && *certified[k] >= keeping) &&
+          !checker_.keepsClearance(poses[k - 1], poses[k], keeping, 64)) {
+        return false;
+      }
     }
-    for (std::size_t k = 1; k < poses.size(); ++k) append(poses[k]);
+    for (std::size_t k = 1; k < poses.size(); ++k) append(poses[k], certified[k]);
     return true;
+  }
+
+  /// A certified lower bound on the clearance along a translation inside the face (at
+  /// its angle), from the face's loops (certifiedClearanceAlong); none when they do not
+  /// certify it.
+  std::optional<double> certifiedTranslation(const SliceFace& face, const Pose2& from, const Pose2& to) const {
+    const std::optional<double> along = certifiedClearanceAlong(face, scaled(from), scaled(to));
+    if (!along) return std::nullopt;
+    const double least = *along / scale_ - MotionChecker::interpolationRounding(from, to);
+    return least > 0 ? std::optional<double>(least) : std::nullopt;
+  }
+
+  /// A certified lower bound on the clearance along a turn at a fixed point inside the
+  /// node, from the clearances its faces certify at the turn's ends (by the Lipschitz
+  /// bound in theta); none when they do not certify it.
+  std::optional<double> certifiedTurn(std::uint32_t node, const Pose2& from, const Pose2& to) const {
+    const auto clearanceAt = [&](const Pose2& pose) -> std::optional<double> {
+      const std::optional<SliceFace> face = faceAt(node, pose.theta);
+      if (!face) return std::nullopt;
+      const std::optional<double> at = certifiedClearanceAlong(*face, scaled(pose), scaled(pose));
+      if (!at) return std::nullopt;
+      return *at / scale_;
+    };
+    const std::optional<double> clearanceFrom = clearanceAt(from);
+    if (!clearanceFrom) return std::nullopt;
+    const std::optional<double> clearanceTo = clearanceAt(to);
+    if (!clearanceTo) return std::nullopt;
+    return checker_.leastClearanceBetween(from, to, *clearanceFrom, *clearanceTo);
   }
 
   /// Appends the translation from `from` to `to` (at one angle), by a point pushed
@@ -214,10 +247,12 @@ class RouteWalker {
       if (!(clearance > 0)) return false;
       const double step = 0.5 * clearance / checker_.reach();
       if (step >= std::fabs(remaining)) {
-        append({current().x, current().y, theta});
+        const Pose2 turned{current().x, current().y, theta};
+        append(turned, certifiedTurn(node, current(), turned));
         return true;
       }
-      append({current().x, current().y, reducedAngle(current().theta + std::copysign(step, remaining))});
+      const Pose2 turned{current().x, current().y, reducedAngle(current().theta + std::copysign(step, remaining))};
+      append(turned, certifiedTurn(node, current(), turned));
       estimate = recentre(node);
     }
   }

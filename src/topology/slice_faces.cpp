@@ -1,5 +1,7 @@
 #include "freespace/topology/slice_faces.h"
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <stdexcept>
 
@@ -38,17 +40,29 @@ IntervalLoops piecesAt(const Arrangement& arrangement, const CellGraph& graph, c
   return loops;
 }
 
-/// The ends of a piece at the angle (low lambda, then high), rounded to doubles.
-std::array<std::array<double, 2>, 2> endsOf(const Arrangement& arrangement, const slices::IntervalSlice& slice,
-                                            const Piece& piece) {
+/// A piece's end rounded to doubles, and how far it may lie from the exact end.
+struct RoundedEnd {
+  std::array<double, 2> point;
+  double error;
+};
+
+/// End `end` of a piece at the angle (0: low lambda, 1: high): the middle of its
+/// enclosure, within the enclosure's half width (and the middle's rounding) of the
+/// exact end; infinitely far when a crossing is uncertain (the segment's end then
+/// stands for it).
+RoundedEnd endOf(const Arrangement& arrangement, const slices::IntervalSlice& slice, const Piece& piece, int end) {
   const RoundingScope rounding;
-  const auto interval =
-      slice.pieceEnds(arrangement, piece.patch, arrangement.subdivisions[piece.patch].slabs[piece.slab], piece.gap);
-  std::array<std::array<double, 2>, 2> ends{};
-  for (int k : {0, 1}) {
-    for (int axis : {0, 1}) ends[k][axis] = interval[k][axis].midpoint();
+  const PatchGeometry& geometry = arrangement.patches[piece.patch];
+  const auto lambdas =
+      slice.pieceOf(arrangement, piece.patch, arrangement.subdivisions[piece.patch].slabs[piece.slab], piece.gap);
+  const Interval lambda = lambdas ? (end == 0 ? lambdas->first : lambdas->second) : Interval(end);
+  const std::array<Interval, 2> enclosure = slice.pointOn(geometry, lambda);
+  RoundedEnd rounded{{enclosure[0].midpoint(), enclosure[1].midpoint()}, lambdas ? 0.0 : HUGE_VAL};
+  // Rounded upward: each axis's distance to the farther end of its enclosure, summed.
+  for (int axis : {0, 1}) {
+    rounded.error += std::max(rounded.point[axis] - enclosure[axis].lower(), enclosure[axis].upper() - rounded.point[axis]);
   }
-  return ends;
+  return rounded;
 }
 
 /// One loop from a piece, walked from end to end: each piece is entered at the end
@@ -108,9 +122,14 @@ std::map<std::uint32_t, SliceFace> SliceFaces::facesOf(const IntervalLoops& loop
     const std::optional<std::uint32_t> node = graph_.nodeOfPiece(loops.pieceIndices[first], interval);
     if (!node) throw std::logic_error("SliceFaces: a free piece has no node");
     SliceLoop loop;
-    for (std::size_t member : members)
-      loop.corners.push_back(endsOf(arrangement_, slice, loops.pieces[member])[entry[member]]);
+    double cornerError = 0;
+    for (std::size_t member : members) {
+      const RoundedEnd corner = endOf(arrangement_, slice, loops.pieces[member], entry[member]);
+      loop.corners.push_back(corner.point);
+      cornerError = std::max(cornerError, corner.error);
+    }
     SliceFace& face = faces[*node];
+    face.cornerError = std::max(face.cornerError, cornerError);
     face.node = *node;
     face.cell = graph_.nodes()[*node].cell;
     face.loops.push_back(std::move(loop));

@@ -68,4 +68,15 @@ struct BoundaryPoint {
 /// face without loops.
 BoundaryPoint nearestOnBoundary(const SliceFace& face, const std::array<double, 2>& point);
 
+/// A certified lower bound on the clearance (in the face's units) along the straight
+/// translation from `from` to `to` (a point when they are equal) at the face's angle:
+/// the least distance from the segment to the face's loops, rigorously bounded, less
+/// the corners' rounding (SliceFace::cornerError). Only when `from` lies inside the
+/// face (the loops' crossings of a ray from it, by exact predicates on the rounded
+/// loops: further from them than their rounding, it lies on the same side of the exact
+/// ones) and the bound is positive; none otherwise. The face's loops are the slice's
+/// boundary there, so this certifies the translation free without FreeSpace::clearance.
+std::optional<double> certifiedClearanceAlong(const SliceFace& face, const std::array<double, 2>& from,
+                                              const std::array<double, 2>& to);
+
 }  // namespace freespace

@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 
 #include "freespace/space/free_space.h"
 
@@ -55,6 +56,16 @@ class MotionChecker {
   /// would take more than `queryLimit` clearances (false is not a proof).
   bool keepsClearance(const Pose2& from, const Pose2& to, double level, std::size_t queryLimit = 256) const;
 
+  /// The least clearance along the whole motion that the Lipschitz bound guarantees
+  /// from certified clearances at its ends (from elsewhere than FreeSpace::clearance);
+  /// none when that is not positive (the ends alone do not certify the motion free).
+  std::optional<double> leastClearanceBetween(const Pose2& from, const Pose2& to, double clearanceFrom,
+                                              double clearanceTo) const;
+
+  /// How far the configurations OMPL interpolates between `from` and `to` may lie from
+  /// the exact segment between them, in (x, y), and then some: their rounding.
+  static double interpolationRounding(const Pose2& from, const Pose2& to);
+
   /// The robot's largest distance from its vertical axis, rounded up: the clearance's
   /// Lipschitz constant in theta.
   double reach() const { return reach_; }
@@ -65,6 +76,8 @@ class MotionChecker {
   /// (given the least clearance the Lipschitz bound guarantees on it and its ends'
   /// clearances), a part starts blocked, `hopeless` rejects one, or the parts or
   /// queries run out; fills `result` (free when every part was accepted).
+  /// The motion's length in |dxy| + r |dtheta|, with room for its rounding.
+  double metricLength(const Pose2& from, const Pose2& to) const;
   template <typename Certain, typename Hopeless>
   void certify(const Pose2& from, const Pose2& to, Certain certain, Hopeless hopeless, std::size_t queryLimit,
                MotionCheck& result) const;

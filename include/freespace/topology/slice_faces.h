@@ -28,6 +28,9 @@ struct SliceFace {
   std::uint32_t cell = 0;
   bool unbounded = false;
   std::vector<SliceLoop> loops;
+  /// Every corner lies within this distance of the exact corner it rounds (infinite
+  /// when intervals could not place one): the loops are the slice's boundary up to it.
+  double cornerError = 0;
 };
 
 namespace cellgraph {
