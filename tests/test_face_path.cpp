@@ -149,10 +149,10 @@ TEST_P(BundledFacePaths, LoopsCertifyTranslationsInsideTheFaceBelowTheExactClear
       }
     }
   }
-  std::cout << GetParam() << ": " << segments << " translations and faces, " << certified
-            << " certified by the loops, " << points << " points; " << wrong << " wrong, " << loose
-            << " points further below the exact clearance than twice their face's rounding "
-            << widestRounding << " (widest, relative to the scene)\n";
+  std::cout << GetParam() << ": " << segments << " translations and faces, " << certified << " certified by the loops, "
+            << points << " points; " << wrong << " wrong, " << loose
+            << " points further below the exact clearance than twice their face's rounding " << widestRounding
+            << " (widest, relative to the scene)\n";
   EXPECT_GT(certified, 20);
   EXPECT_GT(points, 50);
   EXPECT_EQ(wrong, 0);

@@ -42,8 +42,8 @@ double MotionChecker::interpolationRounding(const Pose2& from, const Pose2& to) 
 }
 
 double MotionChecker::metricLength(const Pose2& from, const Pose2& to) const {
-  return std::hypot(to.x - from.x, to.y - from.y) * (1 + 1e-12) + reach_ * std::fabs(shorterTurn(from.theta, to.theta)) +
-         interpolationRounding(from, to);
+  return std::hypot(to.x - from.x, to.y - from.y) * (1 + 1e-12) +
+         reach_ * std::fabs(shorterTurn(from.theta, to.theta)) + interpolationRounding(from, to);
 }
 
 std::optional<double> MotionChecker::leastClearanceBetween(const Pose2& from, const Pose2& to, double clearanceFrom,

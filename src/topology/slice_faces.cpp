@@ -60,7 +60,8 @@ RoundedEnd endOf(const Arrangement& arrangement, const slices::IntervalSlice& sl
   RoundedEnd rounded{{enclosure[0].midpoint(), enclosure[1].midpoint()}, lambdas ? 0.0 : HUGE_VAL};
   // Rounded upward: each axis's distance to the farther end of its enclosure, summed.
   for (int axis : {0, 1}) {
-    rounded.error += std::max(rounded.point[axis] - enclosure[axis].lower(), enclosure[axis].upper() - rounded.point[axis]);
+    rounded.error +=
+        std::max(rounded.point[axis] - enclosure[axis].lower(), enclosure[axis].upper() - rounded.point[axis]);
   }
   return rounded;
 }
