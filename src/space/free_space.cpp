@@ -125,6 +125,14 @@ const CellGraph& FreeSpace::cellGraph() const {
   return *impl_->graph;
 }
 
+const SliceFaces& FreeSpace::sliceFaces() const {
+  if (!impl_->sliceFaces) {
+    impl_->sliceFaces = std::make_unique<SliceFaces>(impl_->arrangement, cellGraph(),
+                                                     [this](SubFaceId face) { return cellOfSubFace(face); });
+  }
+  return *impl_->sliceFaces;
+}
+
 std::optional<std::uint32_t> FreeSpace::nodeOf(const Pose2& pose) const { return locateNode(pose).node; }
 
 NodeLocation FreeSpace::locateNode(const Pose2& pose) const {

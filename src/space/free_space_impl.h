@@ -27,6 +27,8 @@ struct FreeSpace::Impl {
   /// Built on first use (FreeSpace::cellGraph), announced to `progress` and
   /// stopped by `cancellation` (those the construction was given).
   std::unique_ptr<CellGraph> graph;
+  /// Built on first use (FreeSpace::sliceFaces).
+  std::unique_ptr<SliceFaces> sliceFaces;
   std::function<void(const std::string& stage)> progress;
   Cancellation cancellation;
 

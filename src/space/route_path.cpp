@@ -35,7 +35,7 @@ class RouteWalker {
   RouteWalker(const FreeSpace& space, std::chrono::steady_clock::time_point deadline, const Cancellation& cancellation)
       : space_(space),
         graph_(space.cellGraph()),
-        sliceFaces_(space.arrangement(), graph_, [&space](SubFaceId face) { return space.cellOfSubFace(face); }),
+        sliceFaces_(space.sliceFaces()),
         checker_(space),
         scale_(space.meshes().scale),
         deadline_(deadline),
@@ -504,7 +504,7 @@ class RouteWalker {
 
   const FreeSpace& space_;
   const CellGraph& graph_;
-  const SliceFaces sliceFaces_;
+  const SliceFaces& sliceFaces_;
   const MotionChecker checker_;
   const double scale_;
   const std::chrono::steady_clock::time_point deadline_;

@@ -15,6 +15,7 @@
 #include "freespace/problem/planar_problem.h"
 #include "freespace/topology/arrangement.h"
 #include "freespace/topology/cell_graph.h"
+#include "freespace/topology/slice_faces.h"
 
 namespace freespace {
 
@@ -120,6 +121,9 @@ class FreeSpace {
   /// and cancellable as the construction was), in the construction's coordinates
   /// (as arrangement()).
   const CellGraph& cellGraph() const;
+  /// The faces of the slices over the cell graph (SliceFaces: what a path query's
+  /// route walks), built on first use after the graph.
+  const SliceFaces& sliceFaces() const;
   /// The node of the cell graph whose face holds a configuration; none when it is
   /// blocked.
   std::optional<std::uint32_t> nodeOf(const Pose2& pose) const;
