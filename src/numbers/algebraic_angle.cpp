@@ -705,11 +705,16 @@ int AngleAlgebra::compareEscalated(const AlgebraicAngle& first, const AlgebraicA
 }
 
 bool AngleAlgebra::contains(const AngleInterval& arc, const AlgebraicAngle& angle, Boundary boundary) {
+  return contains(arc.from, arc.to, arc.wraps, angle, boundary);
+}
+
+bool AngleAlgebra::contains(const AlgebraicAngle& from, const AlgebraicAngle& to, bool wraps,
+                            const AlgebraicAngle& angle, Boundary boundary) {
   const int bound = boundary == Boundary::Included ? 0 : -1;
   // The second comparison only when the first does not decide.
-  const bool afterFrom = compare(arc.from, angle) <= bound;
-  if (afterFrom == arc.wraps) return afterFrom;
-  return compare(angle, arc.to) <= bound;
+  const bool afterFrom = compare(from, angle) <= bound;
+  if (afterFrom == wraps) return afterFrom;
+  return compare(angle, to) <= bound;
 }
 
 bool AngleAlgebra::contains(const AngleSet& set, const AlgebraicAngle& angle, Boundary boundary) {

@@ -7,7 +7,7 @@ bool holds(const PatchSlab& slab, const AlgebraicAngle& angle, AngleAlgebra& alg
   // A slab from an event back to itself runs once around; one whose sample is its
   // `from` too is a whole circle without events.
   if (order == 0) return algebra.compare(slab.from, angle) != 0 || algebra.compare(slab.from, slab.sample) == 0;
-  return algebra.contains(AngleInterval{slab.from, slab.to, order > 0}, angle, AngleAlgebra::Boundary::Excluded);
+  return algebra.contains(slab.from, slab.to, order > 0, angle, AngleAlgebra::Boundary::Excluded);
 }
 
 std::optional<std::size_t> slabIndexAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle,

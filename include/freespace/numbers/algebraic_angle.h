@@ -312,6 +312,10 @@ class AngleAlgebra {
   /// Whether the arc contains `angle`; an arc whose `to` precedes its `from` wraps
   /// through the cut.
   bool contains(const AngleInterval& arc, const AlgebraicAngle& angle, Boundary boundary = Boundary::Included);
+  /// The same for the arc from `from` to `to` given by its ends (no copies of them:
+  /// slab lookups ask this for every slab they pass).
+  bool contains(const AlgebraicAngle& from, const AlgebraicAngle& to, bool wraps, const AlgebraicAngle& angle,
+                Boundary boundary);
   bool contains(const AngleSet& set, const AlgebraicAngle& angle, Boundary boundary = Boundary::Included);
 
   /// A rational angle strictly inside the open arc from `from` to `to`
