@@ -282,20 +282,23 @@ std::optional<double> certifiedClearanceAlong(const SliceFace& face, const std::
       if (CGAL::do_intersect(motion, Kernel::Segment_2(pointOf(c), pointOf(d)))) return std::nullopt;
     }
   }
-  // Inside: an odd number of crossings of the ray toward +x with a bounded face's
-  // loops, an even number with an unbounded face's (an edge crossing the ray's line
-  // lies right of `from` when `from` lies left of it walked upward).
+  if (!liesInside(face, from)) return std::nullopt;
+  return least;
+}
+
+bool liesInside(const SliceFace& face, const std::array<double, 2>& point) {
+  // Crossings of the ray toward +x: an edge crossing the ray's line lies right of the
+  // point when the point lies left of it walked upward.
   bool inside = face.unbounded;
   for (const SliceLoop& loop : face.loops) {
     for (std::size_t k = 0; k < loop.corners.size(); ++k) {
       const Point2 &c = loop.corners[k], &d = loop.corners[(k + 1) % loop.corners.size()];
-      if ((c[1] > from[1]) == (d[1] > from[1])) continue;
+      if ((c[1] > point[1]) == (d[1] > point[1])) continue;
       const Point2 &low = c[1] < d[1] ? c : d, &high = c[1] < d[1] ? d : c;
-      if (CGAL::orientation(pointOf(low), pointOf(high), pointOf(from)) == CGAL::LEFT_TURN) inside = !inside;
+      if (CGAL::orientation(pointOf(low), pointOf(high), pointOf(point)) == CGAL::LEFT_TURN) inside = !inside;
     }
   }
-  if (!inside) return std::nullopt;
-  return least;
+  return inside;
 }
 
 }  // namespace freespace

@@ -221,16 +221,31 @@ class RouteWalker {
     return moved ? estimatedClearance(*face, current()) : here;
   }
 
-  /// The signed turn from the current angle to `theta` staying inside the node's arc
-  /// of angles (the shorter one when the node holds every angle).
-  double turnInside(const CellGraphNode& node, double theta) const {
+  /// The signed turn from angle `from` to `to` staying inside the node's arc of
+  /// angles (the shorter one when the node holds every angle).
+  double turnInside(const CellGraphNode& node, double from, double to) const {
     const auto [arcStart, width] = graph_.arc(node.firstInterval, node.lastInterval);
-    if (width == 2 * M_PI) return MotionChecker::shorterTurn(current().theta, theta);
+    if (width == 2 * M_PI) return MotionChecker::shorterTurn(from, to);
     const auto along = [&](double angle) {
       const double u = std::fmod(angle - arcStart, 2 * M_PI);
       return u < 0 ? u + 2 * M_PI : u;
     };
-    return along(theta) - along(current().theta);
+    return along(to) - along(from);
+  }
+
+  /// Whether the node seems to let the robot turn at `point` (construction
+  /// coordinates) from angle `from` to `to`: the point lies in the node's face at
+  /// angles an eighth of a half turn apart along the way (by its rounded loops: an
+  /// estimate, to try likelier turns first; certifying a turn that fails takes as
+  /// long as one that does not).
+  bool turnLooksFree(std::uint32_t node, const std::array<double, 2>& point, double from, double to) const {
+    const double turn = turnInside(graph_.nodes()[node], from, to);
+    const int steps = static_cast<int>(std::ceil(std::fabs(turn) / (M_PI / 8)));
+    for (int k = 1; k < steps; ++k) {
+      const std::optional<SliceFace> face = faceAt(node, reducedAngle(from + turn * k / steps));
+      if (face && !liesInside(*face, point)) return false;
+    }
+    return true;
   }
 
   /// Turns to `theta` inside the node by steps of half the current clearance's
@@ -241,7 +256,7 @@ class RouteWalker {
     for (;;) {
       cancellation_.check();
       if (++steps_ > kMostSteps || std::chrono::steady_clock::now() > deadline_) return false;
-      const double remaining = turnInside(graphNode, theta);
+      const double remaining = turnInside(graphNode, current().theta, theta);
       if (remaining == 0) return true;
       const double clearance = estimate ? *estimate : space_.clearance(current(), kWidth).lower;
       if (!(clearance > 0)) return false;
@@ -261,7 +276,7 @@ class RouteWalker {
   /// quarter turn, each certified free (no recentring: the point is where a crossing
   /// or the goal needs it).
   bool turnInPlace(std::uint32_t node, double theta) {
-    const double turn = turnInside(graph_.nodes()[node], theta);
+    const double turn = turnInside(graph_.nodes()[node], current().theta, theta);
     const int steps = static_cast<int>(std::ceil(std::fabs(turn) / (M_PI / 2) * (1 + 1e-9)));
     const Pose2 from = current();
     for (int k = 1; k <= steps; ++k) {
@@ -331,12 +346,21 @@ class RouteWalker {
     }
     std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
     const std::size_t mark = waypoints_.size();
-    for (const auto& [estimate, theta] : ranked) {
-      if (!(estimate > leastEstimate)) break;
+    const auto travelAt = [&](double theta) {
       if (turnTo(node, theta) && translateInNode(node, point) && turnInPlace(node, arrival)) return true;
       truncate(mark);
+      return false;
+    };
+    std::vector<double> blocked;  // angles from which the turn back to `arrival` looks blocked: tried last
+    for (const auto& [estimate, theta] : ranked) {
+      if (!(estimate > leastEstimate)) break;
+      if (!turnLooksFree(node, point, theta, arrival)) {
+        blocked.push_back(theta);
+      } else if (travelAt(theta)) {
+        return true;
+      }
     }
-    return false;
+    return std::any_of(blocked.begin(), blocked.end(), travelAt);
   }
 
   /// Translates at the current angle to `point` inside the node's face.

@@ -68,6 +68,12 @@ struct BoundaryPoint {
 /// face without loops.
 BoundaryPoint nearestOnBoundary(const SliceFace& face, const std::array<double, 2>& point);
 
+/// Whether a point lies inside the face: an odd number of crossings of a ray from it
+/// with a bounded face's loops as rounded, an even number with an unbounded face's
+/// (exact predicates on the rounded loops; nearer to them than their rounding, the
+/// exact face may say otherwise).
+bool liesInside(const SliceFace& face, const std::array<double, 2>& point);
+
 /// A certified lower bound on the clearance (in the face's units) along the straight
 /// translation from `from` to `to` (a point when they are equal) at the face's angle:
 /// the least distance from the segment to the face's loops, rigorously bounded, less
