@@ -28,23 +28,29 @@ namespace {
 
 class BundledFacePaths : public ::testing::TestWithParam<std::string> {};
 
+/// The angle of a random slice and its faces; none at a critical angle.
+std::optional<std::pair<double, std::vector<SliceFace>>> randomSlice(const FreeSpace& space,
+                                                                     RandomConfigurations& random) {
+  const double theta = random.next().theta;
+  try {
+    return std::pair(theta,
+                     space.sliceFaces().at(AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space.algebra()));
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;
+  }
+}
+
 TEST_P(BundledFacePaths, EveryMotionIsCertifiedFree) {
   const LoadedProblem loaded = loadBundledProblem(GetParam());
   const FreeSpace space(loaded.robot, loaded.world);
   const MotionChecker checker(space);
   const double scale = space.meshes().scale;
   RandomConfigurations random(space, 5);
-  const SliceFaces sliceFaces(space.arrangement(), space.cellGraph(),
-                              [&](SubFaceId face) { return space.cellOfSubFace(face); });
   int paths = 0, motions = 0, uncertified = 0, estimates = 0, misestimated = 0, located = 0, mislocated = 0;
   for (int slice = 0; slice < 4; ++slice) {
-    const double theta = random.next().theta;
-    std::vector<SliceFace> faces;
-    try {
-      faces = sliceFaces.at(AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space.algebra());
-    } catch (const std::invalid_argument&) {
-      continue;  // a critical angle
-    }
+    const std::optional<std::pair<double, std::vector<SliceFace>>> sliced = randomSlice(space, random);
+    if (!sliced) continue;
+    const auto& [theta, faces] = *sliced;
     std::map<std::uint32_t, Pose2> previousInNode;
     std::map<std::uint32_t, std::unique_ptr<FaceTriangulation>> triangulations;  // faces with loops, by node
     for (const SliceFace& face : faces) {
@@ -101,21 +107,15 @@ TEST_P(BundledFacePaths, LoopsCertifyTranslationsInsideTheFaceBelowTheExactClear
   const FreeSpace space(loaded.robot, loaded.world);
   const double scale = space.meshes().scale;
   RandomConfigurations random(space, 7);
-  const SliceFaces sliceFaces(space.arrangement(), space.cellGraph(),
-                              [&](SubFaceId face) { return space.cellOfSubFace(face); });
   std::uniform_real_distribution<double> fraction(0, 1);
   std::mt19937 draw(11);
   int segments = 0, certified = 0, wrong = 0, points = 0, loose = 0;
   double widestRounding = 0;  // the corners' rounding, relative to the scene's size
   const double size = space.meshes().world.bounds().diagonal().norm();
   for (int slice = 0; slice < 4; ++slice) {
-    const double theta = random.next().theta;
-    std::vector<SliceFace> faces;
-    try {
-      faces = sliceFaces.at(AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space.algebra());
-    } catch (const std::invalid_argument&) {
-      continue;  // a critical angle
-    }
+    const std::optional<std::pair<double, std::vector<SliceFace>>> sliced = randomSlice(space, random);
+    if (!sliced) continue;
+    const auto& [theta, faces] = *sliced;
     for (int sample = 0; sample < 100; ++sample) {
       Pose2 from = random.next(), to = random.next();
       from.theta = to.theta = theta;
