@@ -207,6 +207,10 @@ BoundaryPoint nearestOnBoundary(const SliceFace& face, const std::array<double, 
     for (std::size_t k = 0; k < loop.corners.size(); ++k) {
       const std::array<double, 2>& a = loop.corners[k];
       const std::array<double, 2>& b = loop.corners[(k + 1) % loop.corners.size()];
+      // An edge whose box lies farther than the nearest point so far is skipped.
+      const double gapX = std::max({0.0, std::min(a[0], b[0]) - point[0], point[0] - std::max(a[0], b[0])});
+      const double gapY = std::max({0.0, std::min(a[1], b[1]) - point[1], point[1] - std::max(a[1], b[1])});
+      if (gapX * gapX + gapY * gapY > nearest.distance * nearest.distance) continue;
       const double ex = b[0] - a[0], ey = b[1] - a[1], length2 = ex * ex + ey * ey;
       const double along = length2 > 0 ? ((point[0] - a[0]) * ex + (point[1] - a[1]) * ey) / length2 : 0;
       const double t = std::clamp(along, 0.0, 1.0);
