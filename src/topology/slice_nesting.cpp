@@ -19,25 +19,25 @@ void LeftmostEnd::offer(std::uint32_t patch, const PatchSlab& slab, std::size_t 
   const RoundingScope rounding;
   const PatchGeometry& geometry = arrangement_.patches[patch];
   const std::array<Interval, 2> end0 = slice_.end(geometry, 0), end1 = slice_.end(geometry, 1);
-  Interval x(-HUGE_VAL, HUGE_VAL);
+  std::array<Interval, 2> x{Interval(-HUGE_VAL, HUGE_VAL), Interval(-HUGE_VAL, HUGE_VAL)};
   if (const auto piece = slice_.pieceOf(arrangement_, patch, slab, gap)) {
-    const Interval low = end0[0] + piece->first * (end1[0] - end0[0]);
-    const Interval high = end0[0] + piece->second * (end1[0] - end0[0]);
-    x = Interval(std::min(low.lower(), high.lower()), std::min(low.upper(), high.upper()));
+    x = {end0[0] + piece->first * (end1[0] - end0[0]), end0[0] + piece->second * (end1[0] - end0[0])};
   }
-  offered_.push_back({patch, &slab, gap, x.lower()});
-  leftmostX_ = std::min(leftmostX_, x.upper());
+  offered_.push_back({patch, &slab, gap, {x[0].lower(), x[1].lower()}});
+  leftmostX_ = std::min({leftmostX_, x[0].upper(), x[1].upper()});
 }
 
 std::optional<Point> LeftmostEnd::exact() const {
   std::optional<Point> best;
   const auto [cosine, sine] = exactCosSin(angle_);
+  // Only the ends that may be leftmost are placed exactly (a crossing each).
   for (const Offered& piece : offered_) {
-    if (piece.lowestX > leftmostX_) continue;
+    if (piece.lowestX[0] > leftmostX_ && piece.lowestX[1] > leftmostX_) continue;
     const ExactSegment segment = segmentAt(arrangement_.patches[piece.patch], cosine, sine);
-    const auto [low, high] = pieceOf(arrangement_, piece.patch, *piece.slab, piece.gap, segment, cosine, sine).value();
-    for (const Rational& lambda : {low, high}) {
-      const Point point = segment.at(lambda);
+    for (int end : {0, 1}) {
+      if (piece.lowestX[end] > leftmostX_) continue;
+      const Point point =
+          segment.at(pieceEndOf(arrangement_, piece.patch, *piece.slab, piece.gap, end, segment, cosine, sine).value());
       if (!best || leftOf(point, *best)) best = point;
     }
   }

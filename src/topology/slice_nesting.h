@@ -5,6 +5,7 @@
 // face, cell_graph.cpp): the leftmost point of the curve, and what a point just
 // left of it sees (docs/design.md section 6, step 5).
 
+#include <array>
 #include <functional>
 #include <optional>
 
@@ -32,11 +33,12 @@ class LeftmostEnd {
   std::optional<Point> exact() const;
 
  private:
+  /// A piece offered, with the lower bounds of its ends' x.
   struct Offered {
     std::uint32_t patch;
     const PatchSlab* slab;
     std::size_t gap;
-    double lowestX;
+    std::array<double, 2> lowestX;
   };
   const Arrangement& arrangement_;
   AlgebraicAngle angle_;

@@ -43,18 +43,26 @@ inline std::optional<Rational> crossingLambda(const ExactSegment& segment, const
   return Rational(v0 / (v0 - v1));
 }
 
-/// The first and last lambda of the sub-face at index `gap` of `slab` (a slab of
-/// `patch` holding the angle of `segment`, or ending or starting there); nothing when
-/// an end is a crossing with a parallel line (see crossingLambda).
+/// The lambda of end `end` (0: the first, 1: the last) of the sub-face at index `gap`
+/// of `slab` (a slab of `patch` holding the angle of `segment`, or ending or starting
+/// there); nothing when it is a crossing with a parallel line (see crossingLambda).
+inline std::optional<Rational> pieceEndOf(const Arrangement& arrangement, std::uint32_t patch, const PatchSlab& slab,
+                                          std::size_t gap, int end, const ExactSegment& segment,
+                                          const Rational& cosine, const Rational& sine) {
+  if (end == 0 && gap == 0) return Rational(0);
+  if (end == 1 && gap == slab.curves.size()) return Rational(1);
+  const std::uint32_t curve = slab.curves[gap + end - 1];
+  return crossingLambda(segment, segmentAt(arrangement.patches[arrangement.curves[curve].other(patch)], cosine, sine));
+}
+
+/// The first and last lambda of the sub-face (see pieceEndOf); nothing when an end is
+/// a crossing with a parallel line.
 inline std::optional<std::pair<Rational, Rational>> pieceOf(const Arrangement& arrangement, std::uint32_t patch,
                                                             const PatchSlab& slab, std::size_t gap,
                                                             const ExactSegment& segment, const Rational& cosine,
                                                             const Rational& sine) {
-  const auto lambdaOf = [&](std::uint32_t curve) {
-    return crossingLambda(segment, segmentAt(arrangement.patches[arrangement.curves[curve].other(patch)], cosine, sine));
-  };
-  const std::optional<Rational> low = gap == 0 ? Rational(0) : lambdaOf(slab.curves[gap - 1]);
-  const std::optional<Rational> high = gap == slab.curves.size() ? Rational(1) : lambdaOf(slab.curves[gap]);
+  const std::optional<Rational> low = pieceEndOf(arrangement, patch, slab, gap, 0, segment, cosine, sine);
+  const std::optional<Rational> high = pieceEndOf(arrangement, patch, slab, gap, 1, segment, cosine, sine);
   if (!low || !high) return std::nullopt;
   return std::make_pair(*low, *high);
 }
