@@ -47,8 +47,8 @@ inline std::optional<Rational> crossingLambda(const ExactSegment& segment, const
 /// of `slab` (a slab of `patch` holding the angle of `segment`, or ending or starting
 /// there); nothing when it is a crossing with a parallel line (see crossingLambda).
 inline std::optional<Rational> pieceEndOf(const Arrangement& arrangement, std::uint32_t patch, const PatchSlab& slab,
-                                          std::size_t gap, int end, const ExactSegment& segment,
-                                          const Rational& cosine, const Rational& sine) {
+                                          std::size_t gap, int end, const ExactSegment& segment, const Rational& cosine,
+                                          const Rational& sine) {
   if (end == 0 && gap == 0) return Rational(0);
   if (end == 1 && gap == slab.curves.size()) return Rational(1);
   const std::uint32_t curve = slab.curves[gap + end - 1];
@@ -115,8 +115,8 @@ struct SliceIn {
 
   /// The ends of the piece at index `gap` of `slab` (low lambda, then high); the
   /// segment's ends when a crossing is uncertain (they hold the piece).
-  std::array<std::array<T, 2>, 2> pieceEnds(const Arrangement& arrangement, std::uint32_t patch,
-                                            const PatchSlab& slab, std::size_t gap) const {
+  std::array<std::array<T, 2>, 2> pieceEnds(const Arrangement& arrangement, std::uint32_t patch, const PatchSlab& slab,
+                                            std::size_t gap) const {
     const PatchGeometry& geometry = arrangement.patches[patch];
     const std::array<T, 2> end0 = end(geometry, 0), end1 = end(geometry, 1);
     const auto lambdas = pieceOf(arrangement, patch, slab, gap);
