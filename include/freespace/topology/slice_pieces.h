@@ -115,8 +115,8 @@ struct SliceIn {
 
   /// The ends of the piece at index `gap` of `slab` (low lambda, then high); the
   /// segment's ends when a crossing is uncertain (they hold the piece).
-  std::array<std::array<T, 2>, 2> pieceEnds(const Arrangement& arrangement, std::uint32_t patch, const PatchSlab& slab,
-                                            std::size_t gap) const {
+  std::array<std::array<T, 2>, 2> pieceEnds(const Arrangement& arrangement, std::uint32_t patch,
+                                            const PatchSlab& slab, std::size_t gap) const {
     const PatchGeometry& geometry = arrangement.patches[patch];
     const std::array<T, 2> end0 = end(geometry, 0), end1 = end(geometry, 1);
     const auto lambdas = pieceOf(arrangement, patch, slab, gap);
