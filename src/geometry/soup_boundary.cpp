@@ -114,7 +114,8 @@ Point3 towardsFan(const SoupComplex& complex, const std::vector<BoundaryFace>& f
   const Point3 origin = rounded(complex.points[vertex]);
   for (const BoundaryFace& face : faces) {
     const TriangleIndices& corners = complex.faces[face.face];
-    if (std::find(corners.begin(), corners.end(), vertex) == corners.end() || fans.of(face.face, vertex) != fan) continue;
+    if (std::find(corners.begin(), corners.end(), vertex) == corners.end() || fans.of(face.face, vertex) != fan)
+      continue;
     for (Index corner : corners) {
       if (corner != vertex) sum += (rounded(complex.points[corner]) - origin).normalized();
     }
@@ -135,7 +136,8 @@ void assembleBoundary(const SoupComplex& complex, const std::vector<BoundaryFace
     const Index component = components.of(face.face);
     for (Index& corner : corners) {
       const int fan = fans.of(face.face, corner);
-      const auto [found, inserted] = copies.emplace(std::make_tuple(component, corner, fan), solid.boundary.vertices.size());
+      const auto [found, inserted] =
+          copies.emplace(std::make_tuple(component, corner, fan), solid.boundary.vertices.size());
       if (inserted) {
         Point3 position = rounded(complex.points[corner]);
         if (fan > 0) position += separation * towardsFan(complex, faces, fans, corner, fan);
