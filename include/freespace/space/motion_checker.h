@@ -72,12 +72,12 @@ class MotionChecker {
 
  private:
   struct Part;
+  /// The motion's length in |dxy| + r |dtheta|, with room for its rounding.
+  double metricLength(const Pose2& from, const Pose2& to) const;
   /// Halves the motion's parts, the nearest first, until `certain` accepts each
   /// (given the least clearance the Lipschitz bound guarantees on it and its ends'
   /// clearances), a part starts blocked, `hopeless` rejects one, or the parts or
   /// queries run out; fills `result` (free when every part was accepted).
-  /// The motion's length in |dxy| + r |dtheta|, with room for its rounding.
-  double metricLength(const Pose2& from, const Pose2& to) const;
   template <typename Certain, typename Hopeless>
   void certify(const Pose2& from, const Pose2& to, Certain certain, Hopeless hopeless, std::size_t queryLimit,
                MotionCheck& result) const;
