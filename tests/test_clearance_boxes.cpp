@@ -3,7 +3,8 @@
 // clearance than its box's upper bound (anchors, with the contacts' levers in theta,
 // and blocked centres' depths),
 // and a box with a positive lower bound holds only free configurations with at least
-// that much. Boxes of many sizes: random leaves are halved again
+// that much; a box that no boundary patch meets (unbroken) holds only configurations
+// located as its centre is (blocked, or in its centre's cell). Boxes of many sizes: random leaves are halved again
 // and again (in theta alone where ClearanceBoxes::axesToSplit says so), so anchors
 // pass from parents and neighbours to children; each sample's leaf is found again by
 // leafAt.
@@ -40,7 +41,7 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
     boxes.split(box, axes);
   }
   std::uniform_real_distribution<double> unit(0, 1);
-  int free = 0, certified = 0, freeBesideBlockedCentres = 0;
+  int free = 0, certified = 0, freeBesideBlockedCentres = 0, unbrokenFree = 0, unbrokenBlocked = 0;
   for (int sample = 0; sample < 3000; ++sample) {
     const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random);
     const ClearanceBox& leaf = boxes.box(box);
@@ -54,6 +55,14 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
       ++free;
       if (!leaf.centreCell) ++freeBesideBlockedCentres;
       EXPECT_LE(clearance.lower, leaf.upper) << "box " << box << " at " << pose.x << " " << pose.y << " " << pose.theta;
+    }
+    if (leaf.unbroken) {
+      // No boundary of the free space meets it: every configuration lies where its
+      // centre does.
+      ++(leaf.centreCell ? unbrokenFree : unbrokenBlocked);
+      EXPECT_EQ(clearance.location.free, leaf.centreCell.has_value())
+          << "box " << box << " at " << pose.x << " " << pose.y << " " << pose.theta;
+      if (clearance.location.free && leaf.centreCell) EXPECT_EQ(clearance.location.cell, *leaf.centreCell);
     }
     if (leaf.lower > 0) {
       // A positive lower bound certifies the box free (below 0 it bounds nothing: the
@@ -70,6 +79,8 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
   // Boxes halved in theta alone (blocked centres deeper than their half diagonal) are
   // among them.
   EXPECT_GT(thetaOnly, 0);
+  EXPECT_GT(unbrokenFree, 10);
+  EXPECT_GT(unbrokenBlocked, 10);
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, BundledClearanceBoxes,

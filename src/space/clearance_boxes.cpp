@@ -7,6 +7,8 @@
 
 #include "contact_point.h"
 #include "freespace/numbers/angle_reduction.h"
+#include "freespace/geometry/patch_segment.h"
+#include "freespace/numbers/interval.h"
 #include "freespace/space/motion_checker.h"
 
 namespace freespace {
@@ -31,11 +33,75 @@ std::size_t intervalOf(const std::vector<double>& edges, double value) {
 
 bool closedOverlap(double lowA, double highA, double lowB, double highB) { return lowA <= highB && lowB <= highA; }
 
+/// Whether the segment from `from` to `to` meets the rectangle [low, high] (clipped
+/// to it, Liang and Barsky's way).
+bool segmentMeetsRectangle(const std::array<double, 2>& from, const std::array<double, 2>& to,
+                           const std::array<double, 2>& low, const std::array<double, 2>& high) {
+  double enter = 0, leave = 1;
+  for (int axis = 0; axis < 2; ++axis) {
+    const double along = to[axis] - from[axis];
+    for (const double limit : {low[axis], high[axis]}) {
+      // Inside this side of the limit: (point - limit) has the sign `inward`.
+      const double inward = limit == low[axis] ? 1 : -1, start = inward * (from[axis] - limit);
+      const double rate = inward * along;
+      if (rate == 0) {
+        if (start < 0) return false;
+        continue;
+      }
+      const double crossing = -start / rate;
+      if (rate > 0) {
+        enter = std::max(enter, crossing);
+      } else {
+        leave = std::min(leave, crossing);
+      }
+    }
+  }
+  return enter <= leave;
+}
+
+/// Whether a patch's segment (its two features touching) may pass through the (x, y)
+/// rectangle of `query` at an angle within `halfWidth` of `middle`: its segment at
+/// `middle`, placed in double intervals, moves no farther than its ends' largest
+/// turning radius times the turn (docs/design.md section 3: each end is u + R v), so
+/// it may only where that segment meets the rectangle widened by as much.
+bool segmentMayMeet(const PatchGeometry& patch, double middle, double halfWidth, const PatchBox& query) {
+  // std::cos and std::sin (rounding to nearest) are within an ulp of the exact values.
+  const double cosine = std::cos(middle), sine = std::sin(middle);
+  std::array<std::array<double, 2>, 2> ends;
+  double error = 0, lever = 0;
+  {
+    const RoundingScope rounding;
+    const Interval cosineBounds(cosine - 1e-15, cosine + 1e-15), sineBounds(sine - 1e-15, sine + 1e-15);
+    for (int end = 0; end < 2; ++end) {
+      const Spiral<Interval> spiral = spiralOf<Interval>(patch.ends[end]);
+      const std::array<Interval, 2> point = spiralPoint(spiral, cosineBounds, sineBounds);
+      for (int axis = 0; axis < 2; ++axis) {
+        ends[end][axis] = point[axis].midpoint();
+        error = std::max(error, point[axis].upper() - point[axis].lower());
+      }
+      lever = std::max(lever, sqrt(spiral.vx * spiral.vx + spiral.vy * spiral.vy).upper());
+    }
+  }
+  if (!std::isfinite(error + lever)) return true;
+  // Widened by the turn, the ends' placing and the clipping's rounding.
+  const double magnitude = std::fabs(ends[0][0]) + std::fabs(ends[0][1]) + std::fabs(ends[1][0]) +
+                           std::fabs(ends[1][1]) + std::fabs(query.low[0]) + std::fabs(query.high[1]);
+  const double widening = (lever * halfWidth + error) * (1 + 1e-9) + 1e-12 * magnitude;
+  return segmentMeetsRectangle(ends[0], ends[1], {query.low[0] - widening, query.low[1] - widening},
+                               {query.high[0] + widening, query.high[1] + widening});
+}
+
 }  // namespace
 
 ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 2>& low,
                                const std::array<double, 2>& high, double reach, int across)
-    : space_(space), reach_(reach) {
+    : space_(space), reach_(reach), boundsFree_(space.arrangement().patches.size(), false) {
+  const Arrangement& arrangement = space.arrangement();
+  for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
+    for (std::uint32_t face = 0; face < arrangement.subdivisions[patch].faceCount && !boundsFree_[patch]; ++face) {
+      boundsFree_[patch] = space.cellOfSubFace({patch, face}).has_value();
+    }
+  }
   const double side = std::max(high[0] - low[0], high[1] - low[1]) / across;
   const int countX = std::max(1, static_cast<int>(std::ceil((high[0] - low[0]) / side)));
   const int countY = std::max(1, static_cast<int>(std::ceil((high[1] - low[1]) / side)));
@@ -109,6 +175,10 @@ std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std
                          std::min(reach_, contactLever(clearance, centre.theta, rounding) * (1 + 1e-9) + rounding)});
     }
   }
+  box.unbroken = !meetsFreeBoundary(box);
+  // Blocked throughout: no clearance above 0 anywhere in it (the Lipschitz bound
+  // across angles leaves room for pockets that no boundary here could enclose).
+  if (box.unbroken && !clearance.location.free) box.upper = std::min(box.upper, 0.0);
   boxes_.push_back(std::move(box));
   return static_cast<std::uint32_t>(boxes_.size() - 1);
 }
@@ -164,6 +234,25 @@ void ClearanceBoxes::bound(ClearanceBox& box, std::vector<ClearanceAnchor> candi
 
 Pose2 ClearanceBoxes::centre(const ClearanceBox& box) {
   return {0.5 * (box.low[0] + box.high[0]), 0.5 * (box.low[1] + box.high[1]), 0.5 * (box.low[2] + box.high[2])};
+}
+
+bool ClearanceBoxes::meetsFreeBoundary(const ClearanceBox& box) const {
+  const double scale = space_.meshes().scale;
+  // In the construction's coordinates, padded by far more than the rounding.
+  PatchBox query;
+  for (int axis = 0; axis < 3; ++axis) {
+    const double factor = axis < 2 ? scale : 1.0;
+    const double pad = 1e-12 * (1 + std::fabs(box.low[axis]) + std::fabs(box.high[axis]));
+    query.low[axis] = (box.low[axis] - pad) * factor;
+    query.high[axis] = (box.high[axis] + pad) * factor;
+  }
+  const double middle = 0.5 * (box.low[2] + box.high[2]), halfWidth = 0.5 * (box.high[2] - box.low[2]);
+  for (std::uint32_t patch : space_.arrangement().boxIndex->meeting(query)) {
+    if (boundsFree_[patch] && segmentMayMeet(space_.arrangement().patches[patch], middle, halfWidth, query)) {
+      return true;
+    }
+  }
+  return false;
 }
 
 bool ClearanceBoxes::touch(const ClearanceBox& a, const ClearanceBox& b) const {
@@ -263,7 +352,7 @@ void ClearanceBoxes::dropBelow(double level) {
 
 void ClearanceBoxes::dropOutside(std::uint32_t cell) {
   for (ClearanceBox& box : boxes_) {
-    if (!box.split && box.lower > 0 && box.centreCell && *box.centreCell != cell) box.dropped = true;
+    if (!box.split && (box.lower > 0 || box.unbroken) && box.centreCell && *box.centreCell != cell) box.dropped = true;
   }
 }
 

@@ -39,6 +39,9 @@ struct ClearanceBox {
   bool dropped = false;
   /// The free cell holding the box's centre (none when it is blocked).
   std::optional<std::uint32_t> centreCell;
+  /// No patch of the free space's boundary meets the box: all of it lies where its
+  /// centre does (blocked, or in centreCell).
+  bool unbroken = false;
   /// Boxes it touches (closed boxes, theta wrapping around); some may be split since.
   std::vector<std::uint32_t> neighbours;
 };
@@ -93,8 +96,8 @@ class ClearanceBoxes {
   /// Drops every box whose upper bound is below `level`.
   void dropBelow(double level);
   /// Drops every box that lies in another free cell than `cell`: free throughout
-  /// (lower bound above 0; connected, so all of it in its centre's cell), its centre
-  /// in another.
+  /// (lower bound above 0; connected, so all of it in its centre's cell) or unbroken,
+  /// its centre in another.
   void dropOutside(std::uint32_t cell);
 
   const ClearanceBox& box(std::uint32_t index) const { return boxes_[index]; }
@@ -115,11 +118,16 @@ class ClearanceBoxes {
   /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.
   void bound(ClearanceBox& box, std::vector<ClearanceAnchor> candidates) const;
   bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
+  /// Whether a patch with a sub-face that bounds a free cell may meet the box (by the
+  /// patches' boxes, which hold their segments).
+  bool meetsFreeBoundary(const ClearanceBox& box) const;
 
   const FreeSpace& space_;
   double reach_;
   std::array<std::vector<double>, 3> rootEdges_;  // the first boxes' edges along each axis
   std::vector<ClearanceBox> boxes_;
+  /// Whether each patch has a sub-face that bounds a free cell.
+  std::vector<bool> boundsFree_;
 };
 
 }  // namespace freespace
