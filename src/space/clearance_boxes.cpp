@@ -359,11 +359,12 @@ void ClearanceBoxes::dropOutside(std::uint32_t cell) {
 namespace {
 
 /// Widest chains from `from` (breadth by `boundOf`, through the boxes `usable`
-/// accepts), by Dijkstra's method with the bottleneck for length, stopping once `to`
-/// is reached (never when it is UINT32_MAX): each box's bottleneck and predecessor.
-template <typename BoundOf, typename Usable>
-void widestFrom(const std::vector<ClearanceBox>& boxes, std::uint32_t from, std::uint32_t to, BoundOf boundOf,
-                Usable usable, std::vector<double>& widest, std::vector<std::uint32_t>& previous) {
+/// accepts), by Dijkstra's method with the bottleneck for length, until `stop` says
+/// so of a box reached (with its bottleneck; boxes are reached widest first): each
+/// box's bottleneck and predecessor, final for the boxes reached before.
+template <typename BoundOf, typename Usable, typename Stop>
+void widestFrom(const std::vector<ClearanceBox>& boxes, std::uint32_t from, BoundOf boundOf, Usable usable, Stop stop,
+                std::vector<double>& widest, std::vector<std::uint32_t>& previous) {
   widest.assign(boxes.size(), -HUGE_VAL);
   previous.assign(boxes.size(), UINT32_MAX);
   std::priority_queue<std::pair<double, std::uint32_t>> open;
@@ -373,7 +374,7 @@ void widestFrom(const std::vector<ClearanceBox>& boxes, std::uint32_t from, std:
     const auto [width, index] = open.top();
     open.pop();
     if (width < widest[index]) continue;
-    if (index == to) break;
+    if (stop(index, width)) break;
     for (std::uint32_t neighbour : boxes[index].neighbours) {
       if (!usable(boxes[neighbour])) continue;
       const double through = std::min(width, boundOf(neighbour));
@@ -392,12 +393,12 @@ ClearanceBoxes::Chain ClearanceBoxes::widestChain(std::uint32_t from, std::uint3
   std::vector<double> widest;
   std::vector<std::uint32_t> previous;
   widestFrom(
-      boxes_, from, to,
+      boxes_, from,
       [&](std::uint32_t index) { return bound == Bound::Lower ? boxes_[index].lower : boxes_[index].upper; },
       [&](const ClearanceBox& box) {
         return !box.split && !box.dropped && box.upper >= upperAtLeast && (!centreCell || box.centreCell == centreCell);
       },
-      widest, previous);
+      [&](std::uint32_t index, double) { return index == to; }, widest, previous);
   Chain chain;
   if (widest[to] == -HUGE_VAL) return chain;
   chain.bottleneck = widest[to];
@@ -406,12 +407,19 @@ ClearanceBoxes::Chain ClearanceBoxes::widestChain(std::uint32_t from, std::uint3
   return chain;
 }
 
-std::vector<double> ClearanceBoxes::widestUpperFrom(std::uint32_t from) const {
+std::vector<double> ClearanceBoxes::widestUpperFrom(std::uint32_t from, std::uint32_t to, double ratio,
+                                                    double cap) const {
   std::vector<double> widest;
   std::vector<std::uint32_t> previous;
+  double floor = -HUGE_VAL;
   widestFrom(
-      boxes_, from, UINT32_MAX, [&](std::uint32_t index) { return boxes_[index].upper; },
-      [](const ClearanceBox& box) { return !box.split && !box.dropped; }, widest, previous);
+      boxes_, from, [&](std::uint32_t index) { return boxes_[index].upper; },
+      [](const ClearanceBox& box) { return !box.split && !box.dropped; },
+      [&](std::uint32_t index, double width) {
+        if (index == to) floor = ratio * std::min(cap, width);
+        return width < floor;
+      },
+      widest, previous);
   return widest;
 }
 

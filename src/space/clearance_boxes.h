@@ -80,8 +80,10 @@ class ClearanceBoxes {
                     std::optional<std::uint32_t> centreCell = std::nullopt) const;
 
   /// For every box, the widest chain's bottleneck by upper bounds from `from` to it
-  /// (-infinity where none reaches).
-  std::vector<double> widestUpperFrom(std::uint32_t from) const;
+  /// (-infinity where none reaches), where that is at least `ratio` times the least of
+  /// `cap` and the bottleneck to `to`; below, the search stops and leaves lower
+  /// values (a path query asks no more: docs/design.md section 7).
+  std::vector<double> widestUpperFrom(std::uint32_t from, std::uint32_t to, double ratio, double cap) const;
 
   /// The box (not split) holding a configuration of the domain.
   std::uint32_t leafAt(const Pose2& pose) const;

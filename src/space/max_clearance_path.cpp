@@ -247,7 +247,10 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     if (routedLower > 0) boxes.dropBelow(routedLower);
     boxes.dropOutside(path.startCell);
     const std::uint32_t from = boxes.leafAt(passageStart), to = boxes.leafAt(passageEnd);
-    const std::vector<double> fromStart = boxes.widestUpperFrom(from), fromGoal = boxes.widestUpperFrom(to);
+    // Only chains at the target's level matter below: each search stops under it.
+    const double cap = std::min(passageStartUpper, passageEndUpper);
+    const std::vector<double> fromStart = boxes.widestUpperFrom(from, to, options.clearanceRatio, cap),
+                              fromGoal = boxes.widestUpperFrom(to, from, options.clearanceRatio, cap);
     if (fromStart[to] == -HUGE_VAL) {
       path.status = PathStatus::infeasible;
       path.proof = "no path of free cell " + std::to_string(path.startCell) + " stays inside the volume";
