@@ -9,6 +9,7 @@
 #include <deque>
 #include <map>
 
+#include "freespace/geometry/interval_segment_distance.h"
 #include "freespace/numbers/interval.h"
 
 namespace freespace {
@@ -227,19 +228,9 @@ namespace {
 using Point2 = std::array<double, 2>;
 
 /// A lower bound on the distance from `p` to the segment from `a` to `b` (inside a
-/// RoundingScope): to the end beyond which the foot of the perpendicular certainly
-/// lies, else to the segment's line.
+/// RoundingScope).
 double leastDistanceToSegment(const Point2& p, const Point2& a, const Point2& b) {
-  const Interval wx = Interval(b[0]) - a[0], wy = Interval(b[1]) - a[1];
-  const Interval vx = Interval(p[0]) - a[0], vy = Interval(p[1]) - a[1];
-  const auto length = [](const Interval& x, const Interval& y) { return sqrt(x * x + y * y); };
-  const Interval squaredLength = wx * wx + wy * wy;
-  if (!(squaredLength.lower() > 0)) return std::max(0.0, (length(vx, vy) - sqrt(squaredLength)).lower());
-  const Interval along = (vx * wx + vy * wy) / squaredLength;
-  if (along.upper() < 0) return length(vx, vy).lower();
-  if (along.lower() > 1) return length(Interval(p[0]) - b[0], Interval(p[1]) - b[1]).lower();
-  const Interval cross = vx * wy - vy * wx;
-  return sqrt(cross * cross / squaredLength).lower();
+  return segmentDistanceBounds({p[0], p[1]}, {a[0], a[1]}, {b[0], b[1]}).lower;
 }
 
 /// A lower bound on the distance between the boxes of two segments (inside a

@@ -5,6 +5,7 @@
 #include <limits>
 #include <vector>
 
+#include "freespace/geometry/interval_segment_distance.h"
 #include "freespace/geometry/patch_box_index.h"
 #include "freespace/topology/slice_pieces.h"
 #include "gluing_parts.h"
@@ -14,7 +15,6 @@ namespace freespace {
 namespace {
 
 using slices::Point;
-using IntervalPoint = std::array<Interval, 2>;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
@@ -33,41 +33,15 @@ struct PieceDistance {
   std::array<double, 2> nearest;
 };
 
-Interval length(const Interval& x, const Interval& y) { return sqrt(x * x + y * y); }
-
-/// Bounds on the distance from `from` to the points e0 + lambda (e1 - e0) with lambda
-/// between `low` and `high`, two intervals holding the piece's ends (inside a
-/// RoundingScope). The lower bound comes from the piece's widest extent and the
-/// line's distance, the upper one from points certainly on the piece (a distance
-/// evaluated over an end's interval bounds the distance to the end from above).
+/// The distance from `from` to a piece, the part of the segment from e0 to e1 between
+/// `low` and `high` (inside a RoundingScope).
 PieceDistance distanceToPiece(const BoundaryPiece& piece, const IntervalPoint& e0, const IntervalPoint& e1,
                               const Interval& low, const Interval& high, const IntervalPoint& from) {
-  const Interval wx = e1[0] - e0[0], wy = e1[1] - e0[1], vx = from[0] - e0[0], vy = from[1] - e0[1];
-  const auto distanceAt = [&](const Interval& lambda) { return length(vx - lambda * wx, vy - lambda * wy); };
-  const Interval toLow = distanceAt(low), toHigh = distanceAt(high);
-  const Interval squaredLength = wx * wx + wy * wy;
-  double lower = 0, upper = std::min(toLow.upper(), toHigh.upper());
-  double nearestLambda = low.midpoint();
-  if (squaredLength.lower() > 0) {
-    const Interval foot = (vx * wx + vy * wy) / squaredLength;
-    const Interval cross = vx * wy - vy * wx;
-    const Interval toLine = sqrt(cross * cross / squaredLength);
-    if (foot.upper() < low.lower()) {
-      lower = toLow.lower();
-    } else if (foot.lower() > high.upper()) {
-      lower = toHigh.lower();
-    } else {
-      lower = toLine.lower();
-    }
-    if (foot.lower() >= low.upper() && foot.upper() <= high.lower()) upper = std::min(upper, toLine.upper());
-    nearestLambda = std::clamp(foot.midpoint(), low.midpoint(), std::max(low.midpoint(), high.midpoint()));
-  } else {
-    // A segment shrunk to (nearly) a point: every point of it is that near its end.
-    lower = std::min(toLow.lower(), toHigh.lower()) - sqrt(squaredLength).upper();
-  }
-  const std::array<double, 2> nearest{e0[0].midpoint() + nearestLambda * wx.midpoint(),
-                                      e0[1].midpoint() + nearestLambda * wy.midpoint()};
-  return {piece, Interval(std::max(lower, 0.0), upper), nearest};
+  const SegmentDistanceBounds bounds = segmentDistanceBounds(from, e0, e1, low, high);
+  const double lambda = bounds.nearestLambda;
+  const std::array<double, 2> nearest{e0[0].midpoint() + lambda * (e1[0] - e0[0]).midpoint(),
+                                      e0[1].midpoint() + lambda * (e1[1] - e0[1]).midpoint()};
+  return {piece, Interval(bounds.lower, bounds.upper), nearest};
 }
 
 /// The slabs of a patch whose gaps are the pieces of its segment at the angle: the
@@ -152,9 +126,10 @@ struct SliceBoundaryDistance::Impl {
     };
     // The distance, the least of the pieces', is at least their least lower bound.
     const auto lowest = [&] {
-      return std::min_element(pieces.begin(), pieces.end(), [](const PieceDistance& a, const PieceDistance& b) {
-               return a.distance.lower() < b.distance.lower();
-             })->distance.lower();
+      return std::min_element(
+                 pieces.begin(), pieces.end(),
+                 [](const PieceDistance& a, const PieceDistance& b) { return a.distance.lower() < b.distance.lower(); })
+          ->distance.lower();
     };
     const double best = std::min_element(pieces.begin(), pieces.end(), byUpper)->distance.upper();
     if (std::isinf(best) || best - lowest() > relativeWidth * best) {
@@ -165,7 +140,8 @@ struct SliceBoundaryDistance::Impl {
     }
     const PieceDistance& nearest = *std::min_element(pieces.begin(), pieces.end(), byUpper);
     const PatchSlab& slab = *nearest.piece.slab;
-    return {Interval(lowest(), nearest.distance.upper()), {nearest.piece.patch, slab.faces[nearest.piece.gap]},
+    return {Interval(lowest(), nearest.distance.upper()),
+            {nearest.piece.patch, slab.faces[nearest.piece.gap]},
             nearest.nearest};
   }
 };
@@ -196,7 +172,8 @@ std::optional<BoundaryDistance> SliceBoundaryDistance::nearest(const AlgebraicAn
   for (double reach = std::max(2 * scales.typicalWidth, scales.side / 1024);; reach *= 4) {
     if (reach >= 4 * scales.side) reach = kInfinity;
     pieces = impl_->piecesWithin(rationalAngle, *slice, from, fromInterval, reach);
-    if (std::any_of(pieces.begin(), pieces.end(), [&](const PieceDistance& p) { return p.distance.upper() <= reach; })) {
+    if (std::any_of(pieces.begin(), pieces.end(),
+                    [&](const PieceDistance& p) { return p.distance.upper() <= reach; })) {
       break;
     }
     if (std::isinf(reach)) break;
