@@ -10,8 +10,10 @@
 // leafAt.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "bundled_problem.h"
 #include "freespace/problem/planar_problem.h"
@@ -81,6 +83,54 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
   EXPECT_GT(thetaOnly, 0);
   EXPECT_GT(unbrokenFree, 10);
   EXPECT_GT(unbrokenBlocked, 10);
+}
+
+// The widest chains by upper bounds from the start's box, by plain relaxation until
+// nothing changes (an oracle apart from the searches' Dijkstra): the search that stops
+// below a ratio of the bottleneck to the goal's box agrees with it on every box at that
+// level or above, and leaves the others below it.
+TEST_P(BundledClearanceBoxes, SearchesStoppedBelowTheTargetAgreeWithRelaxationAboveIt) {
+  const LoadedProblem loaded = loadBundledProblem(GetParam());
+  const FreeSpace space(loaded.robot, loaded.world);
+  const Eigen::AlignedBox2d volume = *loaded.problem.volume;
+  ClearanceBoxes boxes(space, {volume.min().x(), volume.min().y()}, {volume.max().x(), volume.max().y()},
+                       MotionChecker(space).reach(), 8);
+  std::mt19937_64 random(20261205);
+  for (int round = 0; round < 300; ++round) {
+    const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random);
+    if (!boxes.box(box).split) boxes.split(box, boxes.axesToSplit(box));
+  }
+  const std::uint32_t from = boxes.leafAt(loaded.problem.start), to = boxes.leafAt(loaded.problem.goal);
+  std::vector<double> relaxed(boxes.size(), -HUGE_VAL);
+  relaxed[from] = boxes.box(from).upper;
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::uint32_t box = 0; box < boxes.size(); ++box) {
+      if (relaxed[box] == -HUGE_VAL || boxes.box(box).split) continue;
+      for (std::uint32_t neighbour : boxes.box(box).neighbours) {
+        const ClearanceBox& next = boxes.box(neighbour);
+        if (next.split || next.dropped) continue;
+        const double through = std::min(relaxed[box], next.upper);
+        if (through > relaxed[neighbour]) relaxed[neighbour] = through, changed = true;
+      }
+    }
+  }
+  ASSERT_GT(relaxed[to], 0);
+  const double ratio = 0.98, level = ratio * relaxed[to];
+  const std::vector<double> stopped = boxes.widestUpperFrom(from, to, ratio, HUGE_VAL);
+  int atLevel = 0, below = 0;
+  for (std::uint32_t box = 0; box < boxes.size(); ++box) {
+    if (boxes.box(box).split) continue;
+    if (relaxed[box] >= level) {
+      ++atLevel;
+      EXPECT_EQ(stopped[box], relaxed[box]) << "box " << box;
+    } else {
+      ++below;
+      EXPECT_LT(stopped[box], level) << "box " << box;
+    }
+  }
+  EXPECT_GT(atLevel, 10);
+  EXPECT_GT(below, 10);
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, BundledClearanceBoxes,
