@@ -27,21 +27,34 @@ namespace {
 
 class BundledClearanceBoxes : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
-  const LoadedProblem loaded = loadBundledProblem(GetParam());
-  const FreeSpace space(loaded.robot, loaded.world);
-  const Eigen::AlignedBox2d volume = *loaded.problem.volume;
-  ClearanceBoxes boxes(space, {volume.min().x(), volume.min().y()}, {volume.max().x(), volume.max().y()},
-                       MotionChecker(space).reach(), 8);
-  std::mt19937_64 random(20261205);
+/// Boxes over a problem's volume (8 across), random leaves among them halved
+/// `rounds` times as ClearanceBoxes::axesToSplit says, and how many of those halvings
+/// were in theta alone.
+struct HalvedBoxes {
+  ClearanceBoxes boxes;
   int thetaOnly = 0;
-  for (int round = 0; round < 600; ++round) {
+};
+
+HalvedBoxes halvedBoxes(const FreeSpace& space, const LoadedProblem& loaded, int rounds, std::mt19937_64& random) {
+  const Eigen::AlignedBox2d volume = *loaded.problem.volume;
+  HalvedBoxes halved{ClearanceBoxes(space, {volume.min().x(), volume.min().y()}, {volume.max().x(), volume.max().y()},
+                                    MotionChecker(space).reach(), 8)};
+  ClearanceBoxes& boxes = halved.boxes;
+  for (int round = 0; round < rounds; ++round) {
     const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random);
     if (boxes.box(box).split) continue;
     const std::uint8_t axes = boxes.axesToSplit(box);
-    thetaOnly += axes == ClearanceBoxes::kThetaAxis;
+    halved.thetaOnly += axes == ClearanceBoxes::kThetaAxis;
     boxes.split(box, axes);
   }
+  return halved;
+}
+
+TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
+  const LoadedProblem loaded = loadBundledProblem(GetParam());
+  const FreeSpace space(loaded.robot, loaded.world);
+  std::mt19937_64 random(20261205);
+  auto [boxes, thetaOnly] = halvedBoxes(space, loaded, 600, random);
   std::uniform_real_distribution<double> unit(0, 1);
   int free = 0, certified = 0, freeBesideBlockedCentres = 0, unbrokenFree = 0, unbrokenBlocked = 0;
   for (int sample = 0; sample < 3000; ++sample) {
@@ -92,14 +105,8 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
 TEST_P(BundledClearanceBoxes, SearchesStoppedBelowTheTargetAgreeWithRelaxationAboveIt) {
   const LoadedProblem loaded = loadBundledProblem(GetParam());
   const FreeSpace space(loaded.robot, loaded.world);
-  const Eigen::AlignedBox2d volume = *loaded.problem.volume;
-  ClearanceBoxes boxes(space, {volume.min().x(), volume.min().y()}, {volume.max().x(), volume.max().y()},
-                       MotionChecker(space).reach(), 8);
   std::mt19937_64 random(20261205);
-  for (int round = 0; round < 300; ++round) {
-    const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random);
-    if (!boxes.box(box).split) boxes.split(box, boxes.axesToSplit(box));
-  }
+  const ClearanceBoxes boxes = halvedBoxes(space, loaded, 300, random).boxes;
   const std::uint32_t from = boxes.leafAt(loaded.problem.start), to = boxes.leafAt(loaded.problem.goal);
   std::vector<double> relaxed(boxes.size(), -HUGE_VAL);
   relaxed[from] = boxes.box(from).upper;
