@@ -6,8 +6,8 @@
 #include <queue>
 
 #include "contact_point.h"
-#include "freespace/numbers/angle_reduction.h"
 #include "freespace/geometry/patch_segment.h"
+#include "freespace/numbers/angle_reduction.h"
 #include "freespace/numbers/interval.h"
 #include "freespace/space/motion_checker.h"
 
@@ -411,13 +411,13 @@ std::vector<double> ClearanceBoxes::widestUpperFrom(std::uint32_t from, std::uin
                                                     double cap) const {
   std::vector<double> widest;
   std::vector<std::uint32_t> previous;
-  double floor = -HUGE_VAL;
+  double level = -HUGE_VAL;  // known once `to` is reached
   widestFrom(
       boxes_, from, [&](std::uint32_t index) { return boxes_[index].upper; },
       [](const ClearanceBox& box) { return !box.split && !box.dropped; },
       [&](std::uint32_t index, double width) {
-        if (index == to) floor = ratio * std::min(cap, width);
-        return width < floor;
+        if (index == to) level = ratio * std::min(cap, width);
+        return width < level;
       },
       widest, previous);
   return widest;
