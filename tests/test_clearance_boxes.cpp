@@ -19,9 +19,11 @@
 #include "freespace/problem/planar_problem.h"
 #include "freespace/space/motion_checker.h"
 #include "space/clearance_boxes.h"
+#include "test_meshes.h"
 
 using namespace freespace;
 using freespace::testing::loadBundledProblem;
+using freespace::testing::scaled;
 
 namespace {
 
@@ -138,6 +140,40 @@ TEST_P(BundledClearanceBoxes, SearchesStoppedBelowTheTargetAgreeWithRelaxationAb
   }
   EXPECT_GT(atLevel, 10);
   EXPECT_GT(below, 10);
+}
+
+// The keyhole scaled down by 1e-5 is built in coordinates scaled back up by a power of
+// two (docs/design.md section 5): the boxes' test against the patches' boxes and
+// segments works in those, and unbroken boxes still hold only configurations located
+// as their centre.
+TEST(ScaledClearanceBoxes, UnbrokenBoxesLieWhereTheirCentreDoes) {
+  const LoadedProblem keyhole = loadBundledProblem("keyhole");
+  constexpr double kFactor = 1e-5;
+  const FreeSpace space(scaled(keyhole.robot, kFactor), scaled(keyhole.world, kFactor));
+  ASSERT_NE(space.meshes().scale, 1.0);
+  const Eigen::AlignedBox2d volume = *keyhole.problem.volume;
+  ClearanceBoxes boxes(space, {volume.min().x() * kFactor, volume.min().y() * kFactor},
+                       {volume.max().x() * kFactor, volume.max().y() * kFactor}, MotionChecker(space).reach(), 8);
+  std::mt19937_64 random(20261205);
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int round = 0; round < 300; ++round) {
+    const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random);
+    if (!boxes.box(box).split) boxes.split(box, boxes.axesToSplit(box));
+  }
+  int unbrokenFree = 0, unbrokenBlocked = 0;
+  for (int sample = 0; sample < 3000; ++sample) {
+    const ClearanceBox& leaf = boxes.box(std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random));
+    if (leaf.split || !leaf.unbroken) continue;
+    const Pose2 pose{leaf.low[0] + (leaf.high[0] - leaf.low[0]) * unit(random),
+                     leaf.low[1] + (leaf.high[1] - leaf.low[1]) * unit(random),
+                     leaf.low[2] + (leaf.high[2] - leaf.low[2]) * unit(random)};
+    const Location location = space.locate(pose);
+    ++(leaf.centreCell ? unbrokenFree : unbrokenBlocked);
+    EXPECT_EQ(location.free, leaf.centreCell.has_value()) << pose.x << " " << pose.y << " " << pose.theta;
+    if (location.free && leaf.centreCell) EXPECT_EQ(location.cell, *leaf.centreCell);
+  }
+  EXPECT_GT(unbrokenFree, 10);
+  EXPECT_GT(unbrokenBlocked, 10);
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, BundledClearanceBoxes,

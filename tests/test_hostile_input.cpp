@@ -18,12 +18,6 @@ using namespace freespace::testing;
 
 namespace {
 
-Mesh scaled(const Mesh& mesh, double factor) {
-  TriangleSoup soup{{}, mesh.triangles()};
-  for (const Point3& p : mesh.vertices()) soup.vertices.push_back(p * factor);
-  return Mesh::fromSoup(soup, "scaled");
-}
-
 const Mesh kRobot = tetrahedronMesh({0, 0, 0.1}, {0.6, 0, 0.2}, {0, 0.5, 0.3}, {0.1, 0.1, 0.8});
 
 }  // namespace

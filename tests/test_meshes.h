@@ -28,6 +28,13 @@ inline Mesh tetrahedronMesh(const Point3& a, const Point3& b, const Point3& c, c
   return Mesh::fromSoup(soup, "tetrahedron");
 }
 
+/// A mesh with every coordinate multiplied by `factor`.
+inline Mesh scaled(const Mesh& mesh, double factor) {
+  TriangleSoup soup{{}, mesh.triangles()};
+  for (const Point3& p : mesh.vertices()) soup.vertices.push_back(p * factor);
+  return Mesh::fromSoup(soup, "scaled");
+}
+
 /// Several soups as one mesh with several components.
 inline TriangleSoup joinSoups(const std::vector<TriangleSoup>& parts) {
   TriangleSoup joined;
