@@ -1,13 +1,12 @@
 // The clearance bounds of ClearanceBoxes (docs/design.md section 7) against the exact
 // clearance at random configurations inside the boxes: no free configuration has more
 // clearance than its box's upper bound (anchors, with the contacts' levers in theta,
-// and blocked centres' depths),
-// and a box with a positive lower bound holds only free configurations with at least
-// that much; a box that no boundary patch meets (unbroken) holds only configurations
-// located as its centre is (blocked, or in its centre's cell). Boxes of many sizes: random leaves are halved again
-// and again (in theta alone where ClearanceBoxes::axesToSplit says so), so anchors
-// pass from parents and neighbours to children; each sample's leaf is found again by
-// leafAt.
+// and blocked centres' depths), and a box with a positive lower bound holds only free
+// configurations with at least that much; a box that no boundary patch meets
+// (unbroken) holds only configurations located as its centre is (blocked, or in its
+// centre's cell). Boxes of many sizes: random leaves are halved again and again (in
+// theta alone where ClearanceBoxes::axesToSplit says so), so anchors pass from
+// parents and neighbours to children; each sample's leaf is found again by leafAt.
 #include <gtest/gtest.h>
 
 #include <cmath>
