@@ -8,8 +8,10 @@
 #include "contact_point.h"
 #include "freespace/geometry/patch_segment.h"
 #include "freespace/numbers/angle_reduction.h"
+#include "freespace/numbers/half_angle.h"
 #include "freespace/numbers/interval.h"
 #include "freespace/space/motion_checker.h"
+#include "freespace/topology/slice_pieces.h"
 
 namespace freespace {
 
@@ -60,33 +62,28 @@ bool segmentMeetsRectangle(const std::array<double, 2>& from, const std::array<d
 }
 
 /// Whether a patch's segment (its two features touching) may pass through the (x, y)
-/// rectangle of `query` at an angle within `halfWidth` of `middle`: its segment at
-/// `middle`, placed in double intervals, moves no farther than its ends' largest
-/// turning radius times the turn (docs/design.md section 3: each end is u + R v), so
-/// it may only where that segment meets the rectangle widened by as much.
-bool segmentMayMeet(const PatchGeometry& patch, double middle, double halfWidth, const PatchBox& query) {
-  // std::cos and std::sin (rounding to nearest) are within an ulp of the exact values.
-  const double cosine = std::cos(middle), sine = std::sin(middle);
+/// rectangle of `query` at an angle within `turn` of the angle of `slice` (inside a
+/// RoundingScope): its segment there moves no farther than its ends' largest turning
+/// radius times the turn (docs/design.md section 3: each end is u + R v), so it may
+/// only where that segment meets the rectangle widened by as much.
+bool segmentMayMeet(const PatchGeometry& patch, const slices::SliceIn<Interval>& slice, double turn,
+                    const PatchBox& query) {
   std::array<std::array<double, 2>, 2> ends;
   double error = 0, lever = 0;
-  {
-    const RoundingScope rounding;
-    const Interval cosineBounds(cosine - 1e-15, cosine + 1e-15), sineBounds(sine - 1e-15, sine + 1e-15);
-    for (int end = 0; end < 2; ++end) {
-      const Spiral<Interval> spiral = spiralOf<Interval>(patch.ends[end]);
-      const std::array<Interval, 2> point = spiralPoint(spiral, cosineBounds, sineBounds);
-      for (int axis = 0; axis < 2; ++axis) {
-        ends[end][axis] = point[axis].midpoint();
-        error = std::max(error, point[axis].upper() - point[axis].lower());
-      }
-      lever = std::max(lever, sqrt(spiral.vx * spiral.vx + spiral.vy * spiral.vy).upper());
+  for (int end = 0; end < 2; ++end) {
+    const Spiral<Interval> spiral = spiralOf<Interval>(patch.ends[end]);
+    const std::array<Interval, 2> point = spiralPoint(spiral, slice.cosine, slice.sine);
+    for (int axis = 0; axis < 2; ++axis) {
+      ends[end][axis] = point[axis].midpoint();
+      error = std::max(error, point[axis].upper() - point[axis].lower());
     }
+    lever = std::max(lever, sqrt(spiral.vx * spiral.vx + spiral.vy * spiral.vy).upper());
   }
   if (!std::isfinite(error + lever)) return true;
   // Widened by the turn, the ends' placing and the clipping's rounding.
   const double magnitude = std::fabs(ends[0][0]) + std::fabs(ends[0][1]) + std::fabs(ends[1][0]) +
                            std::fabs(ends[1][1]) + std::fabs(query.low[0]) + std::fabs(query.high[1]);
-  const double widening = (lever * halfWidth + error) * (1 + 1e-9) + 1e-12 * magnitude;
+  const double widening = (lever * turn + error) * (1 + 1e-9) + 1e-12 * magnitude;
   return segmentMeetsRectangle(ends[0], ends[1], {query.low[0] - widening, query.low[1] - widening},
                                {query.high[0] + widening, query.high[1] + widening});
 }
@@ -246,11 +243,16 @@ bool ClearanceBoxes::meetsFreeBoundary(const ClearanceBox& box) const {
     query.low[axis] = (box.low[axis] - pad) * factor;
     query.high[axis] = (box.high[axis] + pad) * factor;
   }
-  const double middle = 0.5 * (box.low[2] + box.high[2]), halfWidth = 0.5 * (box.high[2] - box.low[2]);
-  for (std::uint32_t patch : space_.arrangement().boxIndex->meeting(query)) {
-    if (boundsFree_[patch] && segmentMayMeet(space_.arrangement().patches[patch], middle, halfWidth, query)) {
-      return true;
-    }
+  // The slice at the rational angle nearest the box's middle (within about 1e-16 rad
+  // of it): the turn to the box's farther end, padded by far more than that.
+  const double middle = 0.5 * (box.low[2] + box.high[2]);
+  const double turn = 0.5 * (box.high[2] - box.low[2]) + 1e-12;
+  const std::vector<std::uint32_t> patches = space_.arrangement().boxIndex->meeting(query);
+  const RoundingScope rounding;
+  slices::SliceIn<Interval> slice;
+  HalfAngle::fromRadians(middle).cosSin(slice.cosine, slice.sine);
+  for (std::uint32_t patch : patches) {
+    if (boundsFree_[patch] && segmentMayMeet(space_.arrangement().patches[patch], slice, turn, query)) return true;
   }
   return false;
 }
