@@ -81,8 +81,11 @@ bool segmentMayMeet(const PatchGeometry& patch, const slices::SliceIn<Interval>&
   }
   if (!std::isfinite(error + lever)) return true;
   // Widened by the turn, the ends' placing and the clipping's rounding.
-  const double magnitude = std::fabs(ends[0][0]) + std::fabs(ends[0][1]) + std::fabs(ends[1][0]) +
-                           std::fabs(ends[1][1]) + std::fabs(query.low[0]) + std::fabs(query.high[1]);
+  double magnitude = 0;
+  for (int axis = 0; axis < 2; ++axis) {
+    magnitude +=
+        std::fabs(ends[0][axis]) + std::fabs(ends[1][axis]) + std::fabs(query.low[axis]) + std::fabs(query.high[axis]);
+  }
   const double widening = (lever * turn + error) * (1 + 1e-9) + 1e-12 * magnitude;
   return segmentMeetsRectangle(ends[0], ends[1], {query.low[0] - widening, query.low[1] - widening},
                                {query.high[0] + widening, query.high[1] + widening});
