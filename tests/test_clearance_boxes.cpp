@@ -28,17 +28,19 @@ namespace {
 
 class BundledClearanceBoxes : public ::testing::TestWithParam<std::string> {};
 
-/// Boxes over a problem's volume (8 across), random leaves among them halved
-/// `rounds` times as ClearanceBoxes::axesToSplit says, and how many of those halvings
-/// were in theta alone.
+/// Boxes over a problem's volume scaled by `factor` (8 across), random leaves among
+/// them halved `rounds` times as ClearanceBoxes::axesToSplit says, and how many of
+/// those halvings were in theta alone.
 struct HalvedBoxes {
   ClearanceBoxes boxes;
   int thetaOnly = 0;
 };
 
-HalvedBoxes halvedBoxes(const FreeSpace& space, const LoadedProblem& loaded, int rounds, std::mt19937_64& random) {
+HalvedBoxes halvedBoxes(const FreeSpace& space, const LoadedProblem& loaded, int rounds, std::mt19937_64& random,
+                        double factor = 1) {
   const Eigen::AlignedBox2d volume = *loaded.problem.volume;
-  HalvedBoxes halved{ClearanceBoxes(space, {volume.min().x(), volume.min().y()}, {volume.max().x(), volume.max().y()},
+  HalvedBoxes halved{ClearanceBoxes(space, {volume.min().x() * factor, volume.min().y() * factor},
+                                    {volume.max().x() * factor, volume.max().y() * factor},
                                     MotionChecker(space).reach(), 8)};
   ClearanceBoxes& boxes = halved.boxes;
   for (int round = 0; round < rounds; ++round) {
@@ -51,20 +53,42 @@ HalvedBoxes halvedBoxes(const FreeSpace& space, const LoadedProblem& loaded, int
   return halved;
 }
 
+/// A configuration drawn uniformly from a box.
+Pose2 randomPoseIn(const ClearanceBox& leaf, std::mt19937_64& random) {
+  std::uniform_real_distribution<double> unit(0, 1);
+  const double x = leaf.low[0] + (leaf.high[0] - leaf.low[0]) * unit(random);
+  const double y = leaf.low[1] + (leaf.high[1] - leaf.low[1]) * unit(random);
+  return {x, y, leaf.low[2] + (leaf.high[2] - leaf.low[2]) * unit(random)};
+}
+
+/// How many sampled configurations of unbroken boxes had free and blocked centres.
+struct UnbrokenSamples {
+  int free = 0, blocked = 0;
+};
+
+/// Expects a configuration of an unbroken box to lie where the box's centre does:
+/// blocked, or free in the centre's cell.
+void expectWhereTheCentreIs(const ClearanceBox& leaf, const Location& location, const Pose2& pose,
+                            UnbrokenSamples& samples) {
+  ++(leaf.centreCell ? samples.free : samples.blocked);
+  EXPECT_EQ(location.free, leaf.centreCell.has_value()) << pose.x << " " << pose.y << " " << pose.theta;
+  if (location.free && leaf.centreCell) {
+    EXPECT_EQ(location.cell, *leaf.centreCell);
+  }
+}
+
 TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
   const LoadedProblem loaded = loadBundledProblem(GetParam());
   const FreeSpace space(loaded.robot, loaded.world);
   std::mt19937_64 random(20261205);
   auto [boxes, thetaOnly] = halvedBoxes(space, loaded, 600, random);
-  std::uniform_real_distribution<double> unit(0, 1);
-  int free = 0, certified = 0, freeBesideBlockedCentres = 0, unbrokenFree = 0, unbrokenBlocked = 0;
+  int free = 0, certified = 0, freeBesideBlockedCentres = 0;
+  UnbrokenSamples unbroken;
   for (int sample = 0; sample < 3000; ++sample) {
     const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random);
     const ClearanceBox& leaf = boxes.box(box);
     if (leaf.split) continue;
-    const Pose2 pose{leaf.low[0] + (leaf.high[0] - leaf.low[0]) * unit(random),
-                     leaf.low[1] + (leaf.high[1] - leaf.low[1]) * unit(random),
-                     leaf.low[2] + (leaf.high[2] - leaf.low[2]) * unit(random)};
+    const Pose2 pose = randomPoseIn(leaf, random);
     EXPECT_EQ(boxes.leafAt(pose), box) << pose.x << " " << pose.y << " " << pose.theta;
     const Clearance clearance = space.clearance(pose);
     if (clearance.location.free) {
@@ -72,14 +96,9 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
       if (!leaf.centreCell) ++freeBesideBlockedCentres;
       EXPECT_LE(clearance.lower, leaf.upper) << "box " << box << " at " << pose.x << " " << pose.y << " " << pose.theta;
     }
-    if (leaf.unbroken) {
-      // No boundary of the free space meets it: every configuration lies where its
-      // centre does.
-      ++(leaf.centreCell ? unbrokenFree : unbrokenBlocked);
-      EXPECT_EQ(clearance.location.free, leaf.centreCell.has_value())
-          << "box " << box << " at " << pose.x << " " << pose.y << " " << pose.theta;
-      if (clearance.location.free && leaf.centreCell) EXPECT_EQ(clearance.location.cell, *leaf.centreCell);
-    }
+    // No boundary of the free space meets an unbroken box: every configuration lies
+    // where its centre does.
+    if (leaf.unbroken) expectWhereTheCentreIs(leaf, clearance.location, pose, unbroken);
     if (leaf.lower > 0) {
       // A positive lower bound certifies the box free (below 0 it bounds nothing: the
       // depth of a blocked configuration is not Lipschitz across angles).
@@ -95,8 +114,8 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
   // Boxes halved in theta alone (blocked centres deeper than their half diagonal) are
   // among them.
   EXPECT_GT(thetaOnly, 0);
-  EXPECT_GT(unbrokenFree, 10);
-  EXPECT_GT(unbrokenBlocked, 10);
+  EXPECT_GT(unbroken.free, 10);
+  EXPECT_GT(unbroken.blocked, 10);
 }
 
 // The widest chains by upper bounds from the start's box, by plain relaxation until
@@ -150,29 +169,17 @@ TEST(ScaledClearanceBoxes, UnbrokenBoxesLieWhereTheirCentreDoes) {
   constexpr double kFactor = 1e-5;
   const FreeSpace space(scaled(keyhole.robot, kFactor), scaled(keyhole.world, kFactor));
   ASSERT_NE(space.meshes().scale, 1.0);
-  const Eigen::AlignedBox2d volume = *keyhole.problem.volume;
-  ClearanceBoxes boxes(space, {volume.min().x() * kFactor, volume.min().y() * kFactor},
-                       {volume.max().x() * kFactor, volume.max().y() * kFactor}, MotionChecker(space).reach(), 8);
   std::mt19937_64 random(20261205);
-  std::uniform_real_distribution<double> unit(0, 1);
-  for (int round = 0; round < 300; ++round) {
-    const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random);
-    if (!boxes.box(box).split) boxes.split(box, boxes.axesToSplit(box));
-  }
-  int unbrokenFree = 0, unbrokenBlocked = 0;
+  const ClearanceBoxes boxes = halvedBoxes(space, keyhole, 300, random, kFactor).boxes;
+  UnbrokenSamples unbroken;
   for (int sample = 0; sample < 3000; ++sample) {
     const ClearanceBox& leaf = boxes.box(std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random));
     if (leaf.split || !leaf.unbroken) continue;
-    const Pose2 pose{leaf.low[0] + (leaf.high[0] - leaf.low[0]) * unit(random),
-                     leaf.low[1] + (leaf.high[1] - leaf.low[1]) * unit(random),
-                     leaf.low[2] + (leaf.high[2] - leaf.low[2]) * unit(random)};
-    const Location location = space.locate(pose);
-    ++(leaf.centreCell ? unbrokenFree : unbrokenBlocked);
-    EXPECT_EQ(location.free, leaf.centreCell.has_value()) << pose.x << " " << pose.y << " " << pose.theta;
-    if (location.free && leaf.centreCell) EXPECT_EQ(location.cell, *leaf.centreCell);
+    const Pose2 pose = randomPoseIn(leaf, random);
+    expectWhereTheCentreIs(leaf, space.locate(pose), pose, unbroken);
   }
-  EXPECT_GT(unbrokenFree, 10);
-  EXPECT_GT(unbrokenBlocked, 10);
+  EXPECT_GT(unbroken.free, 10);
+  EXPECT_GT(unbroken.blocked, 10);
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, BundledClearanceBoxes,
