@@ -1,15 +1,17 @@
 // Clearance (docs/design.md section 7) against the exact collision test on the
 // bundled scenes (tests/clearance_oracle.h): no state change nearer than the
 // certified clearance, one within it; the certified interval narrower than 1e-12
-// relative; and what the clearance must be on a scene simple enough to work it out
-// by hand.
+// relative; the same answer whatever distance the search is told to expect; and what
+// the clearance must be on a scene simple enough to work it out by hand.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <iostream>
 #include <string>
 
 #include "bundled_problem.h"
 #include "clearance_oracle.h"
+#include "random_configurations.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/scenes/scene_generator.h"
 #include "freespace/space/free_space.h"
@@ -32,6 +34,33 @@ TEST_P(BundledClearance, AgreesWithTheExactCollisionTest) {
   EXPECT_LT(check.widestRelative, 1e-12);
   EXPECT_GT(check.free, 0);
   EXPECT_LT(check.free, check.samples);
+}
+
+// The distance FreeSpace::clearance is told to expect only says where its search
+// starts: right, too near (down to nothing), too far or not a number, the answer is
+// the one it gives without it.
+TEST_P(BundledClearance, ExpectedDistanceChangesNoAnswer) {
+  const LoadedProblem problem = loadBundledProblem(GetParam());
+  const FreeSpace space(problem.robot, problem.world);
+  const double scale = space.meshes().scale;
+  RandomConfigurations configurations(space, 5);
+  int compared = 0;
+  for (int i = 0; i < 40; ++i) {
+    const Pose2 scaled = configurations.next();
+    const Pose2 pose{scaled.x / scale, scaled.y / scale, scaled.theta};
+    const Clearance plain = space.clearance(pose);
+    if (!std::isfinite(plain.lower)) continue;
+    const double distance = std::fabs(plain.upper);
+    for (const double expected : {distance * 1.01, distance / 3, 1e-300, 0.0, 100 * distance + 1, std::nan("")}) {
+      const Clearance hinted = space.clearance(pose, 1e-13, expected);
+      EXPECT_EQ(hinted.lower, plain.lower) << "expected " << expected;
+      EXPECT_EQ(hinted.upper, plain.upper) << "expected " << expected;
+      EXPECT_EQ(hinted.location.free, plain.location.free);
+      EXPECT_EQ(hinted.nearest, plain.nearest) << "expected " << expected;
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 100);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledClearance,

@@ -113,8 +113,9 @@ ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 
   for (int i = 0; i < countX; ++i) {
     for (int j = 0; j < countY; ++j) {
       for (int k = 0; k < countTheta; ++k) {
-        addBox({rootEdges_[0][i], rootEdges_[1][j], rootEdges_[2][k]},
-               {rootEdges_[0][i + 1], rootEdges_[1][j + 1], rootEdges_[2][k + 1]});
+        const std::array<double, 3> boxLow{rootEdges_[0][i], rootEdges_[1][j], rootEdges_[2][k]},
+            boxHigh{rootEdges_[0][i + 1], rootEdges_[1][j + 1], rootEdges_[2][k + 1]};
+        addBox(boxLow, boxHigh, boxes_.empty() ? HUGE_VAL : expectedClearance(boxes_.back(), boxLow, boxHigh));
       }
     }
   }
@@ -147,12 +148,22 @@ ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 
   }
 }
 
-std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std::array<double, 3>& high) {
+double ClearanceBoxes::expectedClearance(const ClearanceBox& known, const std::array<double, 3>& low,
+                                         const std::array<double, 3>& high) const {
+  if (known.own.empty()) return HUGE_VAL;
+  const ClearanceAnchor& centre = known.own.front();
+  const double turn = std::fabs(std::remainder(0.5 * (low[2] + high[2]) - centre.at[2], 2 * M_PI));
+  const double move = std::hypot(0.5 * (low[0] + high[0]) - centre.at[0], 0.5 * (low[1] + high[1]) - centre.at[1]);
+  return 1.01 * (std::fabs(centre.upper) + move + reach_ * turn);
+}
+
+std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std::array<double, 3>& high,
+                                     double expected) {
   ClearanceBox box;
   box.low = low;
   box.high = high;
   const Pose2 centre = ClearanceBoxes::centre(box);
-  const Clearance clearance = space_.clearance(centre, MotionChecker::kClearanceWidth);
+  const Clearance clearance = space_.clearance(centre, MotionChecker::kClearanceWidth, expected);
   // The farthest a configuration of the box is from its centre in |dxy| + r |dtheta|,
   // rounded up (with room for the centre's rounding and for the sliver between the
   // doubles nearest -pi and pi).
@@ -300,7 +311,7 @@ void ClearanceBoxes::split(std::uint32_t index, std::uint8_t axes) {
       (child >> bit & 1 ? low : high)[axis] = middle;
       ++bit;
     }
-    addBox(low, high);
+    addBox(low, high, expectedClearance(boxes_[index], low, high));
   }
   boxes_[index].split = true;
   boxes_[index].splitAxes = axes;

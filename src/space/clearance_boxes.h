@@ -111,7 +111,15 @@ class ClearanceBoxes {
   Pose2 meeting(std::uint32_t box, std::uint32_t next) const;
 
  private:
-  std::uint32_t addBox(const std::array<double, 3>& low, const std::array<double, 3>& high);
+  /// Adds a box, its centre's contact looked for about `expected` away first (a hint:
+  /// FreeSpace::clearance).
+  std::uint32_t addBox(const std::array<double, 3>& low, const std::array<double, 3>& high, double expected = HUGE_VAL);
+  /// About how far the contact of the centre of [low, high] lies, from a box whose
+  /// centre's clearance is known: that clearance plus the move between the centres
+  /// (|dxy| + reach |dtheta|), the bound of the Lipschitz clearance on the free side
+  /// (docs/design.md section 7); only a hint on the blocked side.
+  double expectedClearance(const ClearanceBox& known, const std::array<double, 3>& low,
+                           const std::array<double, 3>& high) const;
   /// The lever of the contact a clearance's witness reaches at angle `theta` (see
   /// ClearanceAnchor), its place `slack` from the true contact's at most.
   double contactLever(const Clearance& clearance, double theta, double slack) const;

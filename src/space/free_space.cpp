@@ -144,13 +144,13 @@ NodeLocation FreeSpace::locateNode(const Pose2& pose) const {
   return answer;
 }
 
-Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth) const {
+Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth, double expected) const {
   Clearance result;
   result.location = locate(pose);
   const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
   const double scale = impl_->meshes.scale;
   const Rational x = Rational(pose.x) * Rational(scale), y = Rational(pose.y) * Rational(scale);
-  const std::optional<BoundaryDistance> found = impl_->boundary->nearest(at, {x, y}, relativeWidth);
+  const std::optional<BoundaryDistance> found = impl_->boundary->nearest(at, {x, y}, relativeWidth, expected * scale);
   if (!found) {
     const double unbounded = result.location.free ? HUGE_VAL : -HUGE_VAL;
     result.lower = result.upper = unbounded;

@@ -63,9 +63,9 @@ struct MotionChecker::Part {
 template <typename Certain, typename Hopeless>
 void MotionChecker::certify(const Pose2& from, const Pose2& to, Certain certain, Hopeless hopeless,
                             std::size_t queryLimit, MotionCheck& result) const {
-  const auto clearanceAt = [&](double t) {
+  const auto clearanceAt = [&](double t, double expected = HUGE_VAL) {
     ++result.clearanceQueries;
-    const Clearance clearance = space_.clearance(interpolate(from, to, t), kClearanceWidth);
+    const Clearance clearance = space_.clearance(interpolate(from, to, t), kClearanceWidth, expected);
     return clearance.location.free ? clearance.lower : 0.0;
   };
   const double length = metricLength(from, to);
@@ -84,7 +84,10 @@ void MotionChecker::certify(const Pose2& from, const Pose2& to, Certain certain,
     }
     if (part.to - part.from < kShortestPart || result.clearanceQueries >= queryLimit) break;
     parts.pop_back();
-    const double middle = 0.5 * (part.from + part.to), clearanceMiddle = clearanceAt(middle);
+    // The middle's clearance is at most an end's plus the way from it (Lipschitz).
+    const double middle = 0.5 * (part.from + part.to);
+    const double clearanceMiddle =
+        clearanceAt(middle, 1.01 * (std::min(part.clearanceFrom, part.clearanceTo) + (middle - part.from) * length));
     parts.push_back({middle, part.to, clearanceMiddle, part.clearanceTo});
     parts.push_back({part.from, middle, part.clearanceFrom, clearanceMiddle});
   }

@@ -153,10 +153,11 @@ SliceBoundaryDistance::SliceBoundaryDistance(const Arrangement& arrangement, Ang
 SliceBoundaryDistance::~SliceBoundaryDistance() = default;
 
 /// Looks near the point first (like the rays of SliceRays: twice a typical box's
-/// width, then four times as far each time): once a piece is certainly within the
-/// reach, every piece nearer has a box meeting the reach's square.
+/// width, or the search radius given when that is nearer, then four times as far each
+/// time): once a piece is certainly within the reach, every piece nearer has a box
+/// meeting the reach's square, so the first reach changes no answer.
 std::optional<BoundaryDistance> SliceBoundaryDistance::nearest(const AlgebraicAngle& rationalAngle, const Point& from,
-                                                               double relativeWidth) const {
+                                                               double relativeWidth, double searchRadius) const {
   if (!rationalAngle.isRational()) {
     throw std::invalid_argument("SliceBoundaryDistance::nearest: the angle must be rational");
   }
@@ -169,7 +170,10 @@ std::optional<BoundaryDistance> SliceBoundaryDistance::nearest(const AlgebraicAn
   }
   const PatchBoxIndex::Scales& scales = impl_->arrangement.boxIndex->scales();
   std::vector<PieceDistance> pieces;
-  for (double reach = std::max(2 * scales.typicalWidth, scales.side / 1024);; reach *= 4) {
+  const double typicalRadius = std::max(2 * scales.typicalWidth, scales.side / 1024);
+  const double firstRadius =
+      searchRadius > 0 ? std::clamp(searchRadius, 1e-3 * typicalRadius, typicalRadius) : typicalRadius;
+  for (double reach = firstRadius;; reach *= 4) {
     if (reach >= 4 * scales.side) reach = kInfinity;
     pieces = impl_->piecesWithin(rationalAngle, *slice, from, fromInterval, reach);
     if (std::any_of(pieces.begin(), pieces.end(),
