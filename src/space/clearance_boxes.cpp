@@ -17,6 +17,14 @@ namespace freespace {
 
 namespace {
 
+/// The turn between two angles of [-pi, pi] the shorter way round (|remainder(a - b,
+/// 2 pi)| within rounding, which the bounds' slack covers; std::remainder in general).
+double turnBetween(double a, double b) {
+  const double apart = std::fabs(a - b);
+  if (apart > 2 * M_PI) return std::fabs(std::remainder(a - b, 2 * M_PI));
+  return std::min(apart, 2 * M_PI - apart);
+}
+
 /// `count` + 1 edges from `low` to `high`, the last exactly `high` (boxes that touch
 /// share their edges' values exactly, and halving keeps them exact).
 std::vector<double> edgesBetween(double low, double high, int count) {
@@ -152,7 +160,7 @@ double ClearanceBoxes::expectedClearance(const ClearanceBox& known, const std::a
                                          const std::array<double, 3>& high) const {
   if (known.own.empty()) return HUGE_VAL;
   const ClearanceAnchor& centre = known.own.front();
-  const double turn = std::fabs(std::remainder(0.5 * (low[2] + high[2]) - centre.at[2], 2 * M_PI));
+  const double turn = turnBetween(0.5 * (low[2] + high[2]), centre.at[2]);
   const double move = std::hypot(0.5 * (low[0] + high[0]) - centre.at[0], 0.5 * (low[1] + high[1]) - centre.at[1]);
   return 1.01 * (std::fabs(centre.upper) + move + reach_ * turn);
 }
@@ -217,11 +225,10 @@ double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const Clear
   };
   // Along theta, the farthest point of the box's range from the anchor's angle round
   // the circle: half a turn when the range holds the opposite angle.
-  const double opposite = std::remainder(anchor.at[2] + M_PI, 2 * M_PI);
+  const double opposite = anchor.at[2] > 0 ? anchor.at[2] - M_PI : anchor.at[2] + M_PI;
   double turn = M_PI;
   if (opposite < box.low[2] || opposite > box.high[2]) {
-    turn = std::max(std::fabs(std::remainder(anchor.at[2] - box.low[2], 2 * M_PI)),
-                    std::fabs(std::remainder(anchor.at[2] - box.high[2], 2 * M_PI)));
+    turn = std::max(turnBetween(anchor.at[2], box.low[2]), turnBetween(anchor.at[2], box.high[2]));
   }
   // A blocked anchor (upper < 0) bounds the slice at its angle by the signed
   // clearance's Lipschitz bound, but only down to 0: across angles only the free side
@@ -234,8 +241,10 @@ double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const Clear
 void ClearanceBoxes::bound(ClearanceBox& box, std::vector<ClearanceAnchor> candidates) const {
   constexpr std::size_t kAnchorsKept = 6;
   std::vector<std::pair<double, std::size_t>> bounds;
+  bounds.reserve(candidates.size());
   for (std::size_t k = 0; k < candidates.size(); ++k) bounds.push_back({upperBoundFrom(candidates[k], box), k});
-  std::sort(bounds.begin(), bounds.end());
+  const auto kept = bounds.begin() + static_cast<std::ptrdiff_t>(std::min(kAnchorsKept, bounds.size()));
+  std::partial_sort(bounds.begin(), kept, bounds.end());
   box.anchors.clear();
   for (std::size_t k = 0; k < std::min(kAnchorsKept, bounds.size()); ++k) {
     box.anchors.push_back(candidates[bounds[k].second]);
