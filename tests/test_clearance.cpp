@@ -1,8 +1,9 @@
 // Clearance (docs/design.md section 7) against the exact collision test on the
 // bundled scenes (tests/clearance_oracle.h): no state change nearer than the
 // certified clearance, one within it; the certified interval narrower than 1e-12
-// relative; the same answer whatever distance the search is told to expect; and what
-// the clearance must be on a scene simple enough to work it out by hand.
+// relative; the same answer whatever distance the search is told to expect; the same
+// cell as locate; and what the clearance must be on a scene simple enough to work it
+// out by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -61,6 +62,26 @@ TEST_P(BundledClearance, ExpectedDistanceChangesNoAnswer) {
     }
   }
   EXPECT_GT(compared, 100);
+}
+
+// The clearance places a configuration by a short ray toward its nearest contact;
+// locate casts a long one along x: the same cell, or both blocked.
+TEST_P(BundledClearance, PlacesConfigurationsAsLocateDoes) {
+  const LoadedProblem problem = loadBundledProblem(GetParam());
+  const FreeSpace space(problem.robot, problem.world);
+  const double scale = space.meshes().scale;
+  RandomConfigurations configurations(space, 6);
+  int free = 0;
+  for (int i = 0; i < 200; ++i) {
+    const Pose2 scaled = configurations.next();
+    const Pose2 pose{scaled.x / scale, scaled.y / scale, scaled.theta};
+    const Location located = space.locate(pose), placed = space.clearance(pose).location;
+    ASSERT_EQ(placed.free, located.free) << pose.x << " " << pose.y << " " << pose.theta;
+    if (located.free) EXPECT_EQ(placed.cell, located.cell) << pose.x << " " << pose.y << " " << pose.theta;
+    free += located.free;
+  }
+  EXPECT_GT(free, 0);
+  EXPECT_LT(free, 200);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledClearance,

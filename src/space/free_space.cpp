@@ -110,6 +110,21 @@ RayHit FreeSpace::Impl::firstHit(const Pose2& pose, const AlgebraicAngle& at) co
   throw std::runtime_error("FreeSpace::locate: both rays from the configuration pass through vertices of its slice");
 }
 
+Location FreeSpace::Impl::locationToward(const Pose2& pose, const AlgebraicAngle& at,
+                                         const std::array<double, 2>& boundaryPoint) const {
+  const Rational scale(meshes.scale), x = Rational(pose.x) * scale, y = Rational(pose.y) * scale;
+  const Rational towardX = Rational(boundaryPoint[0]) - x, towardY = Rational(boundaryPoint[1]) - y;
+  if (towardX == 0 && towardY == 0) return locationOf(firstHit(pose, at));
+  // Aimed about a thousandth of a radian beside the nearest point (often a corner of the
+  // slice, where a ray through it cannot be decided in intervals) and half as far
+  // again, to meet the piece there or its neighbour.
+  const Rational skew(1.0 / 1024), reach(1.5);
+  const RayHit hit = rays->castTo(at, {x, y},
+                                  {x + (towardX - skew * towardY) * reach, y + (towardY + skew * towardX) * reach});
+  if (hit.kind == RayHit::Kind::SubFace || hit.kind == RayHit::Kind::OnSegment) return locationOf(hit);
+  return locationOf(firstHit(pose, at));
+}
+
 Location FreeSpace::locate(const Pose2& pose) const {
   const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
   return impl_->locationOf(impl_->firstHit(pose, at));
@@ -146,11 +161,11 @@ NodeLocation FreeSpace::locateNode(const Pose2& pose) const {
 
 Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth, double expected) const {
   Clearance result;
-  result.location = locate(pose);
   const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
   const double scale = impl_->meshes.scale;
   const Rational x = Rational(pose.x) * Rational(scale), y = Rational(pose.y) * Rational(scale);
   const std::optional<BoundaryDistance> found = impl_->boundary->nearest(at, {x, y}, relativeWidth, expected * scale);
+  result.location = found ? impl_->locationToward(pose, at, found->nearest) : locate(pose);
   if (!found) {
     const double unbounded = result.location.free ? HUGE_VAL : -HUGE_VAL;
     result.lower = result.upper = unbounded;

@@ -52,6 +52,12 @@ struct FreeSpace::Impl {
   /// sees a sub-face's positive side across free space only if that side is free,
   /// i.e. its shell is free (a closed shell's sides are all free or all blocked, and
   /// an open shell bounds no free cell).
+  /// Where a configuration lies, from the first sub-face met on the way (at its angle,
+  /// in the construction's coordinates) to a point of the boundary a little beyond
+  /// `boundaryPoint` (its nearest, whose way meets little else: far cheaper than the
+  /// ray of firstHit, which decides when this way meets nothing or passes a vertex).
+  Location locationToward(const Pose2& pose, const AlgebraicAngle& at,
+                          const std::array<double, 2>& boundaryPoint) const;
   Location locationOf(const RayHit& hit) const {
     if (hit.kind == RayHit::Kind::Nothing) return {true, FreeCells::kUnbounded};
     if (hit.kind == RayHit::Kind::OnSegment || !hit.fromPositiveSide) return {false, 0};
