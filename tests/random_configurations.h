@@ -13,7 +13,7 @@ namespace freespace::testing {
 
 class RandomConfigurations {
  public:
-  RandomConfigurations(const FreeSpace& space, unsigned seed) : random_(seed) {
+  RandomConfigurations(const FreeSpace& space, unsigned seed) : random_(seed), scale_(space.meshes().scale) {
     const Box3 world = space.meshes().world.bounds();
     const double reach = space.meshes().robot.bounds().sizes().head<2>().norm();
     x_ = std::uniform_real_distribution<double>(world.min().x() - reach, world.max().x() + reach);
@@ -21,9 +21,15 @@ class RandomConfigurations {
   }
 
   Pose2 next() { return {x_(random_), y_(random_), theta_(random_)}; }
+  /// The next one in the input's coordinates (as FreeSpace's queries take them).
+  Pose2 nextInInputUnits() {
+    const Pose2 pose = next();
+    return {pose.x / scale_, pose.y / scale_, pose.theta};
+  }
 
  private:
   std::mt19937 random_;
+  double scale_;
   std::uniform_real_distribution<double> x_, y_, theta_{-M_PI, M_PI};
 };
 

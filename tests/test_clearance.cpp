@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include "bundled_problem.h"
 #include "clearance_oracle.h"
@@ -23,6 +24,14 @@ using namespace freespace::testing;
 namespace {
 
 class BundledClearance : public ::testing::TestWithParam<std::string> {};
+
+/// `count` random configurations around the scene, in the input's units.
+std::vector<Pose2> randomPoses(const FreeSpace& space, unsigned seed, int count) {
+  RandomConfigurations configurations(space, seed);
+  std::vector<Pose2> poses;
+  for (int i = 0; i < count; ++i) poses.push_back(configurations.nextInInputUnits());
+  return poses;
+}
 
 TEST_P(BundledClearance, AgreesWithTheExactCollisionTest) {
   const LoadedProblem problem = loadBundledProblem(GetParam());
@@ -43,12 +52,8 @@ TEST_P(BundledClearance, AgreesWithTheExactCollisionTest) {
 TEST_P(BundledClearance, ExpectedDistanceChangesNoAnswer) {
   const LoadedProblem problem = loadBundledProblem(GetParam());
   const FreeSpace space(problem.robot, problem.world);
-  const double scale = space.meshes().scale;
-  RandomConfigurations configurations(space, 5);
   int compared = 0;
-  for (int i = 0; i < 40; ++i) {
-    const Pose2 scaled = configurations.next();
-    const Pose2 pose{scaled.x / scale, scaled.y / scale, scaled.theta};
+  for (const Pose2& pose : randomPoses(space, 5, 40)) {
     const Clearance plain = space.clearance(pose);
     if (!std::isfinite(plain.lower)) continue;
     const double distance = std::fabs(plain.upper);
@@ -69,15 +74,13 @@ TEST_P(BundledClearance, ExpectedDistanceChangesNoAnswer) {
 TEST_P(BundledClearance, PlacesConfigurationsAsLocateDoes) {
   const LoadedProblem problem = loadBundledProblem(GetParam());
   const FreeSpace space(problem.robot, problem.world);
-  const double scale = space.meshes().scale;
-  RandomConfigurations configurations(space, 6);
   int free = 0;
-  for (int i = 0; i < 200; ++i) {
-    const Pose2 scaled = configurations.next();
-    const Pose2 pose{scaled.x / scale, scaled.y / scale, scaled.theta};
+  for (const Pose2& pose : randomPoses(space, 6, 200)) {
     const Location located = space.locate(pose), placed = space.clearance(pose).location;
     ASSERT_EQ(placed.free, located.free) << pose.x << " " << pose.y << " " << pose.theta;
-    if (located.free) EXPECT_EQ(placed.cell, located.cell) << pose.x << " " << pose.y << " " << pose.theta;
+    if (located.free) {
+      EXPECT_EQ(placed.cell, located.cell) << pose.x << " " << pose.y << " " << pose.theta;
+    }
     free += located.free;
   }
   EXPECT_GT(free, 0);
