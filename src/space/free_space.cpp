@@ -79,9 +79,8 @@ FreeSpace::Impl::Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptio
     finish();
     return classifyShells(arrangement, *rays, *collision, cancellation);
   });
-  cells = clock.run("cells", [&] {
-    return std::make_unique<FreeCells>(arrangement, *rays, sides, algebra, cancellation);
-  });
+  cells =
+      clock.run("cells", [&] { return std::make_unique<FreeCells>(arrangement, *rays, sides, algebra, cancellation); });
   stageTimes = clock.times();
 }
 
@@ -112,15 +111,17 @@ RayHit FreeSpace::Impl::firstHit(const Pose2& pose, const AlgebraicAngle& at) co
 
 Location FreeSpace::Impl::locationToward(const Pose2& pose, const AlgebraicAngle& at,
                                          const std::array<double, 2>& boundaryPoint) const {
-  const Rational scale(meshes.scale), x = Rational(pose.x) * scale, y = Rational(pose.y) * scale;
-  const Rational towardX = Rational(boundaryPoint[0]) - x, towardY = Rational(boundaryPoint[1]) - y;
-  if (towardX == 0 && towardY == 0) return locationOf(firstHit(pose, at));
-  // Aimed about a thousandth of a radian beside the nearest point (often a corner of the
-  // slice, where a ray through it cannot be decided in intervals) and half as far
-  // again, to meet the piece there or its neighbour.
-  const Rational skew(1.0 / 1024), reach(1.5);
-  const RayHit hit = rays->castTo(at, {x, y},
-                                  {x + (towardX - skew * towardY) * reach, y + (towardY + skew * towardX) * reach});
+  // The way's end may be any point (only its start is the configuration, exactly):
+  // aimed in doubles about a thousandth of a radian beside the nearest point (often a
+  // corner of the slice, where a ray through it cannot be decided in intervals) and
+  // half as far again, to meet the piece there or its neighbour.
+  const double x = pose.x * meshes.scale, y = pose.y * meshes.scale;
+  const double towardX = boundaryPoint[0] - x, towardY = boundaryPoint[1] - y, skew = 1.0 / 1024;
+  const std::array<double, 2> end{x + (towardX - skew * towardY) * 1.5, y + (towardY + skew * towardX) * 1.5};
+  if (end[0] == x && end[1] == y) return locationOf(firstHit(pose, at));
+  const Rational scale(meshes.scale);
+  const RayHit hit =
+      rays->castTo(at, {Rational(pose.x) * scale, Rational(pose.y) * scale}, {Rational(end[0]), Rational(end[1])});
   if (hit.kind == RayHit::Kind::SubFace || hit.kind == RayHit::Kind::OnSegment) return locationOf(hit);
   return locationOf(firstHit(pose, at));
 }
