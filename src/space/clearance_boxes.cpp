@@ -162,7 +162,7 @@ double ClearanceBoxes::expectedClearance(const ClearanceBox& known, const std::a
   const ClearanceAnchor& centre = known.own.front();
   const double turn = turnBetween(0.5 * (low[2] + high[2]), centre.at[2]);
   const double move = std::hypot(0.5 * (low[0] + high[0]) - centre.at[0], 0.5 * (low[1] + high[1]) - centre.at[1]);
-  return 1.01 * (std::fabs(centre.upper) + move + reach_ * turn);
+  return std::fabs(centre.upper) + move + reach_ * turn;
 }
 
 std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std::array<double, 3>& high,

@@ -79,8 +79,9 @@ FreeSpace::Impl::Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptio
     finish();
     return classifyShells(arrangement, *rays, *collision, cancellation);
   });
-  cells =
-      clock.run("cells", [&] { return std::make_unique<FreeCells>(arrangement, *rays, sides, algebra, cancellation); });
+  cells = clock.run("cells", [&] {
+    return std::make_unique<FreeCells>(arrangement, *rays, sides, algebra, cancellation);
+  });
   stageTimes = clock.times();
 }
 
@@ -109,8 +110,8 @@ RayHit FreeSpace::Impl::firstHit(const Pose2& pose, const AlgebraicAngle& at) co
   throw std::runtime_error("FreeSpace::locate: both rays from the configuration pass through vertices of its slice");
 }
 
-Location FreeSpace::Impl::locationToward(const Pose2& pose, const AlgebraicAngle& at,
-                                         const std::array<double, 2>& boundaryPoint) const {
+Location FreeSpace::Impl::locationToward(const Pose2& pose, const std::array<Rational, 2>& from,
+                                         const AlgebraicAngle& at, const std::array<double, 2>& boundaryPoint) const {
   // The way's end may be any point (only its start is the configuration, exactly):
   // aimed in doubles about a thousandth of a radian beside the nearest point (often a
   // corner of the slice, where a ray through it cannot be decided in intervals) and
@@ -118,11 +119,10 @@ Location FreeSpace::Impl::locationToward(const Pose2& pose, const AlgebraicAngle
   const double x = pose.x * meshes.scale, y = pose.y * meshes.scale;
   const double towardX = boundaryPoint[0] - x, towardY = boundaryPoint[1] - y, skew = 1.0 / 1024;
   const std::array<double, 2> end{x + (towardX - skew * towardY) * 1.5, y + (towardY + skew * towardX) * 1.5};
-  if (end[0] == x && end[1] == y) return locationOf(firstHit(pose, at));
-  const Rational scale(meshes.scale);
-  const RayHit hit =
-      rays->castTo(at, {Rational(pose.x) * scale, Rational(pose.y) * scale}, {Rational(end[0]), Rational(end[1])});
-  if (hit.kind == RayHit::Kind::SubFace || hit.kind == RayHit::Kind::OnSegment) return locationOf(hit);
+  if (end[0] != x || end[1] != y) {
+    const RayHit hit = rays->castTo(at, from, {Rational(end[0]), Rational(end[1])});
+    if (hit.kind == RayHit::Kind::SubFace || hit.kind == RayHit::Kind::OnSegment) return locationOf(hit);
+  }
   return locationOf(firstHit(pose, at));
 }
 
@@ -166,7 +166,7 @@ Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth, double e
   const double scale = impl_->meshes.scale;
   const Rational x = Rational(pose.x) * Rational(scale), y = Rational(pose.y) * Rational(scale);
   const std::optional<BoundaryDistance> found = impl_->boundary->nearest(at, {x, y}, relativeWidth, expected * scale);
-  result.location = found ? impl_->locationToward(pose, at, found->nearest) : locate(pose);
+  result.location = found ? impl_->locationToward(pose, {x, y}, at, found->nearest) : locate(pose);
   if (!found) {
     const double unbounded = result.location.free ? HUGE_VAL : -HUGE_VAL;
     result.lower = result.upper = unbounded;

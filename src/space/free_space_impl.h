@@ -47,17 +47,17 @@ struct FreeSpace::Impl {
   }
 
   RayHit firstHit(const Pose2& pose, const AlgebraicAngle& at) const;
+  /// Where a configuration (`from`, exactly in the construction's coordinates, at
+  /// angle `at`) lies, from the first sub-face met on a short way toward
+  /// `boundaryPoint`, its nearest point of the boundary: far cheaper than the ray of
+  /// firstHit, which decides when this way meets nothing or is degenerate.
+  Location locationToward(const Pose2& pose, const std::array<Rational, 2>& from, const AlgebraicAngle& at,
+                          const std::array<double, 2>& boundaryPoint) const;
 
   /// Free (with its cell) or blocked, from the first sub-face a ray meets: a point
   /// sees a sub-face's positive side across free space only if that side is free,
   /// i.e. its shell is free (a closed shell's sides are all free or all blocked, and
   /// an open shell bounds no free cell).
-  /// Where a configuration lies, from the first sub-face met on the way (at its angle,
-  /// in the construction's coordinates) to a point of the boundary a little beyond
-  /// `boundaryPoint` (its nearest, whose way meets little else: far cheaper than the
-  /// ray of firstHit, which decides when this way meets nothing or passes a vertex).
-  Location locationToward(const Pose2& pose, const AlgebraicAngle& at,
-                          const std::array<double, 2>& boundaryPoint) const;
   Location locationOf(const RayHit& hit) const {
     if (hit.kind == RayHit::Kind::Nothing) return {true, FreeCells::kUnbounded};
     if (hit.kind == RayHit::Kind::OnSegment || !hit.fromPositiveSide) return {false, 0};

@@ -87,7 +87,7 @@ void MotionChecker::certify(const Pose2& from, const Pose2& to, Certain certain,
     // The middle's clearance is at most an end's plus the way from it (Lipschitz).
     const double middle = 0.5 * (part.from + part.to);
     const double clearanceMiddle =
-        clearanceAt(middle, 1.01 * (std::min(part.clearanceFrom, part.clearanceTo) + (middle - part.from) * length));
+        clearanceAt(middle, std::min(part.clearanceFrom, part.clearanceTo) + (middle - part.from) * length);
     parts.push_back({middle, part.to, clearanceMiddle, part.clearanceTo});
     parts.push_back({part.from, middle, part.clearanceFrom, clearanceMiddle});
   }

@@ -138,7 +138,7 @@ bool push(const FreeSpace& space, double reach, const Pose2& previous, const Pos
     tried = moved(from.pose, across, from.step, reach);
     // A step of Euclidean length `step` moves |dxy| + reach |dtheta| <= sqrt(2) step:
     // the clearance there is at most that much above the waypoint's (the search's hint).
-    there = space.clearance(tried, MotionChecker::kClearanceWidth, 1.01 * (from.clearance.upper + 1.5 * from.step));
+    there = space.clearance(tried, MotionChecker::kClearanceWidth, from.clearance.upper + 1.5 * from.step);
     return there.location.free && there.lower > from.clearance.lower;
   };
   bool raised = false;

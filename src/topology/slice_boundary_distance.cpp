@@ -153,9 +153,9 @@ SliceBoundaryDistance::SliceBoundaryDistance(const Arrangement& arrangement, Ang
 SliceBoundaryDistance::~SliceBoundaryDistance() = default;
 
 /// Looks near the point first (like the rays of SliceRays: twice a typical box's
-/// width, or the search radius given when that is nearer, then four times as far each
-/// time): once a piece is certainly within the reach, every piece nearer has a box
-/// meeting the reach's square, so the first reach changes no answer.
+/// width, or a little beyond the search radius given when that is nearer, then four
+/// times as far each time): once a piece is certainly within the reach, every piece
+/// nearer has a box meeting the reach's square, so the first reach changes no answer.
 std::optional<BoundaryDistance> SliceBoundaryDistance::nearest(const AlgebraicAngle& rationalAngle, const Point& from,
                                                                double relativeWidth, double searchRadius) const {
   if (!rationalAngle.isRational()) {
@@ -171,8 +171,10 @@ std::optional<BoundaryDistance> SliceBoundaryDistance::nearest(const AlgebraicAn
   const PatchBoxIndex::Scales& scales = impl_->arrangement.boxIndex->scales();
   std::vector<PieceDistance> pieces;
   const double typicalRadius = std::max(2 * scales.typicalWidth, scales.side / 1024);
+  // A little beyond the radius given: a piece certainly within it, at about the
+  // distance expected, is then found in the first pass.
   const double firstRadius =
-      searchRadius > 0 ? std::clamp(searchRadius, 1e-3 * typicalRadius, typicalRadius) : typicalRadius;
+      searchRadius > 0 ? std::clamp(1.01 * searchRadius, 1e-3 * typicalRadius, typicalRadius) : typicalRadius;
   for (double reach = firstRadius;; reach *= 4) {
     if (reach >= 4 * scales.side) reach = kInfinity;
     pieces = impl_->piecesWithin(rationalAngle, *slice, from, fromInterval, reach);

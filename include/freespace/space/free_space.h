@@ -116,7 +116,7 @@ class FreeSpace {
   /// boundary in its slice (pieces of sub-faces that bound free cells), certified to
   /// `relativeWidth` (exact arithmetic where double intervals are wider; they rarely
   /// are wider than 1e-11). `expected`, when known, is about how far that point lies
-  /// (|clearance|, or a little more): a hint that makes the search look at fewer of
+  /// (|clearance|, or a bound on it): a hint that makes the search look at fewer of
   /// the boundary's pieces and changes no answer.
   Clearance clearance(const Pose2& pose, double relativeWidth = 1e-13, double expected = HUGE_VAL) const;
 

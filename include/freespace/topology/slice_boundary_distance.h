@@ -43,10 +43,10 @@ class SliceBoundaryDistance {
   /// The nearest point of the boundary at a rational angle (AlgebraicAngle::isRational)
   /// from `from`, with a distance interval whose width is at most `relativeWidth`
   /// times its upper end where exact arithmetic can make it so; nothing when the
-  /// slice has no boundary. The pieces are looked for within `searchRadius` of `from`
-  /// first, then four times as far, and so on: a hint that changes no answer, only how
-  /// many pieces are looked at (fewest when it is a little above the distance); by
-  /// default, from a radius of the index's typical patch width.
+  /// slice has no boundary. The pieces are looked for a little beyond `searchRadius`
+  /// of `from` first, then four times as far, and so on: a hint that changes no
+  /// answer, only how many pieces are looked at (fewest when it is about the distance
+  /// or above it); by default, from a radius of the index's typical patch width.
   std::optional<BoundaryDistance> nearest(const AlgebraicAngle& rationalAngle, const std::array<Rational, 2>& from,
                                           double relativeWidth = 1e-13, double searchRadius = HUGE_VAL) const;
 
