@@ -17,6 +17,7 @@
 #include "bundled_problem.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/space/motion_checker.h"
+#include "freespace/topology/slice_pieces.h"
 #include "space/clearance_boxes.h"
 #include "test_meshes.h"
 
@@ -158,6 +159,74 @@ TEST_P(BundledClearanceBoxes, SearchesStoppedBelowTheTargetAgreeWithRelaxationAb
   }
   EXPECT_GT(atLevel, 10);
   EXPECT_GT(below, 10);
+}
+
+/// Angles (their tangent's chart and t) strictly inside a slab: just after its start,
+/// just before its end and, when both lie in one chart, halfway; none when its ends'
+/// enclosures overlap (a whole turn, or too thin to tell).
+std::vector<HalfAngle> anglesInside(const PatchSlab& slab) {
+  const AlgebraicAngle &from = slab.from, &to = slab.to;
+  const bool sameChart = from.chart() == to.chart();
+  if (sameChart && from.lower() <= to.upper() && to.lower() <= from.upper()) return {};
+  // Chart 0 holds t in [-1, 1], chart 1 in (-1, 1); t grows counterclockwise.
+  const auto inChart = [](int chart, double t) { return chart == 0 ? std::fabs(t) <= 1 : std::fabs(t) < 1; };
+  std::vector<HalfAngle> angles;
+  const double afterFrom = std::nextafter(from.upper(), HUGE_VAL), beforeTo = std::nextafter(to.lower(), -HUGE_VAL);
+  if (inChart(from.chart(), afterFrom)) angles.push_back({from.chart(), afterFrom});
+  if (inChart(to.chart(), beforeTo)) angles.push_back({to.chart(), beforeTo});
+  if (sameChart && from.upper() < to.lower()) angles.push_back({from.chart(), 0.5 * (from.upper() + to.lower())});
+  return angles;
+}
+
+// Points of the sub-faces that bound a free cell, found exactly at angles inside their
+// slabs (just inside each end too), lie in no unbroken box: the test leaves out slabs
+// at other angles and the parts of segments beyond those sub-faces' curves, never such
+// a sub-face itself.
+TEST_P(BundledClearanceBoxes, FreeCellBoundaryMeetsNoUnbrokenBox) {
+  const LoadedProblem loaded = loadBundledProblem(GetParam());
+  const FreeSpace space(loaded.robot, loaded.world);
+  std::mt19937_64 random(20261206);
+  ClearanceBoxes boxes = halvedBoxes(space, loaded, 600, random).boxes;
+  const Arrangement& arrangement = space.arrangement();
+  const Eigen::AlignedBox2d volume = *loaded.problem.volume;
+  const double scale = space.meshes().scale;
+  int checked = 0, slabsTried = 0;
+  for (int attempt = 0; attempt < 20000 && slabsTried < 1000; ++attempt) {
+    const auto patch = std::uniform_int_distribution<std::uint32_t>(0, arrangement.patches.size() - 1)(random);
+    const std::vector<PatchSlab>& slabs = arrangement.subdivisions[patch].slabs;
+    if (slabs.empty()) continue;
+    const PatchSlab& slab = slabs[std::uniform_int_distribution<std::size_t>(0, slabs.size() - 1)(random)];
+    std::vector<std::size_t> freeGaps;
+    for (std::size_t gap = 0; gap < slab.faces.size(); ++gap) {
+      if (space.cellOfSubFace({patch, slab.faces[gap]})) freeGaps.push_back(gap);
+    }
+    if (freeGaps.empty()) continue;
+    ++slabsTried;
+    for (const HalfAngle& angle : anglesInside(slab)) {
+      Rational cosine, sine;
+      angle.cosSin(cosine, sine);
+      const slices::ExactSegment segment = slices::segmentAt(arrangement.patches[patch], cosine, sine);
+      for (const std::size_t gap : freeGaps) {
+        const auto piece = slices::pieceOf(arrangement, patch, slab, gap, segment, cosine, sine);
+        if (!piece) continue;
+        const slices::Point point = segment.at(Rational((piece->first + piece->second) / 2));
+        const Pose2 pose{point[0].convert_to<double>() / scale, point[1].convert_to<double>() / scale, angle.radians()};
+        if (!volume.contains(Eigen::Vector2d(pose.x, pose.y))) continue;
+        ++checked;
+        EXPECT_FALSE(boxes.box(boxes.leafAt(pose)).unbroken)
+            << "patch " << patch << " at " << pose.x << " " << pose.y << " " << pose.theta;
+        // And in a box about a thousandth of a radian wide (halved in theta).
+        std::uint32_t leaf = boxes.leafAt(pose);
+        while (boxes.box(leaf).high[2] - boxes.box(leaf).low[2] > 1e-3) {
+          boxes.split(leaf, ClearanceBoxes::kThetaAxis);
+          leaf = boxes.leafAt(pose);
+        }
+        EXPECT_FALSE(boxes.box(leaf).unbroken)
+            << "patch " << patch << " at " << pose.x << " " << pose.y << " " << pose.theta << " (thin)";
+      }
+    }
+  }
+  EXPECT_GT(checked, 1000);
 }
 
 // The keyhole scaled down by 1e-5 is built in coordinates scaled back up by a power of

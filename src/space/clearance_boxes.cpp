@@ -69,23 +69,24 @@ bool segmentMeetsRectangle(const std::array<double, 2>& from, const std::array<d
   return enter <= leave;
 }
 
-/// Whether a patch's segment (its two features touching) may pass through the (x, y)
-/// rectangle of `query` at an angle within `turn` of the angle of `slice` (inside a
-/// RoundingScope): its segment there moves no farther than its ends' largest turning
-/// radius times the turn (docs/design.md section 3: each end is u + R v), so it may
-/// only where that segment meets the rectangle widened by as much.
+/// Whether the part [lambdas[0], lambdas[1]] of a patch's segment (its two features
+/// touching) may pass through the (x, y) rectangle of `query` at an angle within
+/// `turn` of the angle of `slice` (inside a RoundingScope): each point of it moves no
+/// farther than its ends' largest turning radius times the turn (docs/design.md
+/// section 3: each end is u + R v, and so is each point between), so it may only
+/// where that part meets the rectangle widened by as much.
 bool segmentMayMeet(const PatchGeometry& patch, const slices::SliceIn<Interval>& slice, double turn,
-                    const PatchBox& query) {
+                    const PatchBox& query, const std::array<double, 2>& lambdas) {
   std::array<std::array<double, 2>, 2> ends;
   double error = 0, lever = 0;
   for (int end = 0; end < 2; ++end) {
     const Spiral<Interval> spiral = spiralOf<Interval>(patch.ends[end]);
-    const std::array<Interval, 2> point = spiralPoint(spiral, slice.cosine, slice.sine);
+    lever = std::max(lever, sqrt(spiral.vx * spiral.vx + spiral.vy * spiral.vy).upper());
+    const std::array<Interval, 2> point = slice.pointOn(patch, Interval(lambdas[end]));
     for (int axis = 0; axis < 2; ++axis) {
       ends[end][axis] = point[axis].midpoint();
       error = std::max(error, point[axis].upper() - point[axis].lower());
     }
-    lever = std::max(lever, sqrt(spiral.vx * spiral.vx + spiral.vy * spiral.vy).upper());
   }
   if (!std::isfinite(error + lever)) return true;
   // Widened by the turn, the ends' placing and the clipping's rounding.
@@ -99,15 +100,69 @@ bool segmentMayMeet(const PatchGeometry& patch, const slices::SliceIn<Interval>&
                                {query.high[0] + widening, query.high[1] + widening});
 }
 
+/// The angles of a slab (its ends' enclosures included, and more than their
+/// conversion's rounding), counterclockwise from `from` to `to`; the whole circle
+/// for a slab from an event round to it (or without events).
+AngleArc arcOf(const PatchSlab& slab, AngleAlgebra& algebra) {
+  const bool nearEnds = slab.from.chart() == slab.to.chart() && slab.from.lower() <= slab.to.upper() &&
+                        slab.to.lower() <= slab.from.upper();
+  if (nearEnds && algebra.compare(slab.from, slab.to) == 0) return {-M_PI, M_PI, true};
+  constexpr double kPad = 1e-9;
+  const double from = HalfAngle{slab.from.chart(), slab.from.lower()}.radians();
+  const double to = HalfAngle{slab.to.chart(), slab.to.upper()}.radians();
+  // Nearly round the circle: padded, the ends would pass each other.
+  double gap = from - to;
+  if (gap < 0) gap += 2 * M_PI;
+  if (gap < 4 * kPad) return {-M_PI, M_PI, true};
+  return {from - kPad, to + kPad, false};
+}
+
+/// Whether an arc holds an angle of [low, high] (a range of [-pi, pi]).
+bool arcMeets(const AngleArc& arc, double low, double high) {
+  if (arc.whole) return true;
+  if (arc.from <= arc.to) return closedOverlap(arc.from, arc.to, low, high);
+  // Across theta = pi: [from, pi] and [-pi, to].
+  return high >= arc.from || low <= arc.to;
+}
+
+/// Cosines and sines enclosing those of every angle of [low, high] (a range of
+/// [-pi, pi]; inside a RoundingScope).
+slices::SliceIn<Interval> sliceOver(double low, double high) {
+  constexpr double kRoom = 1e-15;  // more than the library's error and pi's rounding
+  const auto reaches = [&](double angle) { return low <= angle + kRoom && angle - kRoom <= high; };
+  double cosineLow = std::min(std::cos(low), std::cos(high)), cosineHigh = std::max(std::cos(low), std::cos(high));
+  double sineLow = std::min(std::sin(low), std::sin(high)), sineHigh = std::max(std::sin(low), std::sin(high));
+  if (reaches(0)) cosineHigh = 1;
+  if (reaches(M_PI) || reaches(-M_PI)) cosineLow = -1;
+  if (reaches(M_PI / 2)) sineHigh = 1;
+  if (reaches(-M_PI / 2)) sineLow = -1;
+  slices::SliceIn<Interval> slice;
+  slice.cosine = Interval(std::max(-1.0, cosineLow - kRoom), std::min(1.0, cosineHigh + kRoom));
+  slice.sine = Interval(std::max(-1.0, sineLow - kRoom), std::min(1.0, sineHigh + kRoom));
+  return slice;
+}
+
 }  // namespace
 
 ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 2>& low,
                                const std::array<double, 2>& high, double reach, int across)
-    : space_(space), reach_(reach), boundsFree_(space.arrangement().patches.size(), false) {
+    : space_(space), reach_(reach), freeSlabs_(space.arrangement().patches.size()) {
   const Arrangement& arrangement = space.arrangement();
   for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
-    for (std::uint32_t face = 0; face < arrangement.subdivisions[patch].faceCount && !boundsFree_[patch]; ++face) {
-      boundsFree_[patch] = space.cellOfSubFace({patch, face}).has_value();
+    const PatchSubdivision& subdivision = arrangement.subdivisions[patch];
+    std::vector<bool> faceBoundsFree(subdivision.faceCount);
+    for (std::uint32_t face = 0; face < faceBoundsFree.size(); ++face) {
+      faceBoundsFree[face] = space.cellOfSubFace({patch, face}).has_value();
+    }
+    const auto boundsFree = [&](std::uint32_t face) { return faceBoundsFree[face]; };
+    for (std::uint32_t index = 0; index < subdivision.slabs.size(); ++index) {
+      const std::vector<std::uint32_t>& faces = subdivision.slabs[index].faces;
+      const auto first = std::find_if(faces.begin(), faces.end(), boundsFree);
+      if (first == faces.end()) continue;
+      const auto last = std::find_if(faces.rbegin(), faces.rend(), boundsFree);
+      freeSlabs_[patch].push_back({arcOf(subdivision.slabs[index], space.algebra()), index,
+                                   static_cast<std::uint32_t>(first - faces.begin()),
+                                   static_cast<std::uint32_t>(faces.rend() - last - 1)});
     }
   }
   const double side = std::max(high[0] - low[0], high[1] - low[1]) / across;
@@ -270,12 +325,44 @@ bool ClearanceBoxes::meetsFreeBoundary(const ClearanceBox& box) const {
   // of it): the turn to the box's farther end, padded by far more than that.
   const double middle = 0.5 * (box.low[2] + box.high[2]);
   const double turn = 0.5 * (box.high[2] - box.low[2]) + 1e-12;
-  const std::vector<std::uint32_t> patches = space_.arrangement().boxIndex->meeting(query);
+  const Arrangement& arrangement = space_.arrangement();
+  const std::vector<std::uint32_t> patches = arrangement.boxIndex->meeting(query);
   const RoundingScope rounding;
   slices::SliceIn<Interval> slice;
   HalfAngle::fromRadians(middle).cosSin(slice.cosine, slice.sine);
+  const slices::SliceIn<Interval> range = sliceOver(box.low[2], box.high[2]);
   for (std::uint32_t patch : patches) {
-    if (boundsFree_[patch] && segmentMayMeet(space_.arrangement().patches[patch], slice, turn, query)) return true;
+    const PatchGeometry& geometry = arrangement.patches[patch];
+    const std::vector<FreeSlab>& freeSlabs = freeSlabs_[patch];
+    const auto atTheBoxsAngles = [&](const FreeSlab& free) { return arcMeets(free.arc, box.low[2], box.high[2]); };
+    if (std::none_of(freeSlabs.begin(), freeSlabs.end(), atTheBoxsAngles) ||
+        !segmentMayMeet(geometry, slice, turn, query, {0, 1})) {
+      continue;
+    }
+    // Along the segment, the sub-faces that bound a free cell lie between the
+    // crossings of their slabs' curves, which over the box's angles lie in the
+    // intervals found with the angles' cosines and sines in intervals.
+    const auto crossing = [&](std::uint32_t curve) {
+      return range.crossingLambda(geometry, arrangement.patches[arrangement.curves[curve].other(patch)]);
+    };
+    double lambdaLow = HUGE_VAL, lambdaHigh = -HUGE_VAL;
+    for (const FreeSlab& free : freeSlabs) {
+      if (!atTheBoxsAngles(free)) continue;
+      const PatchSlab& slab = arrangement.subdivisions[patch].slabs[free.slab];
+      double low = 0, high = 1;
+      if (free.firstGap > 0) {
+        const std::optional<Interval> below = crossing(slab.curves[free.firstGap - 1]);
+        if (below && below->lower() > 0) low = below->lower();
+      }
+      if (free.lastGap < slab.curves.size()) {
+        const std::optional<Interval> above = crossing(slab.curves[free.lastGap]);
+        if (above && above->upper() < 1) high = above->upper();
+      }
+      lambdaLow = std::min(lambdaLow, low);
+      lambdaHigh = std::max(lambdaHigh, high);
+      if (lambdaLow == 0 && lambdaHigh == 1) break;
+    }
+    if (lambdaLow <= lambdaHigh && segmentMayMeet(geometry, slice, turn, query, {lambdaLow, lambdaHigh})) return true;
   }
   return false;
 }

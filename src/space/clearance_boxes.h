@@ -20,6 +20,13 @@ struct ClearanceAnchor {
   double lever;
 };
 
+/// Angles counterclockwise from `from` to `to` (radians in [-pi, pi], padded), or
+/// the whole circle.
+struct AngleArc {
+  double from, to;
+  bool whole;
+};
+
 /// A box of configurations [low, high] in (x, y, theta), with bounds on the clearance
 /// at every configuration in it.
 struct ClearanceBox {
@@ -128,16 +135,25 @@ class ClearanceBoxes {
   /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.
   void bound(ClearanceBox& box, std::vector<ClearanceAnchor> candidates) const;
   bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
-  /// Whether a patch with a sub-face that bounds a free cell may meet the box (by the
-  /// patches' boxes, which hold their segments).
+  /// Whether a sub-face that bounds a free cell may meet the box: the patches whose
+  /// boxes meet it (their boxes hold their segments), and of each, the part of its
+  /// segment between the curves around such sub-faces in its slabs at the box's
+  /// angles (the curves' crossings bounded over all those angles at once).
   bool meetsFreeBoundary(const ClearanceBox& box) const;
 
   const FreeSpace& space_;
   double reach_;
   std::array<std::vector<double>, 3> rootEdges_;  // the first boxes' edges along each axis
   std::vector<ClearanceBox> boxes_;
-  /// Whether each patch has a sub-face that bounds a free cell.
-  std::vector<bool> boundsFree_;
+  /// A slab of a patch with sub-faces that bound a free cell: its angles, its index,
+  /// and the first and last of its gaps between curves (PatchSlab::faces) that are
+  /// such sub-faces.
+  struct FreeSlab {
+    AngleArc arc;
+    std::uint32_t slab, firstGap, lastGap;
+  };
+  /// Each patch's slabs with sub-faces that bound a free cell.
+  std::vector<std::vector<FreeSlab>> freeSlabs_;
 };
 
 }  // namespace freespace
