@@ -119,6 +119,27 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
   EXPECT_GT(unbroken.blocked, 10);
 }
 
+// Each box's centre is located as locate() places it: the halves of a free box whose
+// centre's clearance exceeds the move to theirs take its cell without a ray of their
+// own (ClearanceBoxes::certifiedLocation), the others are placed by their clearance's.
+TEST_P(BundledClearanceBoxes, CentresLieWhereLocateSays) {
+  const LoadedProblem loaded = loadBundledProblem(GetParam());
+  const FreeSpace space(loaded.robot, loaded.world);
+  std::mt19937_64 random(20261206);
+  const ClearanceBoxes boxes = halvedBoxes(space, loaded, 600, random).boxes;
+  int free = 0;
+  for (std::uint32_t index = 0; index < boxes.size(); ++index) {
+    const ClearanceBox& box = boxes.box(index);
+    const Pose2 centre = ClearanceBoxes::centre(box);
+    const Location location = space.locate(centre);
+    ASSERT_EQ(box.centreCell.has_value(), location.free) << "box " << index;
+    if (!location.free) continue;
+    ++free;
+    EXPECT_EQ(*box.centreCell, location.cell) << "box " << index;
+  }
+  EXPECT_GT(free, 100);
+}
+
 // The widest chains by upper bounds from the start's box, by plain relaxation until
 // nothing changes (an oracle apart from the searches' Dijkstra): the search that stops
 // below a ratio of the bottleneck to the goal's box agrees with it on every box at that

@@ -211,22 +211,37 @@ ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 
   }
 }
 
+double ClearanceBoxes::moveBetween(const ClearanceAnchor& centre, const std::array<double, 3>& low,
+                                   const std::array<double, 3>& high) const {
+  const double turn = turnBetween(0.5 * (low[2] + high[2]), centre.at[2]);
+  return std::hypot(0.5 * (low[0] + high[0]) - centre.at[0], 0.5 * (low[1] + high[1]) - centre.at[1]) + reach_ * turn;
+}
+
 double ClearanceBoxes::expectedClearance(const ClearanceBox& known, const std::array<double, 3>& low,
                                          const std::array<double, 3>& high) const {
   if (known.own.empty()) return HUGE_VAL;
+  return std::fabs(known.own.front().upper) + moveBetween(known.own.front(), low, high);
+}
+
+std::optional<Location> ClearanceBoxes::certifiedLocation(const ClearanceBox& known, const std::array<double, 3>& low,
+                                                          const std::array<double, 3>& high) const {
+  if (!known.centreCell || known.own.empty()) return std::nullopt;
   const ClearanceAnchor& centre = known.own.front();
-  const double turn = turnBetween(0.5 * (low[2] + high[2]), centre.at[2]);
-  const double move = std::hypot(0.5 * (low[0] + high[0]) - centre.at[0], 0.5 * (low[1] + high[1]) - centre.at[1]);
-  return std::fabs(centre.upper) + move + reach_ * turn;
+  // Rounded up, with room for the centres' rounding.
+  const double reached =
+      moveBetween(centre, low, high) * (1 + 1e-9) + 1e-12 * (1 + std::fabs(centre.at[0]) + std::fabs(centre.at[1]));
+  if (!(known.centreLower > reached)) return std::nullopt;
+  return Location{true, *known.centreCell};
 }
 
 std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std::array<double, 3>& high,
-                                     double expected) {
+                                     double expected, const std::optional<Location>& location) {
   ClearanceBox box;
   box.low = low;
   box.high = high;
   const Pose2 centre = ClearanceBoxes::centre(box);
-  const Clearance clearance = space_.clearance(centre, MotionChecker::kClearanceWidth, expected);
+  const Clearance clearance = space_.clearance(centre, MotionChecker::kClearanceWidth, expected, location);
+  box.centreLower = clearance.lower;
   // The farthest a configuration of the box is from its centre in |dxy| + r |dtheta|,
   // rounded up (with room for the centre's rounding and for the sliver between the
   // doubles nearest -pi and pi).
@@ -407,7 +422,7 @@ void ClearanceBoxes::split(std::uint32_t index, std::uint8_t axes) {
       (child >> bit & 1 ? low : high)[axis] = middle;
       ++bit;
     }
-    addBox(low, high, expectedClearance(boxes_[index], low, high));
+    addBox(low, high, expectedClearance(boxes_[index], low, high), certifiedLocation(boxes_[index], low, high));
   }
   boxes_[index].split = true;
   boxes_[index].splitAxes = axes;

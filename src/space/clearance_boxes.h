@@ -32,6 +32,8 @@ struct AngleArc {
 struct ClearanceBox {
   std::array<double, 3> low, high;
   double lower = 0, upper = 0;
+  /// The certified lower bound on its centre's clearance.
+  double centreLower = -HUGE_VAL;
   /// Its centre and the contact its clearance reaches there (the witness, clearance
   /// 0), then the anchors that bound it best among its own, its neighbours' and its
   /// parent's (upper is the least of their bounds).
@@ -59,11 +61,10 @@ struct ClearanceBox {
 /// above the centre's lower bound minus |half diagonal in (x, y)| + r (half width in
 /// theta) everywhere in the box, and below the least, over configurations of known
 /// clearance nearby (centres, and the contacts their witnesses reach), of that
-/// clearance plus the distance to the box's farthest corner: with contacts on both
-/// sides of a passage, about the passage's half width however long the box. Any continuous path passes through a chain
-/// of touching boxes, so the widest chain by upper bounds bounds every path's
-/// bottleneck from above, and a chain by lower bounds gives a path whose bottleneck
-/// is at least its value.
+/// clearance plus the distance to the box's farthest corner. Any continuous path
+/// passes through a chain of touching boxes, so the widest chain by upper bounds
+/// bounds every path's bottleneck from above, and a chain by lower bounds gives a path
+/// whose bottleneck is at least its value.
 class ClearanceBoxes {
  public:
   /// Boxes covering x in [low[0], high[0]], y in [low[1], high[1]] and every theta,
@@ -119,8 +120,18 @@ class ClearanceBoxes {
 
  private:
   /// Adds a box, its centre's contact looked for about `expected` away first (a hint:
-  /// FreeSpace::clearance).
-  std::uint32_t addBox(const std::array<double, 3>& low, const std::array<double, 3>& high, double expected = HUGE_VAL);
+  /// FreeSpace::clearance), its centre's location taken from `location` when given
+  /// (certified by the caller).
+  std::uint32_t addBox(const std::array<double, 3>& low, const std::array<double, 3>& high, double expected = HUGE_VAL,
+                       const std::optional<Location>& location = std::nullopt);
+  /// Where the centre of [low, high] lies when a free box's centre certifies it: its
+  /// clearance exceeds the move between the centres (|dxy| + reach |dtheta|), so the
+  /// motion between them stays free, in its cell (docs/design.md section 7).
+  std::optional<Location> certifiedLocation(const ClearanceBox& known, const std::array<double, 3>& low,
+                                            const std::array<double, 3>& high) const;
+  /// The move from an anchor to the centre of [low, high]: |dxy| + reach |dtheta|.
+  double moveBetween(const ClearanceAnchor& centre, const std::array<double, 3>& low,
+                     const std::array<double, 3>& high) const;
   /// About how far the contact of the centre of [low, high] lies, from a box whose
   /// centre's clearance is known: that clearance plus the move between the centres
   /// (|dxy| + reach |dtheta|), the bound of the Lipschitz clearance on the free side

@@ -160,13 +160,18 @@ NodeLocation FreeSpace::locateNode(const Pose2& pose) const {
   return answer;
 }
 
-Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth, double expected) const {
+Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth, double expected,
+                               const std::optional<Location>& location) const {
   Clearance result;
   const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
   const double scale = impl_->meshes.scale;
   const Rational x = Rational(pose.x) * Rational(scale), y = Rational(pose.y) * Rational(scale);
   const std::optional<BoundaryDistance> found = impl_->boundary->nearest(at, {x, y}, relativeWidth, expected * scale);
-  result.location = found ? impl_->locationToward(pose, {x, y}, at, found->nearest) : locate(pose);
+  if (location) {
+    result.location = *location;
+  } else {
+    result.location = found ? impl_->locationToward(pose, {x, y}, at, found->nearest) : locate(pose);
+  }
   if (!found) {
     const double unbounded = result.location.free ? HUGE_VAL : -HUGE_VAL;
     result.lower = result.upper = unbounded;

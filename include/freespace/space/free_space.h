@@ -117,8 +117,12 @@ class FreeSpace {
   /// `relativeWidth` (exact arithmetic where double intervals are wider; they rarely
   /// are wider than 1e-11). `expected`, when known, is about how far that point lies
   /// (|clearance|, or a bound on it): a hint that makes the search look at fewer of
-  /// the boundary's pieces and changes no answer.
-  Clearance clearance(const Pose2& pose, double relativeWidth = 1e-13, double expected = HUGE_VAL) const;
+  /// the boundary's pieces and changes no answer. `location`, when given, is where the
+  /// configuration lies, certified by the caller (as the clearance's Lipschitz bound
+  /// certifies it near a free configuration of known clearance, docs/design.md
+  /// section 7): the ray that would place it is not cast.
+  Clearance clearance(const Pose2& pose, double relativeWidth = 1e-13, double expected = HUGE_VAL,
+                      const std::optional<Location>& location = std::nullopt) const;
 
   /// The free cell graph (docs/design.md section 7), built on first use (announced
   /// and cancellable as the construction was), in the construction's coordinates
