@@ -9,6 +9,7 @@
 // parents and neighbours to children; each sample's leaf is found again by leafAt.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -180,6 +181,48 @@ TEST_P(BundledClearanceBoxes, SearchesStoppedBelowTheTargetAgreeWithRelaxationAb
   }
   EXPECT_GT(atLevel, 10);
   EXPECT_GT(below, 10);
+}
+
+// A search kept from round to round (ClearanceBoxes::UpperSearch) agrees with a new
+// one after every round of halvings and drops: the same bottleneck on every box at
+// the level or above, and below it on the others. The boxes halved are among those a
+// chain at the level reaches (the searches' trees pass them).
+TEST_P(BundledClearanceBoxes, KeptSearchesAgreeWithNewOnes) {
+  const LoadedProblem loaded = loadBundledProblem(GetParam());
+  const FreeSpace space(loaded.robot, loaded.world);
+  std::mt19937_64 random(20261206);
+  ClearanceBoxes boxes = halvedBoxes(space, loaded, 200, random).boxes;
+  ClearanceBoxes::UpperSearch kept;
+  int compared = 0;
+  for (int round = 0; round < 12; ++round) {
+    // A lower level every other round: boxes the last search left below its level
+    // count then.
+    const double ratio = round % 2 == 0 ? 0.98 : 0.6;
+    const std::uint32_t from = boxes.leafAt(loaded.problem.start), to = boxes.leafAt(loaded.problem.goal);
+    const std::vector<double> fresh = boxes.widestUpperFrom(from, to, ratio, HUGE_VAL);
+    const std::vector<double> goneOn = boxes.widestUpperFrom(from, to, ratio, HUGE_VAL, kept);
+    ASSERT_EQ(goneOn.size(), fresh.size());
+    ASSERT_GT(fresh[to], -HUGE_VAL);
+    const double level = ratio * fresh[to];
+    std::vector<std::uint32_t> reached;
+    for (std::uint32_t box = 0; box < boxes.size(); ++box) {
+      if (boxes.box(box).split || boxes.box(box).dropped) continue;
+      if (fresh[box] >= level) {
+        ++compared;
+        reached.push_back(box);
+        EXPECT_EQ(goneOn[box], fresh[box]) << "round " << round << " box " << box;
+      } else {
+        EXPECT_LT(goneOn[box], level) << "round " << round << " box " << box;
+      }
+    }
+    // Halve some boxes a chain at the level passes, and drop the lowest.
+    std::shuffle(reached.begin(), reached.end(), random);
+    for (std::size_t k = 0; k < std::min<std::size_t>(reached.size(), 30); ++k) {
+      boxes.split(reached[k], boxes.axesToSplit(reached[k]));
+    }
+    if (round % 3 == 2) boxes.dropBelow(0.5 * level);
+  }
+  EXPECT_GT(compared, 1000);
 }
 
 /// Angles (their tangent's chart and t) strictly inside a slab: just after its start,

@@ -425,6 +425,7 @@ void ClearanceBoxes::split(std::uint32_t index, std::uint8_t axes) {
     addBox(low, high, expectedClearance(boxes_[index], low, high), certifiedLocation(boxes_[index], low, high));
   }
   boxes_[index].split = true;
+  changed_.push_back(index);
   boxes_[index].splitAxes = axes;
   boxes_[index].firstChild = first;
   // The halves touch one another (they share the centre) and each of the box's
@@ -460,7 +461,11 @@ void ClearanceBoxes::split(std::uint32_t index, std::uint8_t axes) {
     if (boxes_[neighbour].split || boxes_[neighbour].dropped) continue;
     candidates.insert(candidates.end(), boxes_[neighbour].own.begin(), boxes_[neighbour].own.end());
   }
-  for (std::uint32_t child = first; child < end; ++child) bound(boxes_[child], candidates);
+  for (std::uint32_t child = first; child < end; ++child) {
+    bound(boxes_[child], candidates);
+    // The box's bound holds in its halves: bounds only fall (UpperSearch relies on it).
+    boxes_[child].upper = std::min(boxes_[child].upper, boxes_[index].upper);
+  }
   boxes_[index].neighbours = {};
 }
 
@@ -472,14 +477,22 @@ std::uint8_t ClearanceBoxes::axesToSplit(std::uint32_t index) const {
 }
 
 void ClearanceBoxes::dropBelow(double level) {
-  for (ClearanceBox& box : boxes_) {
-    if (!box.split && box.upper < level) box.dropped = true;
+  for (std::uint32_t index = 0; index < boxes_.size(); ++index) {
+    ClearanceBox& box = boxes_[index];
+    if (box.split || box.dropped || !(box.upper < level)) continue;
+    box.dropped = true;
+    changed_.push_back(index);
   }
 }
 
 void ClearanceBoxes::dropOutside(std::uint32_t cell) {
-  for (ClearanceBox& box : boxes_) {
-    if (!box.split && (box.lower > 0 || box.unbroken) && box.centreCell && *box.centreCell != cell) box.dropped = true;
+  for (std::uint32_t index = 0; index < boxes_.size(); ++index) {
+    ClearanceBox& box = boxes_[index];
+    if (box.split || box.dropped || !(box.lower > 0 || box.unbroken) || !box.centreCell || *box.centreCell == cell) {
+      continue;
+    }
+    box.dropped = true;
+    changed_.push_back(index);
   }
 }
 
@@ -536,17 +549,97 @@ ClearanceBoxes::Chain ClearanceBoxes::widestChain(std::uint32_t from, std::uint3
 
 std::vector<double> ClearanceBoxes::widestUpperFrom(std::uint32_t from, std::uint32_t to, double ratio,
                                                     double cap) const {
-  std::vector<double> widest;
-  std::vector<std::uint32_t> previous;
-  double level = -HUGE_VAL;  // known once `to` is reached
-  widestFrom(
-      boxes_, from, [&](std::uint32_t index) { return boxes_[index].upper; },
-      [](const ClearanceBox& box) { return !box.split && !box.dropped; },
-      [&](std::uint32_t index, double width) {
-        if (index == to) level = ratio * std::min(cap, width);
-        return width < level;
-      },
-      widest, previous);
+  UpperSearch search;
+  return widestUpperFrom(from, to, ratio, cap, search);
+}
+
+std::vector<char> ClearanceBoxes::toReset(const UpperSearch& search) const {
+  const std::size_t known = search.widest.size();
+  std::vector<char> reset(boxes_.size(), 1);
+  if (search.from == UINT32_MAX) return reset;
+  std::fill(reset.begin(), reset.begin() + static_cast<std::ptrdiff_t>(known), 0);
+  // Boxes added since the last search have no place in its tree.
+  std::vector<std::uint32_t> stack;
+  for (std::size_t k = search.changesSeen; k < changed_.size(); ++k) {
+    if (changed_[k] < known) stack.push_back(changed_[k]);
+  }
+  for (std::uint32_t index : stack) reset[index] = 1;
+  // And every box whose chain passes one of those: down the tree of predecessors.
+  std::vector<std::uint32_t> firstChild(known + 1, 0);
+  for (std::size_t index = 0; index < known; ++index) {
+    if (search.previous[index] != UINT32_MAX) ++firstChild[search.previous[index] + 1];
+  }
+  for (std::size_t index = 0; index < known; ++index) firstChild[index + 1] += firstChild[index];
+  std::vector<std::uint32_t> children(firstChild[known]), next(firstChild.begin(), firstChild.end() - 1);
+  for (std::size_t index = 0; index < known; ++index) {
+    if (search.previous[index] != UINT32_MAX) children[next[search.previous[index]]++] = index;
+  }
+  while (!stack.empty()) {
+    const std::uint32_t parent = stack.back();
+    stack.pop_back();
+    for (std::uint32_t k = firstChild[parent]; k < firstChild[parent + 1]; ++k) {
+      if (!reset[children[k]]) {
+        reset[children[k]] = 1;
+        stack.push_back(children[k]);
+      }
+    }
+  }
+  return reset;
+}
+
+const std::vector<double>& ClearanceBoxes::widestUpperFrom(std::uint32_t from, std::uint32_t to, double ratio,
+                                                           double cap, UpperSearch& search) const {
+  const bool fresh = search.from != from;
+  if (fresh) search = UpperSearch{};
+  const std::vector<char> reset = toReset(search);
+  search.from = from;
+  search.changesSeen = changed_.size();
+  search.widest.resize(boxes_.size(), -HUGE_VAL);
+  search.previous.resize(boxes_.size(), UINT32_MAX);
+  search.final.resize(boxes_.size(), 0);
+  std::vector<double>& widest = search.widest;
+  const auto usable = [&](std::uint32_t index) { return !boxes_[index].split && !boxes_[index].dropped; };
+  // Boxes reset start from their kept final neighbours; kept boxes the last search
+  // left below its level keep what its final boxes gave them (their best).
+  std::vector<std::pair<double, std::uint32_t>> seeds;
+  for (std::uint32_t index = 0; index < boxes_.size(); ++index) {
+    if (reset[index]) {
+      widest[index] = index == from ? boxes_[index].upper : -HUGE_VAL;
+      search.previous[index] = UINT32_MAX;
+      search.final[index] = 0;
+      if (!fresh && index != from && usable(index)) {
+        for (std::uint32_t neighbour : boxes_[index].neighbours) {
+          if (reset[neighbour] || !search.final[neighbour]) continue;
+          const double through = std::min(widest[neighbour], boxes_[index].upper);
+          if (through > widest[index]) {
+            widest[index] = through;
+            search.previous[index] = neighbour;
+          }
+        }
+      }
+    }
+    if (!search.final[index] && widest[index] > -HUGE_VAL) seeds.push_back({widest[index], index});
+  }
+  std::priority_queue<std::pair<double, std::uint32_t>> open(std::less<std::pair<double, std::uint32_t>>(),
+                                                             std::move(seeds));
+  // Dijkstra's method over them, stopped below the level (known once `to` is final).
+  double level = search.final[to] ? ratio * std::min(cap, widest[to]) : -HUGE_VAL;
+  while (!open.empty()) {
+    const auto [width, index] = open.top();
+    open.pop();
+    if (width < widest[index] || search.final[index]) continue;
+    if (index == to) level = ratio * std::min(cap, width);
+    if (width < level) break;
+    search.final[index] = 1;
+    for (std::uint32_t neighbour : boxes_[index].neighbours) {
+      if (!usable(neighbour)) continue;
+      const double through = std::min(width, boxes_[neighbour].upper);
+      if (through <= widest[neighbour]) continue;
+      widest[neighbour] = through;
+      search.previous[neighbour] = index;
+      open.push({through, neighbour});
+    }
+  }
   return widest;
 }
 

@@ -87,11 +87,26 @@ class ClearanceBoxes {
   Chain widestChain(std::uint32_t from, std::uint32_t to, Bound bound, double upperAtLeast = -HUGE_VAL,
                     std::optional<std::uint32_t> centreCell = std::nullopt) const;
 
+  /// The widest chains by upper bounds from one box, kept between searches: each
+  /// search starts again only the boxes whose chain passed a box halved or dropped
+  /// since the last one and the boxes added since, and goes on from the boxes the last
+  /// one left below its level (bounds only fall and boxes only go, so every other box
+  /// keeps its chain and its value).
+  struct UpperSearch {
+    std::uint32_t from = UINT32_MAX;
+    std::vector<double> widest;
+    std::vector<std::uint32_t> previous;
+    std::vector<char> final;
+    std::size_t changesSeen = 0;
+  };
   /// For every box, the widest chain's bottleneck by upper bounds from `from` to it
   /// (-infinity where none reaches), where that is at least `ratio` times the least of
   /// `cap` and the bottleneck to `to`; below, the search stops and leaves lower
-  /// values (a path query asks no more: docs/design.md section 7).
+  /// values (a path query asks no more: docs/design.md section 7). With `search`, from
+  /// where the last search with it left off (see UpperSearch).
   std::vector<double> widestUpperFrom(std::uint32_t from, std::uint32_t to, double ratio, double cap) const;
+  const std::vector<double>& widestUpperFrom(std::uint32_t from, std::uint32_t to, double ratio, double cap,
+                                             UpperSearch& search) const;
 
   /// The box (not split) holding a configuration of the domain.
   std::uint32_t leafAt(const Pose2& pose) const;
@@ -146,6 +161,10 @@ class ClearanceBoxes {
   /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.
   void bound(ClearanceBox& box, std::vector<ClearanceAnchor> candidates) const;
   bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
+  /// The boxes an UpperSearch must start again (1) before its next search: those
+  /// halved or dropped since its last, every box whose chain passed them, and the
+  /// boxes added since; all for a new one.
+  std::vector<char> toReset(const UpperSearch& search) const;
   /// Whether a sub-face that bounds a free cell may meet the box: the patches whose
   /// boxes meet it (their boxes hold their segments), and of each, the part of its
   /// segment between the curves around such sub-faces in its slabs at the box's
@@ -156,6 +175,8 @@ class ClearanceBoxes {
   double reach_;
   std::array<std::vector<double>, 3> rootEdges_;  // the first boxes' edges along each axis
   std::vector<ClearanceBox> boxes_;
+  /// The boxes halved or dropped, in order (UpperSearch::changesSeen counts them).
+  std::vector<std::uint32_t> changed_;
   /// A slab of a patch with sub-faces that bound a free cell: its angles, its index,
   /// and the first and last of its gaps between curves (PatchSlab::faces) that are
   /// such sub-faces.

@@ -242,6 +242,8 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   // clearance) reach that ratio of the upper bound.
   ClearanceBoxes boxes(space, domain.low, domain.high, checker.reach());
   ClearanceBoxes::Chain lowerChain;
+  // Each round's searches go on from the last round's (ClearanceBoxes::UpperSearch).
+  ClearanceBoxes::UpperSearch startSearch, goalSearch;
   for (;;) {
     options.cancellation.check();
     // Paths through boxes below the clearance of a path already found are worse.
@@ -251,10 +253,11 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     // Only chains at the target's level matter below: each search stops under it.
     const double cap = std::min(passageStartUpper, passageEndUpper);
     // The two searches only read the boxes: the goal's runs beside the start's.
-    std::future<std::vector<double>> searchFromGoal =
-        std::async(std::launch::async, [&] { return boxes.widestUpperFrom(to, from, options.clearanceRatio, cap); });
-    const std::vector<double> fromStart = boxes.widestUpperFrom(from, to, options.clearanceRatio, cap),
-                              fromGoal = searchFromGoal.get();
+    std::future<void> searchFromGoal = std::async(
+        std::launch::async, [&] { boxes.widestUpperFrom(to, from, options.clearanceRatio, cap, goalSearch); });
+    const std::vector<double>& fromStart = boxes.widestUpperFrom(from, to, options.clearanceRatio, cap, startSearch);
+    searchFromGoal.get();
+    const std::vector<double>& fromGoal = goalSearch.widest;
     if (fromStart[to] == -HUGE_VAL) {
       path.status = PathStatus::infeasible;
       path.proof = "no path of free cell " + std::to_string(path.startCell) + " stays inside the volume";
