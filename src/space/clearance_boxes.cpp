@@ -476,47 +476,47 @@ std::uint8_t ClearanceBoxes::axesToSplit(std::uint32_t index) const {
   return box.own.front().upper + halfDiagonal < 0 ? kThetaAxis : kEveryAxis;
 }
 
+void ClearanceBoxes::drop(std::uint32_t index) {
+  boxes_[index].dropped = true;
+  changed_.push_back(index);
+}
+
 void ClearanceBoxes::dropBelow(double level) {
   for (std::uint32_t index = 0; index < boxes_.size(); ++index) {
-    ClearanceBox& box = boxes_[index];
-    if (box.split || box.dropped || !(box.upper < level)) continue;
-    box.dropped = true;
-    changed_.push_back(index);
+    const ClearanceBox& box = boxes_[index];
+    if (!box.split && !box.dropped && box.upper < level) drop(index);
   }
 }
 
 void ClearanceBoxes::dropOutside(std::uint32_t cell) {
   for (std::uint32_t index = 0; index < boxes_.size(); ++index) {
-    ClearanceBox& box = boxes_[index];
-    if (box.split || box.dropped || !(box.lower > 0 || box.unbroken) || !box.centreCell || *box.centreCell == cell) {
-      continue;
+    const ClearanceBox& box = boxes_[index];
+    if (!box.split && !box.dropped && (box.lower > 0 || box.unbroken) && box.centreCell && *box.centreCell != cell) {
+      drop(index);
     }
-    box.dropped = true;
-    changed_.push_back(index);
   }
 }
 
 namespace {
 
-/// Widest chains from `from` (breadth by `boundOf`, through the boxes `usable`
-/// accepts), by Dijkstra's method with the bottleneck for length, until `stop` says
-/// so of a box reached (with its bottleneck; boxes are reached widest first): each
-/// box's bottleneck and predecessor, final for the boxes reached before.
+using BoxQueue = std::priority_queue<std::pair<double, std::uint32_t>>;
+
+/// Dijkstra's method with the bottleneck for length (breadth by `boundOf`, through the
+/// boxes `usable` accepts), from the boxes in `open` with their bottlenecks in
+/// `widest`, until `stop` says so of a box reached (with its bottleneck; boxes are
+/// reached widest first): each box's bottleneck and predecessor, final (and marked
+/// so) for the boxes reached before.
 template <typename BoundOf, typename Usable, typename Stop>
-void widestFrom(const std::vector<ClearanceBox>& boxes, std::uint32_t from, BoundOf boundOf, Usable usable, Stop stop,
-                std::vector<double>& widest, std::vector<std::uint32_t>& previous) {
-  widest.assign(boxes.size(), -HUGE_VAL);
-  previous.assign(boxes.size(), UINT32_MAX);
-  std::priority_queue<std::pair<double, std::uint32_t>> open;
-  widest[from] = boundOf(from);
-  open.push({widest[from], from});
+void widestChains(const std::vector<ClearanceBox>& boxes, BoxQueue& open, BoundOf boundOf, Usable usable, Stop stop,
+                  std::vector<double>& widest, std::vector<std::uint32_t>& previous, std::vector<char>& final) {
   while (!open.empty()) {
     const auto [width, index] = open.top();
     open.pop();
-    if (width < widest[index]) continue;
+    if (width < widest[index] || final[index]) continue;
     if (stop(index, width)) break;
+    final[index] = 1;
     for (std::uint32_t neighbour : boxes[index].neighbours) {
-      if (!usable(boxes[neighbour])) continue;
+      if (!usable(neighbour)) continue;
       const double through = std::min(width, boundOf(neighbour));
       if (through <= widest[neighbour]) continue;
       widest[neighbour] = through;
@@ -530,15 +530,22 @@ void widestFrom(const std::vector<ClearanceBox>& boxes, std::uint32_t from, Boun
 
 ClearanceBoxes::Chain ClearanceBoxes::widestChain(std::uint32_t from, std::uint32_t to, Bound bound,
                                                   double upperAtLeast, std::optional<std::uint32_t> centreCell) const {
-  std::vector<double> widest;
-  std::vector<std::uint32_t> previous;
-  widestFrom(
-      boxes_, from,
-      [&](std::uint32_t index) { return bound == Bound::Lower ? boxes_[index].lower : boxes_[index].upper; },
-      [&](const ClearanceBox& box) {
+  const auto boundOf = [&](std::uint32_t index) {
+    return bound == Bound::Lower ? boxes_[index].lower : boxes_[index].upper;
+  };
+  std::vector<double> widest(boxes_.size(), -HUGE_VAL);
+  std::vector<std::uint32_t> previous(boxes_.size(), UINT32_MAX);
+  std::vector<char> final(boxes_.size(), 0);
+  widest[from] = boundOf(from);
+  BoxQueue open;
+  open.push({widest[from], from});
+  widestChains(
+      boxes_, open, boundOf,
+      [&](std::uint32_t index) {
+        const ClearanceBox& box = boxes_[index];
         return !box.split && !box.dropped && box.upper >= upperAtLeast && (!centreCell || box.centreCell == centreCell);
       },
-      [&](std::uint32_t index, double) { return index == to; }, widest, previous);
+      [&](std::uint32_t index, double) { return index == to; }, widest, previous, final);
   Chain chain;
   if (widest[to] == -HUGE_VAL) return chain;
   chain.bottleneck = widest[to];
@@ -620,26 +627,16 @@ const std::vector<double>& ClearanceBoxes::widestUpperFrom(std::uint32_t from, s
     }
     if (!search.final[index] && widest[index] > -HUGE_VAL) seeds.push_back({widest[index], index});
   }
-  std::priority_queue<std::pair<double, std::uint32_t>> open(std::less<std::pair<double, std::uint32_t>>(),
-                                                             std::move(seeds));
-  // Dijkstra's method over them, stopped below the level (known once `to` is final).
+  BoxQueue open(std::less<std::pair<double, std::uint32_t>>(), std::move(seeds));
+  // Stopped below the level (known once `to` is final).
   double level = search.final[to] ? ratio * std::min(cap, widest[to]) : -HUGE_VAL;
-  while (!open.empty()) {
-    const auto [width, index] = open.top();
-    open.pop();
-    if (width < widest[index] || search.final[index]) continue;
-    if (index == to) level = ratio * std::min(cap, width);
-    if (width < level) break;
-    search.final[index] = 1;
-    for (std::uint32_t neighbour : boxes_[index].neighbours) {
-      if (!usable(neighbour)) continue;
-      const double through = std::min(width, boxes_[neighbour].upper);
-      if (through <= widest[neighbour]) continue;
-      widest[neighbour] = through;
-      search.previous[neighbour] = index;
-      open.push({through, neighbour});
-    }
-  }
+  widestChains(
+      boxes_, open, [&](std::uint32_t index) { return boxes_[index].upper; }, usable,
+      [&](std::uint32_t index, double width) {
+        if (index == to) level = ratio * std::min(cap, width);
+        return width < level;
+      },
+      widest, search.previous, search.final);
   return widest;
 }
 

@@ -161,6 +161,8 @@ class ClearanceBoxes {
   /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.
   void bound(ClearanceBox& box, std::vector<ClearanceAnchor> candidates) const;
   bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
+  /// Marks a box dropped (and logs it for the searches).
+  void drop(std::uint32_t index);
   /// The boxes an UpperSearch must start again (1) before its next search: those
   /// halved or dropped since its last, every box whose chain passed them, and the
   /// boxes added since; all for a new one.
