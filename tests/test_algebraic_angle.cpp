@@ -346,8 +346,9 @@ TEST(AlgebraicAngle, RootsApartByAFewUlpsAreToldApartByTightCoefficients) {
   const auto& decided = statistics.counts(PredicateKind::RootOrder).decided;
   EXPECT_EQ(decided[static_cast<int>(PrecisionLevel::DoubleDouble)], 1u);
   EXPECT_EQ(decided[static_cast<int>(PrecisionLevel::Exact)], 0u);
-  const AngleFunction::NarrowEnclosure* remembered = rootsA[0].function()->rememberedEnclosure(0, rootsA[0].index());
-  ASSERT_NE(remembered, nullptr);
+  const std::optional<AngleFunction::NarrowEnclosure> remembered =
+      rootsA[0].function()->rememberedEnclosure(0, rootsA[0].index());
+  ASSERT_TRUE(remembered.has_value());
   EXPECT_LT(remembered->upper - remembered->lower, rootsA[0].upper() - rootsA[0].lower());
   EXPECT_LT(remembered->upper, b);  // narrowed until apart from b's root
 }

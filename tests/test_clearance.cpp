@@ -3,10 +3,11 @@
 // certified clearance, one within it; the certified interval narrower than 1e-12
 // relative; the same answer whatever distance the search is told to expect; the same
 // cell as locate; and what the clearance must be on a scene simple enough to work it
-// out by hand.
+// out by hand; the same answers from several threads at once as from one.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <future>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -85,6 +86,50 @@ TEST_P(BundledClearance, PlacesConfigurationsAsLocateDoes) {
   }
   EXPECT_GT(free, 0);
   EXPECT_LT(free, 200);
+}
+
+// Queries share the free space's functions (and their memos, made on first use) and
+// borrow their own predicates: four threads asking at once, each in its own order,
+// from a space nobody asked before, get what one thread gets asking alone afterwards.
+TEST_P(BundledClearance, SeveralThreadsGetWhatOneGets) {
+  const LoadedProblem problem = loadBundledProblem(GetParam());
+  const FreeSpace space(problem.robot, problem.world);
+  const std::vector<Pose2> poses = randomPoses(space, 7, 160);
+  struct Answer {
+    Clearance clearance;
+    NodeLocation node;
+  };
+  const auto answer = [&](const Pose2& pose) { return Answer{space.clearance(pose), space.locateNode(pose)}; };
+  constexpr std::size_t kThreads = 4;
+  std::vector<std::future<std::vector<Answer>>> threads;
+  for (std::size_t thread = 0; thread < kThreads; ++thread) {
+    threads.push_back(std::async(std::launch::async, [&, thread] {
+      std::vector<Answer> answers(poses.size());
+      for (std::size_t k = 0; k < poses.size(); ++k) {
+        const std::size_t at = (k + thread * poses.size() / kThreads) % poses.size();
+        answers[at] = answer(poses[at]);
+      }
+      return answers;
+    }));
+  }
+  std::vector<std::vector<Answer>> together;
+  for (auto& thread : threads) together.push_back(thread.get());
+  int free = 0;
+  for (std::size_t k = 0; k < poses.size(); ++k) {
+    const Answer alone = answer(poses[k]);
+    free += alone.node.location.free;
+    for (const std::vector<Answer>& answers : together) {
+      const Answer& other = answers[k];
+      ASSERT_EQ(other.clearance.lower, alone.clearance.lower) << "configuration " << k;
+      EXPECT_EQ(other.clearance.upper, alone.clearance.upper) << "configuration " << k;
+      EXPECT_EQ(other.clearance.nearest, alone.clearance.nearest) << "configuration " << k;
+      EXPECT_EQ(other.clearance.location.free, alone.clearance.location.free) << "configuration " << k;
+      EXPECT_EQ(other.clearance.location.cell, alone.clearance.location.cell) << "configuration " << k;
+      EXPECT_EQ(other.node.location.free, alone.node.location.free) << "configuration " << k;
+      EXPECT_EQ(other.node.node, alone.node.node) << "configuration " << k;
+    }
+  }
+  EXPECT_GT(free, 0);
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledClearance,

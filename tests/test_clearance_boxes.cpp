@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <random>
 #include <string>
@@ -223,6 +224,67 @@ TEST_P(BundledClearanceBoxes, KeptSearchesAgreeWithNewOnes) {
     if (round % 3 == 2) boxes.dropBelow(0.5 * level);
   }
   EXPECT_GT(compared, 1000);
+}
+
+/// Whether two sets of boxes are the same, box by box: ranges, bounds, centres'
+/// cells, anchors, neighbours and halvings.
+void expectSameBoxes(const ClearanceBoxes& a, const ClearanceBoxes& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::uint32_t index = 0; index < a.size(); ++index) {
+    const ClearanceBox &x = a.box(index), &y = b.box(index);
+    EXPECT_EQ(x.low, y.low) << "box " << index;
+    EXPECT_EQ(x.high, y.high) << "box " << index;
+    EXPECT_EQ(x.lower, y.lower) << "box " << index;
+    EXPECT_EQ(x.upper, y.upper) << "box " << index;
+    EXPECT_EQ(x.centreLower, y.centreLower) << "box " << index;
+    EXPECT_EQ(x.centreCell, y.centreCell) << "box " << index;
+    EXPECT_EQ(x.unbroken, y.unbroken) << "box " << index;
+    EXPECT_EQ(x.split, y.split) << "box " << index;
+    EXPECT_EQ(x.firstChild, y.firstChild) << "box " << index;
+    EXPECT_EQ(x.neighbours, y.neighbours) << "box " << index;
+    ASSERT_EQ(x.anchors.size(), y.anchors.size()) << "box " << index;
+    for (std::size_t k = 0; k < x.anchors.size(); ++k) {
+      EXPECT_EQ(x.anchors[k].at, y.anchors[k].at) << "box " << index;
+      EXPECT_EQ(x.anchors[k].upper, y.anchors[k].upper) << "box " << index;
+    }
+  }
+}
+
+// Halving many boxes at once (their halves measured on every core) leaves what halving
+// them one after another leaves, neighbours of one another among them; a halving told
+// to stop leaves the rest whole.
+TEST_P(BundledClearanceBoxes, HalvingAtOnceMatchesHalvingInTurn) {
+  const LoadedProblem loaded = loadBundledProblem(GetParam());
+  const FreeSpace space(loaded.robot, loaded.world);
+  std::mt19937_64 random(20261207), sameRandom(20261207);
+  ClearanceBoxes inTurn = halvedBoxes(space, loaded, 100, random).boxes;
+  ClearanceBoxes atOnce = halvedBoxes(space, loaded, 100, sameRandom).boxes;
+  for (int round = 0; round < 3; ++round) {
+    // A box and its leaf neighbours, from random boxes, until some 200.
+    std::vector<std::uint32_t> chosen;
+    std::vector<char> taken(inTurn.size(), 0);
+    while (chosen.size() < 200) {
+      const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, inTurn.size() - 1)(random);
+      if (inTurn.box(box).split) continue;
+      std::vector<std::uint32_t> group{box};
+      group.insert(group.end(), inTurn.box(box).neighbours.begin(), inTurn.box(box).neighbours.end());
+      for (std::uint32_t member : group) {
+        if (!taken[member] && !inTurn.box(member).split) chosen.push_back(member), taken[member] = 1;
+      }
+    }
+    for (std::uint32_t box : chosen) inTurn.split(box, inTurn.axesToSplit(box));
+    EXPECT_EQ(atOnce.splitEach(chosen, [] { return true; }), chosen.size());
+    expectSameBoxes(inTurn, atOnce);
+  }
+  std::vector<std::uint32_t> leaves;
+  for (std::uint32_t box = 0; box < atOnce.size() && leaves.size() < 100; ++box) {
+    if (!atOnce.box(box).split) leaves.push_back(box);
+  }
+  std::atomic<int> asked{0};
+  const std::size_t halved = atOnce.splitEach(leaves, [&] { return ++asked <= 40; });
+  EXPECT_LE(halved, 40u);
+  EXPECT_GE(halved, 1u);
+  for (std::size_t k = 0; k < leaves.size(); ++k) EXPECT_EQ(atOnce.box(leaves[k]).split, k < halved) << k;
 }
 
 /// Angles (their tangent's chart and t) strictly inside a slab: just after its start,

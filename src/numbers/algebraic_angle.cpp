@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <stdexcept>
 
 #include "interval_root_isolation.h"
@@ -228,12 +229,27 @@ AngleFunction::AngleFunction(std::array<Polynomial<Interval>, 2> enclosures, std
                              std::unique_ptr<const ExactSource> exact)
     : approximate_(std::move(enclosures)), source_(std::move(exact)), key_(key) {}
 
+namespace {
+
+/// Guards what AngleFunctions make or remember on first use (their escalation and
+/// memos): the functions of a free space are shared by the threads that query it.
+/// Recursive: a value made on first use may need another (the tight coefficients
+/// need the double-double ones). Rarely taken but for the memos of narrow enclosures.
+std::recursive_mutex& firstUseMutex() {
+  static std::recursive_mutex mutex;
+  return mutex;
+}
+
+}  // namespace
+
 AngleFunction::Escalation& AngleFunction::escalation() const {
+  const std::lock_guard lock(firstUseMutex());
   if (!escalation_) escalation_ = std::make_unique<Escalation>();
   return *escalation_;
 }
 
 const Polynomial<DoubleDoubleInterval>& AngleFunction::doubleDouble(int chart) const {
+  const std::lock_guard lock(firstUseMutex());
   auto& doubleDouble = escalation().doubleDouble[chart];
   if (!doubleDouble) {
     if (source_) {
@@ -247,24 +263,29 @@ const Polynomial<DoubleDoubleInterval>& AngleFunction::doubleDouble(int chart) c
   return *doubleDouble;
 }
 
-const DoubleDoubleInterval* AngleFunction::rememberedRoot(int chart, int index) const {
-  return escalation_ ? escalation_->doubleDoubleRoots.find(chart, index) : nullptr;
+std::optional<DoubleDoubleInterval> AngleFunction::rememberedRoot(int chart, int index) const {
+  const std::lock_guard lock(firstUseMutex());
+  return escalation_ ? escalation_->doubleDoubleRoots.find(chart, index) : std::nullopt;
 }
 
 void AngleFunction::rememberRoot(int chart, int index, const DoubleDoubleInterval& root) const {
+  const std::lock_guard lock(firstUseMutex());
   escalation().doubleDoubleRoots.remember(chart, index, root);
 }
 
-const AngleFunction::NarrowEnclosure* AngleFunction::rememberedEnclosure(int chart, int index) const {
+std::optional<AngleFunction::NarrowEnclosure> AngleFunction::rememberedEnclosure(int chart, int index) const {
+  const std::lock_guard lock(firstUseMutex());
   return narrowEnclosures_.find(chart, index);
 }
 
 void AngleFunction::rememberEnclosure(int chart, int index, const NarrowEnclosure& enclosure) const {
+  const std::lock_guard lock(firstUseMutex());
   narrowEnclosures_.remember(chart, index, enclosure);
 }
 
 const Polynomial<Interval>& AngleFunction::tight(int chart) const {
   if (source_) return approximate_[chart];  // as narrow as doubles allow
+  const std::lock_guard lock(firstUseMutex());
   auto& tight = escalation().tight[chart];
   if (!tight) {
     std::vector<Interval> coefficients;
@@ -277,6 +298,7 @@ const Polynomial<Interval>& AngleFunction::tight(int chart) const {
 }
 
 const Polynomial<PreciseInterval>& AngleFunction::precise(int chart) const {
+  const std::lock_guard lock(firstUseMutex());
   auto& precise = escalation().precise[chart];
   if (!precise) {
     std::vector<PreciseInterval> coefficients;
@@ -289,6 +311,7 @@ const Polynomial<PreciseInterval>& AngleFunction::precise(int chart) const {
 }
 
 const RationalPolynomial& AngleFunction::exact(int chart) const {
+  const std::lock_guard lock(firstUseMutex());
   auto& exact = escalation().exact[chart];
   if (!exact) exact = trimmed(source_ ? source_->polynomial(chart, approximate_[chart]) : evaluator_->exact(chart));
   return *exact;
@@ -308,6 +331,7 @@ bool AngleFunction::isIdenticallyZero() const {
 }
 
 const RationalPolynomial& AngleFunction::squareFree(int chart) const {
+  const std::lock_guard lock(firstUseMutex());
   auto& squareFree = escalation().squareFree[chart];
   if (!squareFree) squareFree = squareFreePart(exact(chart));
   return *squareFree;
@@ -435,7 +459,7 @@ void AlgebraicAngle::refineInDoublesTo(double width) {
 
 std::pair<double, double> AlgebraicAngle::narrowestKnownEnclosure() const {
   if (!function_ || index_ < 0) return {lower_, upper_};
-  const AngleFunction::NarrowEnclosure* known = function_->rememberedEnclosure(chart_, index_);
+  const std::optional<AngleFunction::NarrowEnclosure> known = function_->rememberedEnclosure(chart_, index_);
   if (!known) return {lower_, upper_};
   // Both enclose the one root of the function in this isolating interval.
   return {std::max(lower_, known->lower), std::min(upper_, known->upper)};
@@ -443,7 +467,7 @@ std::pair<double, double> AlgebraicAngle::narrowestKnownEnclosure() const {
 
 void AlgebraicAngle::adoptRememberedEnclosure() {
   if (!function_ || index_ < 0) return;
-  const AngleFunction::NarrowEnclosure* known = function_->rememberedEnclosure(chart_, index_);
+  const std::optional<AngleFunction::NarrowEnclosure> known = function_->rememberedEnclosure(chart_, index_);
   if (!known || !(known->upper - known->lower < upper_ - lower_)) return;
   // A narrower enclosure of the same root: the function's sign at its lower end is
   // the sign at this one's (both below the root, inside one isolating interval).
@@ -454,7 +478,7 @@ void AlgebraicAngle::adoptRememberedEnclosure() {
 
 void AlgebraicAngle::rememberEnclosure() const {
   if (!function_ || index_ < 0) return;
-  const AngleFunction::NarrowEnclosure* known = function_->rememberedEnclosure(chart_, index_);
+  const std::optional<AngleFunction::NarrowEnclosure> known = function_->rememberedEnclosure(chart_, index_);
   if (known && !(upper_ - lower_ < known->upper - known->lower)) return;
   function_->rememberEnclosure(chart_, index_, {lower_, upper_, tight_});
 }
@@ -854,7 +878,9 @@ std::optional<DoubleDoubleInterval> doubleDoubleParameter(const AlgebraicAngle& 
   }
   const AngleFunction& function = *angle.function();
   if (angle.index() >= 0) {
-    if (const DoubleDoubleInterval* known = function.rememberedRoot(angle.chart(), angle.index())) return *known;
+    if (const std::optional<DoubleDoubleInterval> known = function.rememberedRoot(angle.chart(), angle.index())) {
+      return known;
+    }
   }
   std::optional<DoubleDoubleInterval> root = newtonInDoubleDoubles(angle);
   if (!root) root = bisectInDoubleDoubles(angle);

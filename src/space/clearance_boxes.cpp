@@ -1,9 +1,12 @@
 #include "clearance_boxes.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <future>
 #include <optional>
 #include <queue>
+#include <thread>
 
 #include "contact_point.h"
 #include "freespace/geometry/patch_segment.h"
@@ -16,6 +19,29 @@
 namespace freespace {
 
 namespace {
+
+/// Runs work(k) for k = 0 to count - 1 on every core (a thread each, the caller's
+/// among them), k handed out in order, each while keepGoing() says so; an exception
+/// thrown by work stops them all and is thrown again here.
+template <class Work>
+void onEveryCore(std::size_t count, const std::function<bool()>& keepGoing, const Work& work) {
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  const auto run = [&] {
+    try {
+      for (std::size_t k = next++; k < count && !failed && keepGoing(); k = next++) work(k);
+    } catch (...) {
+      failed = true;
+      throw;
+    }
+  };
+  std::vector<std::future<void>> helpers;
+  for (unsigned helper = 1; helper < std::max(1u, std::thread::hardware_concurrency()); ++helper) {
+    helpers.push_back(std::async(std::launch::async, run));
+  }
+  run();
+  for (std::future<void>& helper : helpers) helper.get();
+}
 
 /// The turn between two angles of [-pi, pi] the shorter way round (|remainder(a - b,
 /// 2 pi)| within rounding, which the bounds' slack covers; std::remainder in general).
@@ -173,15 +199,21 @@ ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 
   const int countTheta = std::clamp(static_cast<int>(std::ceil(2 * M_PI * reach / side)), 4, 4 * across);
   rootEdges_ = {edgesBetween(low[0], high[0], countX), edgesBetween(low[1], high[1], countY),
                 edgesBetween(-M_PI, M_PI, countTheta)};
-  for (int i = 0; i < countX; ++i) {
-    for (int j = 0; j < countY; ++j) {
-      for (int k = 0; k < countTheta; ++k) {
-        const std::array<double, 3> boxLow{rootEdges_[0][i], rootEdges_[1][j], rootEdges_[2][k]},
-            boxHigh{rootEdges_[0][i + 1], rootEdges_[1][j + 1], rootEdges_[2][k + 1]};
-        addBox(boxLow, boxHigh, boxes_.empty() ? HUGE_VAL : expectedClearance(boxes_.back(), boxLow, boxHigh));
-      }
+  // Column by column in theta (on every core), each box's contact looked for near its
+  // neighbour's in the column.
+  boxes_.resize(static_cast<std::size_t>(countX) * countY * countTheta);
+  const auto measureColumn = [&](std::size_t column) {
+    const int i = static_cast<int>(column) / countY, j = static_cast<int>(column) % countY;
+    for (int k = 0; k < countTheta; ++k) {
+      const std::array<double, 3> boxLow{rootEdges_[0][i], rootEdges_[1][j], rootEdges_[2][k]},
+          boxHigh{rootEdges_[0][i + 1], rootEdges_[1][j + 1], rootEdges_[2][k + 1]};
+      const std::size_t index = column * countTheta + k;
+      const double expected = k == 0 ? HUGE_VAL : expectedClearance(boxes_[index - 1], boxLow, boxHigh);
+      boxes_[index] = measured(boxLow, boxHigh, expected, std::nullopt);
     }
-  }
+  };
+  const auto always = [] { return true; };
+  onEveryCore(static_cast<std::size_t>(countX) * countY, always, measureColumn);
   // Neighbours among the first boxes: those at most one step away along each axis
   // (theta wrapping around).
   for (int i = 0; i < countX; ++i) {
@@ -234,8 +266,8 @@ std::optional<Location> ClearanceBoxes::certifiedLocation(const ClearanceBox& kn
   return Location{true, *known.centreCell};
 }
 
-std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std::array<double, 3>& high,
-                                     double expected, const std::optional<Location>& location) {
+ClearanceBox ClearanceBoxes::measured(const std::array<double, 3>& low, const std::array<double, 3>& high,
+                                      double expected, const std::optional<Location>& location) const {
   ClearanceBox box;
   box.low = low;
   box.high = high;
@@ -268,8 +300,7 @@ std::uint32_t ClearanceBoxes::addBox(const std::array<double, 3>& low, const std
   // Blocked throughout: no clearance above 0 anywhere in it (the Lipschitz bound
   // across angles leaves room for pockets that no boundary here could enclose).
   if (box.unbroken && !clearance.location.free) box.upper = std::min(box.upper, 0.0);
-  boxes_.push_back(std::move(box));
-  return static_cast<std::uint32_t>(boxes_.size() - 1);
+  return box;
 }
 
 // Turned about its axis at a fixed (x, y), the robot's point in the contact moves by
@@ -409,21 +440,48 @@ std::uint32_t ClearanceBoxes::leafAt(const Pose2& pose) const {
   return index;
 }
 
-void ClearanceBoxes::split(std::uint32_t index, std::uint8_t axes) {
-  const std::uint32_t first = static_cast<std::uint32_t>(boxes_.size());
-  int halved = 0;
-  for (int axis = 0; axis < 3; ++axis) halved += axes >> axis & 1;
-  const std::uint32_t parts = 1u << halved;
-  for (std::uint32_t child = 0; child < parts; ++child) {
-    std::array<double, 3> low = boxes_[index].low, high = boxes_[index].high;
+void ClearanceBoxes::split(std::uint32_t index, std::uint8_t axes) { attach(index, axes, halves(index, axes)); }
+
+std::size_t ClearanceBoxes::splitEach(const std::vector<std::uint32_t>& boxes, const std::function<bool()>& keepGoing) {
+  std::vector<std::uint8_t> axes(boxes.size());
+  for (std::size_t k = 0; k < boxes.size(); ++k) axes[k] = axesToSplit(boxes[k]);
+  // A box's halves depend on it alone (its centre's clearance, cell and bounds), so
+  // they are measured on every core, then attached in order, as split() would one
+  // after another.
+  std::vector<std::vector<ClearanceBox>> halved(boxes.size());
+  onEveryCore(boxes.size(), keepGoing, [&](std::size_t k) { halved[k] = halves(boxes[k], axes[k]); });
+  // Those measured before `keepGoing` said stop (a box halved after one left whole is
+  // left whole too).
+  std::size_t done = 0;
+  while (done < boxes.size() && !halved[done].empty()) {
+    attach(boxes[done], axes[done], std::move(halved[done]));
+    ++done;
+  }
+  return done;
+}
+
+std::vector<ClearanceBox> ClearanceBoxes::halves(std::uint32_t index, std::uint8_t axes) const {
+  int halvedAxes = 0;
+  for (int axis = 0; axis < 3; ++axis) halvedAxes += axes >> axis & 1;
+  const ClearanceBox& box = boxes_[index];
+  std::vector<ClearanceBox> parts;
+  for (std::uint32_t part = 0; part < 1u << halvedAxes; ++part) {
+    std::array<double, 3> low = box.low, high = box.high;
     for (int axis = 0, bit = 0; axis < 3; ++axis) {
       if (!(axes >> axis & 1)) continue;
       const double middle = 0.5 * (low[axis] + high[axis]);
-      (child >> bit & 1 ? low : high)[axis] = middle;
+      (part >> bit & 1 ? low : high)[axis] = middle;
       ++bit;
     }
-    addBox(low, high, expectedClearance(boxes_[index], low, high), certifiedLocation(boxes_[index], low, high));
+    parts.push_back(measured(low, high, expectedClearance(box, low, high), certifiedLocation(box, low, high)));
   }
+  return parts;
+}
+
+void ClearanceBoxes::attach(std::uint32_t index, std::uint8_t axes, std::vector<ClearanceBox> halves) {
+  const std::uint32_t first = static_cast<std::uint32_t>(boxes_.size());
+  const std::uint32_t parts = static_cast<std::uint32_t>(halves.size());
+  for (ClearanceBox& half : halves) boxes_.push_back(std::move(half));
   boxes_[index].split = true;
   changed_.push_back(index);
   boxes_[index].splitAxes = axes;

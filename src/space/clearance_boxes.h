@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -113,6 +114,11 @@ class ClearanceBoxes {
   /// Halves a box along the axes of `axes` (bit k for axis k; every axis: eight
   /// clearances).
   void split(std::uint32_t box, std::uint8_t axes = kEveryAxis);
+  /// Halves each of `boxes` (distinct, none split) along its axesToSplit, as split()
+  /// one after another would, their halves measured on every core; asks `keepGoing`
+  /// (from any thread) before each and stops when it says no. Returns how many of
+  /// `boxes` (the first ones) were halved.
+  std::size_t splitEach(const std::vector<std::uint32_t>& boxes, const std::function<bool()>& keepGoing);
   static constexpr std::uint8_t kEveryAxis = 7, kThetaAxis = 4;
   /// The axes worth halving a box along: theta alone when its centre lies deeper in
   /// the obstacle than its half diagonal in (x, y) (its upper bound then comes from
@@ -134,11 +140,16 @@ class ClearanceBoxes {
   Pose2 meeting(std::uint32_t box, std::uint32_t next) const;
 
  private:
-  /// Adds a box, its centre's contact looked for about `expected` away first (a hint:
-  /// FreeSpace::clearance), its centre's location taken from `location` when given
-  /// (certified by the caller).
-  std::uint32_t addBox(const std::array<double, 3>& low, const std::array<double, 3>& high, double expected = HUGE_VAL,
-                       const std::optional<Location>& location = std::nullopt);
+  /// The box [low, high] with its centre's clearance (its contact looked for about
+  /// `expected` away first, a hint: FreeSpace::clearance; its location taken from
+  /// `location` when given, certified by the caller) and the bounds its own anchors
+  /// give. It reads the boxes only: threads may measure at once.
+  ClearanceBox measured(const std::array<double, 3>& low, const std::array<double, 3>& high, double expected,
+                        const std::optional<Location>& location) const;
+  /// A box's halves along `axes`, measured (not yet added).
+  std::vector<ClearanceBox> halves(std::uint32_t box, std::uint8_t axes) const;
+  /// Adds a box's halves in its place: neighbours and bounds from them.
+  void attach(std::uint32_t box, std::uint8_t axes, std::vector<ClearanceBox> halves);
   /// Where the centre of [low, high] lies when a free box's centre certifies it: its
   /// clearance exceeds the move between the centres (|dxy| + reach |dtheta|), so the
   /// motion between them stays free, in its cell (docs/design.md section 7).

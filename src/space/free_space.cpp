@@ -98,20 +98,43 @@ FreeSpace::FreeSpace(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
 FreeSpace::~FreeSpace() = default;
 
+FreeSpace::Impl::QueryTools::QueryTools(const Impl& impl)
+    : rays(impl.arrangement, algebra), boundary(impl.arrangement, algebra, [&impl](SubFaceId face) {
+        return impl.cells->cellOfShell(impl.arrangement.shells.shellOf(face)).has_value();
+      }) {}
+
+FreeSpace::Impl::BorrowedTools::~BorrowedTools() {
+  const std::lock_guard lock(impl_.idleToolsMutex);
+  impl_.idleTools.push_back(std::move(tools_));
+}
+
+FreeSpace::Impl::BorrowedTools FreeSpace::Impl::borrowQueryTools() const {
+  {
+    const std::lock_guard lock(idleToolsMutex);
+    if (!idleTools.empty()) {
+      std::unique_ptr<QueryTools> tools = std::move(idleTools.back());
+      idleTools.pop_back();
+      return BorrowedTools(*this, std::move(tools));
+    }
+  }
+  return BorrowedTools(*this, std::make_unique<QueryTools>(*this));
+}
+
 /// The first sub-face a ray from the configuration meets (toward -x, or +x when
 /// that ray passes exactly through a vertex of the slice), at its rational angle.
-RayHit FreeSpace::Impl::firstHit(const Pose2& pose, const AlgebraicAngle& at) const {
+RayHit FreeSpace::Impl::firstHit(const SliceRays& queryRays, const Pose2& pose, const AlgebraicAngle& at) const {
   // Exactly in the construction's coordinates.
   const Rational scale(meshes.scale), x = Rational(pose.x) * scale, y = Rational(pose.y) * scale;
   for (int direction : {-1, 1}) {
-    const RayHit hit = rays->cast(at, {x, y}, direction);
+    const RayHit hit = queryRays.cast(at, {x, y}, direction);
     if (hit.kind != RayHit::Kind::Degenerate) return hit;
   }
   throw std::runtime_error("FreeSpace::locate: both rays from the configuration pass through vertices of its slice");
 }
 
-Location FreeSpace::Impl::locationToward(const Pose2& pose, const std::array<Rational, 2>& from,
-                                         const AlgebraicAngle& at, const std::array<double, 2>& boundaryPoint) const {
+Location FreeSpace::Impl::locationToward(const SliceRays& queryRays, const Pose2& pose,
+                                         const std::array<Rational, 2>& from, const AlgebraicAngle& at,
+                                         const std::array<double, 2>& boundaryPoint) const {
   // The way's end may be any point (only its start is the configuration, exactly):
   // aimed in doubles about a thousandth of a radian beside the nearest point (often a
   // corner of the slice, where a ray through it cannot be decided in intervals) and
@@ -120,18 +143,20 @@ Location FreeSpace::Impl::locationToward(const Pose2& pose, const std::array<Rat
   const double towardX = boundaryPoint[0] - x, towardY = boundaryPoint[1] - y, skew = 1.0 / 1024;
   const std::array<double, 2> end{x + (towardX - skew * towardY) * 1.5, y + (towardY + skew * towardX) * 1.5};
   if (end[0] != x || end[1] != y) {
-    const RayHit hit = rays->castTo(at, from, {Rational(end[0]), Rational(end[1])});
+    const RayHit hit = queryRays.castTo(at, from, {Rational(end[0]), Rational(end[1])});
     if (hit.kind == RayHit::Kind::SubFace || hit.kind == RayHit::Kind::OnSegment) return locationOf(hit);
   }
-  return locationOf(firstHit(pose, at));
+  return locationOf(firstHit(queryRays, pose, at));
 }
 
 Location FreeSpace::locate(const Pose2& pose) const {
   const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
-  return impl_->locationOf(impl_->firstHit(pose, at));
+  const Impl::BorrowedTools tools = impl_->borrowQueryTools();
+  return impl_->locationOf(impl_->firstHit(tools->rays, pose, at));
 }
 
 const CellGraph& FreeSpace::cellGraph() const {
+  const std::lock_guard lock(impl_->firstUse);
   if (!impl_->graph) {
     if (impl_->progress) impl_->progress("cell graph");
     impl_->graph = std::make_unique<CellGraph>(
@@ -142,9 +167,11 @@ const CellGraph& FreeSpace::cellGraph() const {
 }
 
 const SliceFaces& FreeSpace::sliceFaces() const {
+  const CellGraph& graph = cellGraph();
+  const std::lock_guard lock(impl_->firstUse);
   if (!impl_->sliceFaces) {
-    impl_->sliceFaces = std::make_unique<SliceFaces>(impl_->arrangement, cellGraph(),
-                                                     [this](SubFaceId face) { return cellOfSubFace(face); });
+    impl_->sliceFaces =
+        std::make_unique<SliceFaces>(impl_->arrangement, graph, [this](SubFaceId face) { return cellOfSubFace(face); });
   }
   return *impl_->sliceFaces;
 }
@@ -154,9 +181,10 @@ std::optional<std::uint32_t> FreeSpace::nodeOf(const Pose2& pose) const { return
 NodeLocation FreeSpace::locateNode(const Pose2& pose) const {
   const CellGraph& graph = cellGraph();
   const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
-  const RayHit hit = impl_->firstHit(pose, at);
+  const Impl::BorrowedTools tools = impl_->borrowQueryTools();
+  const RayHit hit = impl_->firstHit(tools->rays, pose, at);
   NodeLocation answer{impl_->locationOf(hit), std::nullopt};
-  if (answer.location.free) answer.node = graph.nodeOf(hit, at, impl_->algebra);
+  if (answer.location.free) answer.node = graph.nodeOf(hit, at, tools->algebra);
   return answer;
 }
 
@@ -166,11 +194,14 @@ Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth, double e
   const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
   const double scale = impl_->meshes.scale;
   const Rational x = Rational(pose.x) * Rational(scale), y = Rational(pose.y) * Rational(scale);
-  const std::optional<BoundaryDistance> found = impl_->boundary->nearest(at, {x, y}, relativeWidth, expected * scale);
+  const Impl::BorrowedTools tools = impl_->borrowQueryTools();
+  const std::optional<BoundaryDistance> found = tools->boundary.nearest(at, {x, y}, relativeWidth, expected * scale);
   if (location) {
     result.location = *location;
+  } else if (found) {
+    result.location = impl_->locationToward(tools->rays, pose, {x, y}, at, found->nearest);
   } else {
-    result.location = found ? impl_->locationToward(pose, {x, y}, at, found->nearest) : locate(pose);
+    result.location = impl_->locationOf(impl_->firstHit(tools->rays, pose, at));
   }
   if (!found) {
     const double unbounded = result.location.free ? HUGE_VAL : -HUGE_VAL;

@@ -3,6 +3,7 @@
 // The parts of a FreeSpace, built (free_space.cpp) or read back (free_space_file.cpp).
 
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include "freespace/collision/exact_collision_checker.h"
@@ -14,13 +15,39 @@
 namespace freespace {
 
 struct FreeSpace::Impl {
+  /// What a query needs of its own: an AngleAlgebra memoizes and counts, so each
+  /// thread that queries at once borrows one (with the rays and boundary distances
+  /// over it) from a pool (borrowQueryTools).
+  struct QueryTools {
+    PredicateStatistics statistics;
+    AngleAlgebra algebra{statistics};
+    SliceRays rays;
+    SliceBoundaryDistance boundary;
+    QueryTools(const Impl& impl);
+  };
+  /// A QueryTools borrowed for one query: given back to the pool when it goes.
+  class BorrowedTools {
+   public:
+    BorrowedTools(const Impl& impl, std::unique_ptr<QueryTools> tools) : impl_(impl), tools_(std::move(tools)) {}
+    BorrowedTools(const BorrowedTools&) = delete;
+    BorrowedTools& operator=(const BorrowedTools&) = delete;
+    ~BorrowedTools();
+    QueryTools* operator->() const { return tools_.get(); }
+
+   private:
+    const Impl& impl_;
+    std::unique_ptr<QueryTools> tools_;
+  };
+  BorrowedTools borrowQueryTools() const;
+
   PredicateStatistics statistics;
+  /// The construction's (and the lazy graph's): one thread at a time.
   mutable AngleAlgebra algebra{statistics};
   std::vector<StageTime> stageTimes;
   PerturbedMeshes meshes;
   Arrangement arrangement;
+  /// Over `algebra`, for the construction and the graph.
   std::unique_ptr<SliceRays> rays;
-  std::unique_ptr<SliceBoundaryDistance> boundary;
   std::unique_ptr<ExactCollisionChecker> collision;
   std::vector<ShellSide> sides;
   std::unique_ptr<FreeCells> cells;
@@ -29,6 +56,11 @@ struct FreeSpace::Impl {
   std::unique_ptr<CellGraph> graph;
   /// Built on first use (FreeSpace::sliceFaces).
   std::unique_ptr<SliceFaces> sliceFaces;
+  /// Guards the graph's and the slice faces' making on first use.
+  mutable std::mutex firstUse;
+  /// The query tools not borrowed now.
+  mutable std::mutex idleToolsMutex;
+  mutable std::vector<std::unique_ptr<QueryTools>> idleTools;
   std::function<void(const std::string& stage)> progress;
   Cancellation cancellation;
 
@@ -36,23 +68,19 @@ struct FreeSpace::Impl {
   Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options);
   /// Empty: its parts are set by the reader of a saved free space, then finish().
   Impl() = default;
-  /// The rays, the boundary distances and the collision test over the parts (the
-  /// distances ask `cells`, set after this).
+  /// The rays and the collision test over the parts.
   void finish() {
     rays = std::make_unique<SliceRays>(arrangement, algebra);
-    boundary = std::make_unique<SliceBoundaryDistance>(arrangement, algebra, [this](SubFaceId face) {
-      return cells->cellOfShell(arrangement.shells.shellOf(face)).has_value();
-    });
     collision = std::make_unique<ExactCollisionChecker>(meshes.robot, meshes.world);
   }
 
-  RayHit firstHit(const Pose2& pose, const AlgebraicAngle& at) const;
+  RayHit firstHit(const SliceRays& queryRays, const Pose2& pose, const AlgebraicAngle& at) const;
   /// Where a configuration (`from`, exactly in the construction's coordinates, at
   /// angle `at`) lies, from the first sub-face met on a short way toward
   /// `boundaryPoint`, its nearest point of the boundary: far cheaper than the ray of
   /// firstHit, which decides when this way meets nothing or is degenerate.
-  Location locationToward(const Pose2& pose, const std::array<Rational, 2>& from, const AlgebraicAngle& at,
-                          const std::array<double, 2>& boundaryPoint) const;
+  Location locationToward(const SliceRays& queryRays, const Pose2& pose, const std::array<Rational, 2>& from,
+                          const AlgebraicAngle& at, const std::array<double, 2>& boundaryPoint) const;
 
   /// Free (with its cell) or blocked, from the first sub-face a ray meets: a point
   /// sees a sub-face's positive side across free space only if that side is free,

@@ -299,10 +299,7 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     uncertain.erase(std::unique(uncertain.begin(), uncertain.end()), uncertain.end());
     if (uncertain.empty()) break;
     // The limit is looked at between halvings too: a round can halve thousands.
-    for (std::uint32_t box : uncertain) {
-      if (secondsSince(began) > options.secondsLimit) break;
-      boxes.split(box, boxes.axesToSplit(box));
-    }
+    boxes.splitEach(uncertain, [&] { return secondsSince(began) <= options.secondsLimit; });
     ++path.refinements;
   }
   path.boxes = boxes.size();

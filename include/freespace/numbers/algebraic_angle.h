@@ -27,10 +27,10 @@ namespace detail {
 template <class T>
 class RootMemo {
  public:
-  const T* find(int chart, int index) const {
+  std::optional<T> find(int chart, int index) const {
     const auto& values = values_[chart];
-    if (index < 0 || static_cast<std::size_t>(index) >= values.size() || !values[index]) return nullptr;
-    return &*values[index];
+    if (index < 0 || static_cast<std::size_t>(index) >= values.size()) return std::nullopt;
+    return values[index];
   }
   void remember(int chart, int index, const T& value) {
     auto& values = values_[chart];
@@ -50,8 +50,9 @@ class RootMemo {
 /// double-double ones (the formula evaluated in DoubleDoubleInterval, about 106
 /// bits), their rounding outward to doubles (tight coefficients: an ulp or two wide
 /// instead of the tens that double interval arithmetic accumulates), their MPFI
-/// enclosure for bisection past doubles, and exact rational ones. Use from one
-/// thread.
+/// enclosure for bisection past doubles, and exact rational ones. Threads may share
+/// a function: what it makes or remembers on first use is made under one lock (its
+/// values never change after), and the memos are read and written under it.
 class AngleFunction {
  public:
   /// Names a function up to a nonzero constant factor: two functions with the same
@@ -108,7 +109,7 @@ class AngleFunction {
 
   /// The certified double-double enclosure of the chart's root with the given index
   /// (its place among the chart's roots), once one was found (rememberRoot).
-  const DoubleDoubleInterval* rememberedRoot(int chart, int index) const;
+  std::optional<DoubleDoubleInterval> rememberedRoot(int chart, int index) const;
   void rememberRoot(int chart, int index, const DoubleDoubleInterval& root) const;
 
   /// The narrowest double enclosure found so far of the chart's root with the given
@@ -118,7 +119,7 @@ class AngleFunction {
     double lower, upper;
     bool tight;
   };
-  const NarrowEnclosure* rememberedEnclosure(int chart, int index) const;
+  std::optional<NarrowEnclosure> rememberedEnclosure(int chart, int index) const;
   void rememberEnclosure(int chart, int index, const NarrowEnclosure& enclosure) const;
 
  private:

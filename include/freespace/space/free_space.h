@@ -75,7 +75,9 @@ double peakMemoryMegabytes();
 /// The exact free space of a robot translating and turning among a fixed
 /// environment (docs/design.md sections 3 to 6), built once from the two meshes: the
 /// perturbed meshes, the patches and their arrangement, its shells classified by
-/// exact collision tests and nested into free cells.
+/// exact collision tests and nested into free cells. Its queries (locate, clearance,
+/// nodeOf, locateNode, cellGraph, sliceFaces and the read-only accessors) may be
+/// asked from several threads at once; algebra() may not.
 class FreeSpace {
  public:
   FreeSpace(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options = {});
@@ -150,7 +152,8 @@ class FreeSpace {
   std::optional<std::uint32_t> cellOfShell(std::uint32_t shell) const;
   /// The free cell a sub-face bounds (its positive side), if it bounds one.
   std::optional<std::uint32_t> cellOfSubFace(SubFaceId face) const;
-  /// The exact predicates the structure was built with (for reading it further).
+  /// The exact predicates the structure was built with (for reading it further):
+  /// they memoize and count, so one thread at a time (queries borrow their own).
   AngleAlgebra& algebra() const;
   /// The perturbed meshes, in the construction's coordinates (the input's times their scale).
   const PerturbedMeshes& meshes() const;
