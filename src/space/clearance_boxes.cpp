@@ -1,14 +1,12 @@
 #include "clearance_boxes.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <future>
 #include <optional>
 #include <queue>
-#include <thread>
 
 #include "contact_point.h"
+#include "every_core.h"
 #include "freespace/geometry/patch_segment.h"
 #include "freespace/numbers/angle_reduction.h"
 #include "freespace/numbers/half_angle.h"
@@ -19,29 +17,6 @@
 namespace freespace {
 
 namespace {
-
-/// Runs work(k) for k = 0 to count - 1 on every core (a thread each, the caller's
-/// among them), k handed out in order, each while keepGoing() says so; an exception
-/// thrown by work stops them all and is thrown again here.
-template <class Work>
-void onEveryCore(std::size_t count, const std::function<bool()>& keepGoing, const Work& work) {
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> failed{false};
-  const auto run = [&] {
-    try {
-      for (std::size_t k = next++; k < count && !failed && keepGoing(); k = next++) work(k);
-    } catch (...) {
-      failed = true;
-      throw;
-    }
-  };
-  std::vector<std::future<void>> helpers;
-  for (unsigned helper = 1; helper < std::max(1u, std::thread::hardware_concurrency()); ++helper) {
-    helpers.push_back(std::async(std::launch::async, run));
-  }
-  run();
-  for (std::future<void>& helper : helpers) helper.get();
-}
 
 /// The turn between two angles of [-pi, pi] the shorter way round (|remainder(a - b,
 /// 2 pi)| within rounding, which the bounds' slack covers; std::remainder in general).

@@ -256,8 +256,6 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     std::future<void> searchFromGoal = std::async(
         std::launch::async, [&] { boxes.widestUpperFrom(to, from, options.clearanceRatio, cap, goalSearch); });
     const std::vector<double>& fromStart = boxes.widestUpperFrom(from, to, options.clearanceRatio, cap, startSearch);
-    searchFromGoal.get();
-    const std::vector<double>& fromGoal = goalSearch.widest;
     if (fromStart[to] == -HUGE_VAL) {
       path.status = PathStatus::infeasible;
       path.proof = "no path of free cell " + std::to_string(path.startCell) + " stays inside the volume";
@@ -265,7 +263,10 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     }
     path.passage.upper = std::min({fromStart[to], passageStartUpper, passageEndUpper});
     const double target = options.clearanceRatio * path.passage.upper;
+    // The chain by lower bounds needs the start's search alone: it runs beside the goal's.
     lowerChain = boxes.widestChain(from, to, ClearanceBoxes::Bound::Lower, target, path.startCell);
+    searchFromGoal.get();
+    const std::vector<double>& fromGoal = goalSearch.widest;
     if (lowerChain.bottleneck > 0 && path.secondsToFirstPath == 0) path.secondsToFirstPath = secondsSince(began);
     path.converged = std::max(lowerChain.bottleneck, routedLower) >= target;
     if (path.converged || secondsSince(began) > options.secondsLimit || boxes.size() > options.boxLimit) break;

@@ -20,9 +20,9 @@ struct Passage {
 
 /// Raises the certified clearance of each motion towards its least (parts halved
 /// until each part's bound is within `slack` of its ends' clearance: freedom alone
-/// needs far fewer), the tightest motions first, within a quarter of the time left
-/// (each may take half of what is left of that); a motion whose tighter check does
-/// not finish keeps its bound.
+/// needs far fewer), the tightest motions first (on every core), within a quarter of
+/// the time left (each may take half of what is left of that); a motion whose tighter
+/// check does not finish keeps its bound.
 void tightenBounds(const MotionChecker& checker, Passage& passage, double slack,
                    std::chrono::steady_clock::time_point deadline, QueryRate& rate,
                    const Cancellation& cancellation = {});

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <optional>
 
 #include "contact_point.h"
+#include "every_core.h"
 #include "freespace/numbers/angle_reduction.h"
 
 namespace freespace {
@@ -196,14 +198,25 @@ std::optional<Passage> certified(const MotionChecker& checker, std::vector<Pushe
                                  Clock::time_point deadline, QueryRate& rate) {
   Passage passage;
   for (const PushedWaypoint& waypoint : waypoints) passage.waypoints.push_back(waypoint.pose);
+  // The motions whose ends moved, on every core, until one is not certified free.
+  std::vector<std::size_t> unknown;
   for (std::size_t k = 0; k + 1 < waypoints.size(); ++k) {
-    if (!waypoints[k].motionBound) {
-      const double secondsLeft = std::chrono::duration<double>(deadline - Clock::now()).count();
-      if (secondsLeft <= 0) return std::nullopt;
-      const MotionCheck check = rate.check(checker, waypoints[k].pose, waypoints[k + 1].pose, 0.01, secondsLeft);
-      if (!check.free) return std::nullopt;
+    if (!waypoints[k].motionBound) unknown.push_back(k);
+  }
+  std::atomic<bool> allFree{true};
+  const auto going = [&] { return allFree && Clock::now() < deadline; };
+  onEveryCore(unknown.size(), going, [&](std::size_t at) {
+    const std::size_t k = unknown[at];
+    const double secondsLeft = std::chrono::duration<double>(deadline - Clock::now()).count();
+    const MotionCheck check = rate.check(checker, waypoints[k].pose, waypoints[k + 1].pose, 0.01, secondsLeft);
+    if (check.free) {
       waypoints[k].motionBound = check.minClearance;
+    } else {
+      allFree = false;
     }
+  });
+  for (std::size_t k = 0; k + 1 < waypoints.size(); ++k) {
+    if (!waypoints[k].motionBound) return std::nullopt;
     passage.motionClearance.push_back(*waypoints[k].motionBound);
     passage.lower = std::min(passage.lower, *waypoints[k].motionBound);
   }

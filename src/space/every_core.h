@@ -1,0 +1,37 @@
+#pragma once
+
+// Work spread over the machine's cores (docs/design.md section 7, threads).
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <functional>
+#include <future>
+#include <thread>
+#include <vector>
+
+namespace freespace {
+
+/// Runs work(k) for k = 0 to count - 1 on every core (a thread each, the caller's
+/// among them), k handed out in order, each while keepGoing() says so; an exception
+/// thrown by work stops them all and is thrown again here.
+template <class Work>
+void onEveryCore(std::size_t count, const std::function<bool()>& keepGoing, const Work& work) {
+  std::atomic<std::size_t> next{0};
+  std::atomic<bool> failed{false};
+  const auto run = [&] {
+    try {
+      for (std::size_t k = next++; k < count && !failed && keepGoing(); k = next++) work(k);
+    } catch (...) {
+      failed = true;
+      throw;
+    }
+  };
+  std::vector<std::future<void>> helpers;
+  const std::size_t threads = std::min<std::size_t>(count, std::max(1u, std::thread::hardware_concurrency()));
+  for (std::size_t helper = 1; helper < threads; ++helper) helpers.push_back(std::async(std::launch::async, run));
+  run();
+  for (std::future<void>& helper : helpers) helper.get();
+}
+
+}  // namespace freespace
