@@ -285,6 +285,20 @@ TEST_P(BundledClearanceBoxes, HalvingAtOnceMatchesHalvingInTurn) {
   EXPECT_LE(halved, 40u);
   EXPECT_GE(halved, 1u);
   for (std::size_t k = 0; k < leaves.size(); ++k) EXPECT_EQ(atOnce.box(leaves[k]).split, k < halved) << k;
+  // Cancelled in the middle (keepGoing throws): nothing halved, the exception passed on.
+  std::vector<std::uint32_t> rest;
+  for (std::uint32_t box = 0; box < atOnce.size() && rest.size() < 100; ++box) {
+    if (!atOnce.box(box).split) rest.push_back(box);
+  }
+  const std::size_t before = atOnce.size();
+  std::atomic<int> polled{0};
+  const auto cancelledAtTwenty = [&] {
+    if (++polled > 20) throw Cancelled();
+    return true;
+  };
+  EXPECT_THROW(atOnce.splitEach(rest, cancelledAtTwenty), Cancelled);
+  EXPECT_EQ(atOnce.size(), before);
+  for (std::uint32_t box : rest) EXPECT_FALSE(atOnce.box(box).split) << box;
 }
 
 /// Angles (their tangent's chart and t) strictly inside a slab: just after its start,

@@ -299,8 +299,12 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     std::sort(uncertain.begin(), uncertain.end());
     uncertain.erase(std::unique(uncertain.begin(), uncertain.end()), uncertain.end());
     if (uncertain.empty()) break;
-    // The limit is looked at between halvings too: a round can halve thousands.
-    boxes.splitEach(uncertain, [&] { return secondsSince(began) <= options.secondsLimit; });
+    // The limit and cancellation are looked at between halvings too: a round can halve
+    // thousands.
+    boxes.splitEach(uncertain, [&] {
+      options.cancellation.check();
+      return secondsSince(began) <= options.secondsLimit;
+    });
     ++path.refinements;
   }
   path.boxes = boxes.size();
