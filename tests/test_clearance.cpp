@@ -9,12 +9,14 @@
 #include <cmath>
 #include <future>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "bundled_problem.h"
 #include "clearance_oracle.h"
 #include "random_configurations.h"
+#include "temp_dir.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/scenes/scene_generator.h"
 #include "freespace/space/free_space.h"
@@ -88,46 +90,65 @@ TEST_P(BundledClearance, PlacesConfigurationsAsLocateDoes) {
   EXPECT_LT(free, 200);
 }
 
-// Queries share the free space's functions (and their memos, made on first use) and
-// borrow their own predicates: four threads asking at once, each in its own order,
-// from a space nobody asked before, get what one thread gets asking alone afterwards.
-TEST_P(BundledClearance, SeveralThreadsGetWhatOneGets) {
-  const LoadedProblem problem = loadBundledProblem(GetParam());
-  const FreeSpace space(problem.robot, problem.world);
-  const std::vector<Pose2> poses = randomPoses(space, 7, 160);
-  struct Answer {
-    Clearance clearance;
-    NodeLocation node;
-  };
-  const auto answer = [&](const Pose2& pose) { return Answer{space.clearance(pose), space.locateNode(pose)}; };
+/// A query's answers compared between threads.
+struct ThreadedAnswer {
+  Clearance clearance;
+  NodeLocation node;
+};
+
+ThreadedAnswer answerOf(const FreeSpace& space, const Pose2& pose) {
+  return {space.clearance(pose), space.locateNode(pose)};
+}
+
+/// Four threads asking `space` at once, each in its own order; per configuration, what
+/// each thread got.
+std::vector<std::vector<ThreadedAnswer>> askedTogether(const FreeSpace& space, const std::vector<Pose2>& poses) {
   constexpr std::size_t kThreads = 4;
-  std::vector<std::future<std::vector<Answer>>> threads;
+  std::vector<std::future<std::vector<ThreadedAnswer>>> threads;
   for (std::size_t thread = 0; thread < kThreads; ++thread) {
     threads.push_back(std::async(std::launch::async, [&, thread] {
-      std::vector<Answer> answers(poses.size());
+      std::vector<ThreadedAnswer> answers(poses.size());
       for (std::size_t k = 0; k < poses.size(); ++k) {
         const std::size_t at = (k + thread * poses.size() / kThreads) % poses.size();
-        answers[at] = answer(poses[at]);
+        answers[at] = answerOf(space, poses[at]);
       }
       return answers;
     }));
   }
-  std::vector<std::vector<Answer>> together;
+  std::vector<std::vector<ThreadedAnswer>> together;
   for (auto& thread : threads) together.push_back(thread.get());
+  return together;
+}
+
+void expectSameAnswers(const ThreadedAnswer& other, const ThreadedAnswer& alone, std::size_t k) {
+  EXPECT_EQ(other.clearance.lower, alone.clearance.lower) << "configuration " << k;
+  EXPECT_EQ(other.clearance.upper, alone.clearance.upper) << "configuration " << k;
+  EXPECT_EQ(other.clearance.nearest, alone.clearance.nearest) << "configuration " << k;
+  EXPECT_EQ(other.clearance.location.free, alone.clearance.location.free) << "configuration " << k;
+  EXPECT_EQ(other.clearance.location.cell, alone.clearance.location.cell) << "configuration " << k;
+  EXPECT_EQ(other.node.location.free, alone.node.location.free) << "configuration " << k;
+  EXPECT_EQ(other.node.node, alone.node.node) << "configuration " << k;
+}
+
+// Queries share the free space's functions (and their memos, made on first use) and
+// borrow their own predicates: four threads asking at once, each in its own order, get
+// what one thread gets asking alone afterwards; so do four threads asking the space read
+// back from a file first (its exact coefficients decoded on first use).
+TEST_P(BundledClearance, SeveralThreadsGetWhatOneGets) {
+  const LoadedProblem problem = loadBundledProblem(GetParam());
+  const FreeSpace space(problem.robot, problem.world);
+  TempDir dir;
+  space.save(dir.file("space.fspace"));
+  const std::unique_ptr<FreeSpace> read = FreeSpace::load(dir.file("space.fspace"));
+  const std::vector<Pose2> poses = randomPoses(space, 7, 160);
+  const std::vector<std::vector<ThreadedAnswer>> together = askedTogether(space, poses);
+  const std::vector<std::vector<ThreadedAnswer>> readTogether = askedTogether(*read, poses);
   int free = 0;
   for (std::size_t k = 0; k < poses.size(); ++k) {
-    const Answer alone = answer(poses[k]);
+    const ThreadedAnswer alone = answerOf(space, poses[k]);
     free += alone.node.location.free;
-    for (const std::vector<Answer>& answers : together) {
-      const Answer& other = answers[k];
-      ASSERT_EQ(other.clearance.lower, alone.clearance.lower) << "configuration " << k;
-      EXPECT_EQ(other.clearance.upper, alone.clearance.upper) << "configuration " << k;
-      EXPECT_EQ(other.clearance.nearest, alone.clearance.nearest) << "configuration " << k;
-      EXPECT_EQ(other.clearance.location.free, alone.clearance.location.free) << "configuration " << k;
-      EXPECT_EQ(other.clearance.location.cell, alone.clearance.location.cell) << "configuration " << k;
-      EXPECT_EQ(other.node.location.free, alone.node.location.free) << "configuration " << k;
-      EXPECT_EQ(other.node.node, alone.node.node) << "configuration " << k;
-    }
+    for (const std::vector<ThreadedAnswer>& answers : together) expectSameAnswers(answers[k], alone, k);
+    for (const std::vector<ThreadedAnswer>& answers : readTogether) expectSameAnswers(answers[k], alone, k);
   }
   EXPECT_GT(free, 0);
 }

@@ -234,7 +234,8 @@ namespace {
 /// Guards what AngleFunctions make or remember on first use (their escalation and
 /// memos): the functions of a free space are shared by the threads that query it.
 /// Recursive: a value made on first use may need another (the tight coefficients
-/// need the double-double ones). Rarely taken but for the memos of narrow enclosures.
+/// need the double-double ones). Taken on every use of the values past double
+/// intervals and of the memos (about 2% of a path query's time on two threads).
 std::recursive_mutex& firstUseMutex() {
   static std::recursive_mutex mutex;
   return mutex;
@@ -280,6 +281,9 @@ std::optional<AngleFunction::NarrowEnclosure> AngleFunction::rememberedEnclosure
 
 void AngleFunction::rememberEnclosure(int chart, int index, const NarrowEnclosure& enclosure) const {
   const std::lock_guard lock(firstUseMutex());
+  // Checked and written under one lock: another thread may be remembering a narrower one.
+  const std::optional<NarrowEnclosure> known = narrowEnclosures_.find(chart, index);
+  if (known && !(enclosure.upper - enclosure.lower < known->upper - known->lower)) return;
   narrowEnclosures_.remember(chart, index, enclosure);
 }
 
@@ -478,8 +482,6 @@ void AlgebraicAngle::adoptRememberedEnclosure() {
 
 void AlgebraicAngle::rememberEnclosure() const {
   if (!function_ || index_ < 0) return;
-  const std::optional<AngleFunction::NarrowEnclosure> known = function_->rememberedEnclosure(chart_, index_);
-  if (known && !(upper_ - lower_ < known->upper - known->lower)) return;
   function_->rememberEnclosure(chart_, index_, {lower_, upper_, tight_});
 }
 

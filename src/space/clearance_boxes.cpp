@@ -148,6 +148,9 @@ slices::SliceIn<Interval> sliceOver(double low, double high) {
 ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 2>& low,
                                const std::array<double, 2>& high, double reach, int across)
     : space_(space), reach_(reach), freeSlabs_(space.arrangement().patches.size()) {
+  // Its own predicates: the free space's other queries may run meanwhile.
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
   const Arrangement& arrangement = space.arrangement();
   for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
     const PatchSubdivision& subdivision = arrangement.subdivisions[patch];
@@ -161,7 +164,7 @@ ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 
       const auto first = std::find_if(faces.begin(), faces.end(), boundsFree);
       if (first == faces.end()) continue;
       const auto last = std::find_if(faces.rbegin(), faces.rend(), boundsFree);
-      freeSlabs_[patch].push_back({arcOf(subdivision.slabs[index], space.algebra()), index,
+      freeSlabs_[patch].push_back({arcOf(subdivision.slabs[index], algebra), index,
                                    static_cast<std::uint32_t>(first - faces.begin()),
                                    static_cast<std::uint32_t>(faces.rend() - last - 1)});
     }

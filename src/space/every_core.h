@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstddef>
 #include <functional>
+#include <system_error>
 #include <future>
 #include <thread>
 #include <vector>
@@ -29,7 +30,11 @@ void onEveryCore(std::size_t count, const std::function<bool()>& keepGoing, cons
   };
   std::vector<std::future<void>> helpers;
   const std::size_t threads = std::min<std::size_t>(count, std::max(1u, std::thread::hardware_concurrency()));
-  for (std::size_t helper = 1; helper < threads; ++helper) helpers.push_back(std::async(std::launch::async, run));
+  try {
+    for (std::size_t helper = 1; helper < threads; ++helper) helpers.push_back(std::async(std::launch::async, run));
+  } catch (const std::system_error&) {
+    // No more threads to be had: those started and this one do it all.
+  }
   run();
   for (std::future<void>& helper : helpers) helper.get();
 }

@@ -92,7 +92,7 @@ class RouteWalker {
       if (faces_.size() >= kFacesKept) faces_.clear();
       std::optional<SliceFace> face;
       try {
-        face = sliceFaces_.faceOf(node, AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), space_.algebra());
+        face = sliceFaces_.faceOf(node, AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), algebra_);
       } catch (const std::invalid_argument&) {
         // A critical angle: no faces.
       }
@@ -537,6 +537,9 @@ class RouteWalker {
   std::vector<std::optional<double>> certified_;  // per motion between waypoints
   int steps_ = 0;
   mutable std::map<std::pair<double, std::uint32_t>, std::optional<SliceFace>> faces_;  // by angle and node
+  // The walk's own predicates (the free space's other queries may run meanwhile).
+  mutable PredicateStatistics statistics_;
+  mutable AngleAlgebra algebra_{statistics_};
 };
 
 }  // namespace

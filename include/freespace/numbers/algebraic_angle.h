@@ -51,8 +51,9 @@ class RootMemo {
 /// bits), their rounding outward to doubles (tight coefficients: an ulp or two wide
 /// instead of the tens that double interval arithmetic accumulates), their MPFI
 /// enclosure for bisection past doubles, and exact rational ones. Threads may share
-/// a function: what it makes or remembers on first use is made under one lock (its
-/// values never change after), and the memos are read and written under it.
+/// a function: what it makes on first use is made under one lock (and never changes
+/// after), and its memos are read and written under it (a remembered enclosure only
+/// narrows).
 class AngleFunction {
  public:
   /// Names a function up to a nonzero constant factor: two functions with the same
@@ -120,6 +121,7 @@ class AngleFunction {
     bool tight;
   };
   std::optional<NarrowEnclosure> rememberedEnclosure(int chart, int index) const;
+  /// Kept only when narrower than the one remembered.
   void rememberEnclosure(int chart, int index, const NarrowEnclosure& enclosure) const;
 
  private:

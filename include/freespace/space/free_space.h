@@ -76,8 +76,11 @@ double peakMemoryMegabytes();
 /// environment (docs/design.md sections 3 to 6), built once from the two meshes: the
 /// perturbed meshes, the patches and their arrangement, its shells classified by
 /// exact collision tests and nested into free cells. Its queries (locate, clearance,
-/// nodeOf, locateNode, cellGraph, sliceFaces and the read-only accessors) may be
-/// asked from several threads at once; algebra() may not.
+/// nodeOf, locateNode, cellGraph, sliceFaces and the accessors of its parts) may be
+/// asked from several threads at once, each with its own predicates; algebra() and
+/// statistics() are the construction's, which also build the graph on first use:
+/// one thread, not while the graph is first built (SliceFaces and CellGraph queries
+/// take an AngleAlgebra: one per thread).
 class FreeSpace {
  public:
   FreeSpace(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options = {});
@@ -158,6 +161,8 @@ class FreeSpace {
   /// The perturbed meshes, in the construction's coordinates (the input's times their scale).
   const PerturbedMeshes& meshes() const;
   const std::vector<StageTime>& stageTimes() const;
+  /// The construction's predicate counts (and the graph's, once built); queries
+  /// count in their own.
   const PredicateStatistics& statistics() const;
 
  private:
