@@ -244,7 +244,6 @@ std::recursive_mutex& firstUseMutex() {
 }  // namespace
 
 AngleFunction::Escalation& AngleFunction::escalation() const {
-  const std::lock_guard lock(firstUseMutex());
   if (!escalation_) escalation_ = std::make_unique<Escalation>();
   return *escalation_;
 }

@@ -6,8 +6,8 @@
 #include <atomic>
 #include <cstddef>
 #include <functional>
-#include <system_error>
 #include <future>
+#include <system_error>
 #include <thread>
 #include <vector>
 

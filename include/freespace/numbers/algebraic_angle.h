@@ -158,6 +158,7 @@ class AngleFunction {
     std::array<std::optional<RationalPolynomial>, 2> squareFree;
     detail::RootMemo<DoubleDoubleInterval> doubleDoubleRoots;
   };
+  /// Made on first use; its callers hold the lock on first-use values.
   Escalation& escalation() const;
 
   mutable std::unique_ptr<Escalation> escalation_;
