@@ -196,6 +196,11 @@ bool FaceTriangulation::contains(const std::array<double, 2>& point) const {
   return impl_->inFace(impl_->triangulation.locate(pointOf(point)));
 }
 
+bool FaceTriangulation::boxHolds(const std::array<double, 2>& point) const {
+  const Kernel::Point_2 &low = impl_->boxCorners.front(), &high = impl_->boxCorners.back();
+  return low.x() < point[0] && point[0] < high.x() && low.y() < point[1] && point[1] < high.y();
+}
+
 std::optional<std::vector<std::array<double, 2>>> pathInFace(const SliceFace& face, const std::array<double, 2>& from,
                                                              const std::array<double, 2>& to) {
   if (face.loops.empty()) return std::vector<std::array<double, 2>>{from, to};

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <set>
 #include <stdexcept>
 
@@ -11,6 +12,7 @@
 #include "freespace/space/face_path.h"
 #include "freespace/space/motion_checker.h"
 #include "freespace/topology/slice_faces.h"
+#include "lazy_ranking.h"
 
 namespace freespace {
 
@@ -27,6 +29,8 @@ constexpr double kLeastTravelShare = 1e-4;
 constexpr std::size_t kTurnQueryLimit = 4096;
 /// At most this many faces kept for reuse.
 constexpr std::size_t kFacesKept = 256;
+/// At most this many faces' triangulations kept for reuse.
+constexpr std::size_t kTriangulationsKept = 64;
 /// The relative width of the certified clearances the walk asks for.
 constexpr double kWidth = MotionChecker::kClearanceWidth;
 
@@ -86,18 +90,36 @@ class RouteWalker {
   /// The node's face in the slice at theta (none at a critical angle, or outside the
   /// node's angles). Faces are kept (up to kFacesKept): a travel estimates an angle's
   /// translation, then makes it.
-  std::optional<SliceFace> faceAt(std::uint32_t node, double theta) const {
+  std::shared_ptr<const SliceFace> faceAt(std::uint32_t node, double theta) const {
     auto kept = faces_.find({theta, node});
     if (kept == faces_.end()) {
       if (faces_.size() >= kFacesKept) faces_.clear();
-      std::optional<SliceFace> face;
+      std::shared_ptr<const SliceFace> face;
       try {
-        face = sliceFaces_.faceOf(node, AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), algebra_);
+        std::optional<SliceFace> made =
+            sliceFaces_.faceOf(node, AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), algebra_);
+        if (made) face = std::make_shared<const SliceFace>(std::move(*made));
       } catch (const std::invalid_argument&) {
         // A critical angle: no faces.
       }
       kept = faces_.emplace(std::pair(theta, node), std::move(face)).first;
     }
+    return kept->second;
+  }
+
+  /// The triangulation of the node's face at theta (faceAt's), with `points` inside
+  /// its box; kept (up to kTriangulationsKept) and made again only around points
+  /// outside the kept one's box.
+  std::shared_ptr<const FaceTriangulation> triangulationAt(std::uint32_t node, double theta, const SliceFace& face,
+                                                           const std::vector<std::array<double, 2>>& points) const {
+    auto kept = triangulations_.find({theta, node});
+    if (kept == triangulations_.end()) {
+      if (triangulations_.size() >= kTriangulationsKept) triangulations_.clear();
+      kept = triangulations_.emplace(std::pair(theta, node), nullptr).first;
+    }
+    const auto boxed = [&](const std::array<double, 2>& point) { return kept->second->boxHolds(point); };
+    if (!kept->second || !std::all_of(points.begin(), points.end(), boxed))
+      kept->second = std::make_shared<const FaceTriangulation>(face, points);
     return kept->second;
   }
 
@@ -153,7 +175,7 @@ class RouteWalker {
   /// bound in theta); none when they do not certify it.
   std::optional<double> certifiedTurn(std::uint32_t node, const Pose2& from, const Pose2& to) const {
     const auto clearanceAt = [&](const Pose2& pose) -> std::optional<double> {
-      const std::optional<SliceFace> face = faceAt(node, pose.theta);
+      const std::shared_ptr<const SliceFace> face = faceAt(node, pose.theta);
       if (!face) return std::nullopt;
       const std::optional<double> at = certifiedClearanceAlong(*face, scaled(pose), scaled(pose));
       if (!at) return std::nullopt;
@@ -208,9 +230,9 @@ class RouteWalker {
   /// holding the current point (a short move). Returns the clearance where it leaves
   /// the robot, estimated from the face's loops (none when the point lies outside it).
   std::optional<double> recentre(std::uint32_t node) {
-    const std::optional<SliceFace> face = faceAt(node, current().theta);
+    const std::shared_ptr<const SliceFace> face = faceAt(node, current().theta);
     if (!face || face->loops.empty()) return std::nullopt;
-    const FaceTriangulation triangulation(*face, {scaled(current())});
+    const FaceTriangulation& triangulation = *triangulationAt(node, current().theta, *face, {scaled(current())});
     const std::optional<std::array<double, 2>> middle = triangulation.incentreAt(scaled(current()));
     if (!middle) return std::nullopt;  // outside the face
     const double here = estimatedClearance(*face, current());
@@ -242,10 +264,19 @@ class RouteWalker {
     const double turn = turnInside(graph_.nodes()[node], from, to);
     const int steps = static_cast<int>(std::ceil(std::fabs(turn) / (M_PI / 8)));
     for (int k = 1; k < steps; ++k) {
-      const std::optional<SliceFace> face = faceAt(node, reducedAngle(from + turn * k / steps));
+      const std::shared_ptr<const SliceFace> face = faceAt(node, reducedAngle(from + turn * k / steps));
       if (face && !liesInside(*face, point)) return false;
     }
     return true;
+  }
+
+  /// The clearance at the current point, estimated from the node's face at its angle
+  /// (the exact one at a critical angle, where the node has no face).
+  double clearanceHere(std::uint32_t node) const {
+    if (const std::shared_ptr<const SliceFace> face = faceAt(node, current().theta)) {
+      if (liesInside(*face, scaled(current()))) return estimatedClearance(*face, current());
+    }
+    return space_.clearance(current(), kWidth).lower;
   }
 
   /// Turns to `theta` inside the node by steps of half the current clearance's
@@ -258,7 +289,7 @@ class RouteWalker {
       if (++steps_ > kMostSteps || std::chrono::steady_clock::now() > deadline_) return false;
       const double remaining = turnInside(graphNode, current().theta, theta);
       if (remaining == 0) return true;
-      const double clearance = estimate ? *estimate : space_.clearance(current(), kWidth).lower;
+      const double clearance = estimate ? *estimate : clearanceHere(node);
       if (!(clearance > 0)) return false;
       const double step = 0.5 * clearance / checker_.reach();
       if (step >= std::fabs(remaining)) {
@@ -274,13 +305,19 @@ class RouteWalker {
 
   /// Turns at the current point to `theta` inside the node, in steps shorter than a
   /// quarter turn, each certified free (no recentring: the point is where a crossing
-  /// or the goal needs it).
+  /// or the goal needs it): a single step by the faces at its ends (certifiedTurn)
+  /// when they can, otherwise by the motion checker.
   bool turnInPlace(std::uint32_t node, double theta) {
     const double turn = turnInside(graph_.nodes()[node], current().theta, theta);
     const int steps = static_cast<int>(std::ceil(std::fabs(turn) / (M_PI / 2) * (1 + 1e-9)));
     const Pose2 from = current();
     for (int k = 1; k <= steps; ++k) {
       const Pose2 next{from.x, from.y, k == steps ? theta : reducedAngle(from.theta + turn * k / steps)};
+      const std::optional<double> certified = steps == 1 ? certifiedTurn(node, current(), next) : std::nullopt;
+      if (certified) {
+        append(next, certified);
+        continue;
+      }
       const MotionCheck check = checker_.check(current(), next, 1, kTurnQueryLimit);
       if (!check.free) return false;
       append(next, check.minClearance);
@@ -313,12 +350,12 @@ class RouteWalker {
   /// and the least clearance at its corners and the middles of its legs (an estimate,
   /// not certified); none when the face does not hold both.
   std::optional<double> estimatedTravel(std::uint32_t node, const std::array<double, 2>& point, double theta) const {
-    const std::optional<SliceFace> face = faceAt(node, theta);
+    const std::shared_ptr<const SliceFace> face = faceAt(node, theta);
     if (!face) return std::nullopt;
     const std::array<double, 2> here = scaled(current());
     const std::optional<std::vector<std::array<double, 2>>> way =
         face->loops.empty() ? std::optional<std::vector<std::array<double, 2>>>({here, point})
-                            : FaceTriangulation(*face, {here, point}).path(here, point);
+                            : triangulationAt(node, theta, *face, {here, point})->path(here, point);
     if (!way) return std::nullopt;
     double least = estimatedClearance(*face, way->front());
     for (std::size_t k = 1; k < way->size(); ++k) {
@@ -329,22 +366,33 @@ class RouteWalker {
     return least;
   }
 
+  /// An upper bound on estimatedTravel at theta (the estimated clearances at the
+  /// travel's ends, without its way); none where the node has no face.
+  std::optional<double> travelBound(std::uint32_t node, const std::array<double, 2>& point, double theta) const {
+    const std::shared_ptr<const SliceFace> face = faceAt(node, theta);
+    if (!face) return std::nullopt;
+    return std::min(estimatedClearance(*face, scaled(current())), estimatedClearance(*face, point));
+  }
+
   /// Travels inside the node to `point` (construction coordinates), arriving at angle
   /// `arrival`: turns to the angle of its run where the translation there is roomiest
   /// (a passage a node opens at one of its critical angles is narrowest next to it),
   /// translates, and turns back at `point`; the next roomiest angle when a step fails;
-  /// only angles whose estimate exceeds `leastEstimate`.
+  /// only angles whose estimate exceeds `leastEstimate`. Estimates are made only as
+  /// the ranking needs them (LazyRanking).
   bool travelTo(std::uint32_t node, const std::array<double, 2>& point, double arrival, double leastEstimate = 0) {
-    std::vector<std::pair<double, double>> ranked;  // estimated clearance, angle
     std::vector<double> candidates = travelAngleCandidates(node, arrival);
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    std::vector<std::pair<double, double>> bounded;  // angle, bound on its estimate
     for (double theta : candidates) {
       if (std::chrono::steady_clock::now() > deadline_) return false;
-      if (const std::optional<double> estimate = estimatedTravel(node, point, theta))
-        ranked.push_back({*estimate, theta});
+      if (const std::optional<double> bound = travelBound(node, point, theta)) bounded.push_back({theta, *bound});
     }
-    std::stable_sort(ranked.begin(), ranked.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    LazyRanking ranking(bounded, leastEstimate);
+    const auto estimate = [&](double theta) {
+      return std::chrono::steady_clock::now() > deadline_ ? std::nullopt : estimatedTravel(node, point, theta);
+    };
     const std::size_t mark = waypoints_.size();
     const auto travelAt = [&](double theta) {
       if (turnTo(node, theta) && translateInNode(node, point) && turnInPlace(node, arrival)) return true;
@@ -352,8 +400,8 @@ class RouteWalker {
       return false;
     };
     std::vector<double> blocked;  // angles from which the turn back to `arrival` looks blocked: tried last
-    for (const auto& [estimate, theta] : ranked) {
-      if (!(estimate > leastEstimate)) break;
+    for (std::optional<double> next = ranking.next(estimate); next; next = ranking.next(estimate)) {
+      const double theta = *next;
       if (!turnLooksFree(node, point, theta, arrival)) {
         blocked.push_back(theta);
       } else if (travelAt(theta)) {
@@ -365,13 +413,14 @@ class RouteWalker {
 
   /// Translates at the current angle to `point` inside the node's face.
   bool translateInNode(std::uint32_t node, const std::array<double, 2>& point) {
-    const std::optional<SliceFace> face = faceAt(node, current().theta);
+    const double theta = current().theta;
+    const std::shared_ptr<const SliceFace> face = faceAt(node, theta);
     if (!face) return false;
     if (face->loops.empty()) {
-      append({point[0] / scale_, point[1] / scale_, current().theta});
+      append({point[0] / scale_, point[1] / scale_, theta});
       return true;
     }
-    return translateTo(*face, FaceTriangulation(*face, {scaled(current()), point}), point);
+    return translateTo(*face, *triangulationAt(node, theta, *face, {scaled(current()), point}), point);
   }
 
   /// An angle of the node's run near critical angle `index`, before it or after it:
@@ -445,48 +494,63 @@ class RouteWalker {
     return std::nullopt;
   }
 
+  /// Points where the robot might turn from angle `exit` in `node` (whose face there is
+  /// given) to `entry` in `next`, with their estimated clearances, the roomiest first
+  /// (a crossing point near a contact makes the translations to it and from it
+  /// tight): the current point, then the middles of the triangles of the faces at both
+  /// angles that lie in both faces; where none does (the faces may overlap only a
+  /// little), those of the triangles of both faces' loops together (each lies inside
+  /// or outside each face). In both faces by their triangulations (by the exact rays
+  /// when a face has no loops; confirmed by them before a turn from there is tried).
+  std::vector<std::pair<double, std::array<double, 2>>> crossingPoints(std::uint32_t node, double exit,
+                                                                       const SliceFace& face, std::uint32_t next,
+                                                                       double entry) const {
+    const std::array<double, 2> here = scaled(current());
+    const std::shared_ptr<const SliceFace> nextFace = faceAt(next, entry);
+    std::shared_ptr<const FaceTriangulation> exitTriangulation, entryTriangulation;  // faces with loops
+    if (nextFace && !face.loops.empty() && !nextFace->loops.empty()) {
+      exitTriangulation = triangulationAt(node, exit, face, {here});
+      entryTriangulation = triangulationAt(next, entry, *nextFace, {here});
+    }
+    std::vector<std::pair<double, std::array<double, 2>>> usable;
+    const auto consider = [&](const std::vector<std::array<double, 2>>& points) {
+      for (const std::array<double, 2>& point : points) {
+        cancellation_.check();
+        const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
+        const bool inBothFaces = entryTriangulation
+                                     ? exitTriangulation->contains(point) && entryTriangulation->contains(point)
+                                     : space_.nodeOf(turned) == next && space_.nodeOf(there) == node;
+        if (!inBothFaces) continue;
+        const double turnedClearance =
+            nextFace ? estimatedClearance(*nextFace, turned) : space_.clearance(turned, kWidth).lower;
+        usable.push_back({std::min(estimatedClearance(face, there), turnedClearance), point});
+      }
+    };
+    consider({here});
+    if (entryTriangulation) {
+      consider(exitTriangulation->roomyPoints());
+      consider(entryTriangulation->roomyPoints());
+    }
+    if (nextFace && usable.size() <= 1) {
+      SliceFace both = face;
+      both.loops.insert(both.loops.end(), nextFace->loops.begin(), nextFace->loops.end());
+      consider(FaceTriangulation(both).roomyPoints(true));
+    }
+    std::stable_sort(usable.begin(), usable.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    return usable;
+  }
+
   /// Moves, at angle `exit` in `node`, to a point (the current one, or the roomiest
   /// of the triangles of both faces) where turning to `entry` is certified free and
   /// lands in `next`, and turns there.
   bool turnThroughAt(std::uint32_t node, double exit, double entry, std::uint32_t next) {
-    const std::optional<SliceFace> face = faceAt(node, exit);
+    const std::shared_ptr<const SliceFace> face = faceAt(node, exit);
     if (!face) return false;
-    // The current point, then the roomiest of the triangles of both faces' loops
-    // together (each lies inside or outside each face; where the faces overlap only a
-    // little, the faces' own triangles may all miss the overlap).
-    std::vector<std::array<double, 2>> candidates{scaled(current())};
-    const std::optional<SliceFace> nextFace = faceAt(next, entry);
-    if (nextFace) {
-      SliceFace both = *face;
-      both.loops.insert(both.loops.end(), nextFace->loops.begin(), nextFace->loops.end());
-      const std::vector<std::array<double, 2>> roomy = FaceTriangulation(both).roomyPoints(true);
-      candidates.insert(candidates.end(), roomy.begin(), roomy.end());
-    }
-    // Those in both nodes, the roomiest first (a crossing point near a contact makes
-    // the translations to it and from it tight): in both faces by their triangulations,
-    // confirmed by the exact rays before a turn from there is tried.
-    std::optional<FaceTriangulation> exitTriangulation, entryTriangulation;  // faces with loops
-    if (nextFace && !face->loops.empty() && !nextFace->loops.empty()) {
-      exitTriangulation.emplace(*face);
-      entryTriangulation.emplace(*nextFace);
-    }
+    const std::vector<std::pair<double, std::array<double, 2>>> usable = crossingPoints(node, exit, *face, next, entry);
     const auto inBothNodes = [&](const Pose2& there, const Pose2& turned) {
       return space_.nodeOf(turned) == next && space_.nodeOf(there) == node;
     };
-    std::vector<std::pair<double, std::array<double, 2>>> usable;
-    for (const std::array<double, 2>& point : candidates) {
-      cancellation_.check();
-      if (std::chrono::steady_clock::now() > deadline_) return false;
-      const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
-      const bool inBothFaces = entryTriangulation
-                                   ? exitTriangulation->contains(point) && entryTriangulation->contains(point)
-                                   : inBothNodes(there, turned);
-      if (!inBothFaces) continue;
-      const double turnedClearance =
-          nextFace ? estimatedClearance(*nextFace, turned) : space_.clearance(turned, kWidth).lower;
-      usable.push_back({std::min(estimatedClearance(*face, there), turnedClearance), point});
-    }
-    std::stable_sort(usable.begin(), usable.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+    const std::array<double, 2> here = scaled(current());
     // First only where the way there keeps a share of the crossing's clearance (a far
     // crossing point may be reached only through a face pinched to rounding), then
     // anywhere.
@@ -501,7 +565,7 @@ class RouteWalker {
         if (!*confirmed[k]) continue;
         if (!turns[k]) turns[k] = checker_.check(there, turned);
         if (!turns[k]->free) continue;
-        if (point != candidates.front() && !travelTo(node, point, exit, share * clearance)) continue;
+        if (point != here && !travelTo(node, point, exit, share * clearance)) continue;
         const Pose2& at = current();
         const bool checkedHere = at.x == there.x && at.y == there.y && at.theta == there.theta;
         append(turned, checkedHere ? std::optional<double>(turns[k]->minClearance) : std::nullopt);
@@ -515,7 +579,7 @@ class RouteWalker {
   /// translates to it, and turns onto its angle.
   bool arriveAt(std::uint32_t node, const Pose2& goal) {
     double theta = reducedAngle(goal.theta);
-    std::optional<SliceFace> face = faceAt(node, theta);
+    std::shared_ptr<const SliceFace> face = faceAt(node, theta);
     for (double offset = 1e-9; !face && offset < 1e-3; offset *= 4) {
       theta = reducedAngle(goal.theta + offset);
       face = faceAt(node, theta);
@@ -536,7 +600,9 @@ class RouteWalker {
   std::vector<Pose2> waypoints_;
   std::vector<std::optional<double>> certified_;  // per motion between waypoints
   int steps_ = 0;
-  mutable std::map<std::pair<double, std::uint32_t>, std::optional<SliceFace>> faces_;  // by angle and node
+  // Kept faces (null: none) and triangulations, by angle and node.
+  mutable std::map<std::pair<double, std::uint32_t>, std::shared_ptr<const SliceFace>> faces_;
+  mutable std::map<std::pair<double, std::uint32_t>, std::shared_ptr<const FaceTriangulation>> triangulations_;
   // The walk's own predicates (the free space's other queries may run meanwhile).
   mutable PredicateStatistics statistics_;
   mutable AngleAlgebra algebra_{statistics_};

@@ -40,6 +40,9 @@ class FaceTriangulation {
   /// triangulation of its loops as rounded to doubles: far cheaper than the free
   /// space's exact ray, and the same answer but within rounding of the loops).
   bool contains(const std::array<double, 2>& point) const;
+  /// Whether a point lies strictly inside the box the triangulation spans (around the
+  /// face's loops and the points it was made to hold): only such points are located.
+  bool boxHolds(const std::array<double, 2>& point) const;
 
  private:
   struct Impl;
