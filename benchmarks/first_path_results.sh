@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Prints the "First path" table of RESULTS.md: the seconds `freespace plan --json` takes
+# to its first certified path (after construction and graph), RUNS runs per solvable
+# bundled problem (or per .cfg problem given): their median, least and most. The
+# queries ask for a ratio of 0.5 (the first path does not depend on it) to end soon.
+#
+# Usage: benchmarks/first_path_results.sh BUILD_DIR RUNS [PROBLEM.cfg ...]
+set -euo pipefail
+build=${1:?usage: benchmarks/first_path_results.sh BUILD_DIR RUNS [PROBLEM.cfg ...]}
+runs=${2:?usage: benchmarks/first_path_results.sh BUILD_DIR RUNS [PROBLEM.cfg ...]}
+shift 2
+problems=("$@")
+if [ ${#problems[@]} -eq 0 ]; then problems=("$(dirname "$0")"/problems/*.cfg); fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+
+echo "Command: \`benchmarks/first_path_results.sh build $runs\`; machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p' | head -1); $(date +%Y-%m-%d)."
+echo
+echo "| problem | first path ms, median | least | most |"
+echo "| --- | --- | --- | --- |"
+# One table row from the runs' JSON files.
+read -r -d '' row << 'PYTHON' || true
+import glob, json, sys
+name, files = sys.argv[1], sorted(glob.glob(sys.argv[2] + "/*.json"))
+plans = [json.load(open(f)) for f in files]
+if plans[0]["status"] != "solved":
+    sys.exit(0)
+ms = sorted(p["seconds"]["first_path"] * 1e3 for p in plans)
+print(f"| {name} | {ms[len(ms) // 2]:.2f} | {ms[0]:.2f} | {ms[-1]:.2f} |")
+PYTHON
+for cfg in "${problems[@]}"; do
+  name=$(basename "$cfg" .cfg)
+  rm -f "$work"/*.json
+  for run in $(seq "$runs"); do
+    "$build/bin/freespace" plan --json --cfg "$cfg" --ratio 0.5 --seconds-limit 2 > "$work/$run.json" 2> /dev/null
+  done
+  python3 -c "$row" "$name" "$work"
+done
