@@ -232,14 +232,15 @@ class RouteWalker {
   std::optional<double> recentre(std::uint32_t node) {
     const std::shared_ptr<const SliceFace> face = faceAt(node, current().theta);
     if (!face || face->loops.empty()) return std::nullopt;
-    const FaceTriangulation& triangulation = *triangulationAt(node, current().theta, *face, {scaled(current())});
-    const std::optional<std::array<double, 2>> middle = triangulation.incentreAt(scaled(current()));
+    const std::shared_ptr<const FaceTriangulation> triangulation =
+        triangulationAt(node, current().theta, *face, {scaled(current())});
+    const std::optional<std::array<double, 2>> middle = triangulation->incentreAt(scaled(current()));
     if (!middle) return std::nullopt;  // outside the face
     const double here = estimatedClearance(*face, current());
-    const std::vector<std::array<double, 2>> roomy = triangulation.roomyPoints();
+    const std::vector<std::array<double, 2>> roomy = triangulation->roomyPoints();
     const bool moved = (here > 0 && !roomy.empty() && estimatedClearance(*face, roomy.front()) > 4 * here &&
-                        translateTo(*face, triangulation, roomy.front(), 0.5 * here)) ||
-                       (estimatedClearance(*face, *middle) > here && translateTo(*face, triangulation, *middle));
+                        translateTo(*face, *triangulation, roomy.front(), 0.5 * here)) ||
+                       (estimatedClearance(*face, *middle) > here && translateTo(*face, *triangulation, *middle));
     return moved ? estimatedClearance(*face, current()) : here;
   }
 
@@ -271,7 +272,8 @@ class RouteWalker {
   }
 
   /// The clearance at the current point, estimated from the node's face at its angle
-  /// (the exact one at a critical angle, where the node has no face).
+  /// (the exact one at a critical angle, where the node has no face, or where the point
+  /// lies outside the face by its rounded loops).
   double clearanceHere(std::uint32_t node) const {
     if (const std::shared_ptr<const SliceFace> face = faceAt(node, current().theta)) {
       if (liesInside(*face, scaled(current()))) return estimatedClearance(*face, current());
@@ -494,6 +496,11 @@ class RouteWalker {
     return std::nullopt;
   }
 
+  /// Whether `there` lies in `node` and `turned` in `next`, by the exact rays.
+  bool inBothNodes(std::uint32_t node, const Pose2& there, std::uint32_t next, const Pose2& turned) const {
+    return space_.nodeOf(turned) == next && space_.nodeOf(there) == node;
+  }
+
   /// Points where the robot might turn from angle `exit` in `node` (whose face there is
   /// given) to `entry` in `next`, with their estimated clearances, the roomiest first
   /// (a crossing point near a contact makes the translations to it and from it
@@ -502,6 +509,7 @@ class RouteWalker {
   /// little), those of the triangles of both faces' loops together (each lies inside
   /// or outside each face). In both faces by their triangulations (by the exact rays
   /// when a face has no loops; confirmed by them before a turn from there is tried).
+  /// Those found before the deadline.
   std::vector<std::pair<double, std::array<double, 2>>> crossingPoints(std::uint32_t node, double exit,
                                                                        const SliceFace& face, std::uint32_t next,
                                                                        double entry) const {
@@ -516,10 +524,11 @@ class RouteWalker {
     const auto consider = [&](const std::vector<std::array<double, 2>>& points) {
       for (const std::array<double, 2>& point : points) {
         cancellation_.check();
+        if (std::chrono::steady_clock::now() > deadline_) return;
         const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
         const bool inBothFaces = entryTriangulation
                                      ? exitTriangulation->contains(point) && entryTriangulation->contains(point)
-                                     : space_.nodeOf(turned) == next && space_.nodeOf(there) == node;
+                                     : inBothNodes(node, there, next, turned);
         if (!inBothFaces) continue;
         const double turnedClearance =
             nextFace ? estimatedClearance(*nextFace, turned) : space_.clearance(turned, kWidth).lower;
@@ -527,11 +536,12 @@ class RouteWalker {
       }
     };
     consider({here});
+    const std::size_t besideHere = usable.size();
     if (entryTriangulation) {
       consider(exitTriangulation->roomyPoints());
       consider(entryTriangulation->roomyPoints());
     }
-    if (nextFace && usable.size() <= 1) {
+    if (nextFace && usable.size() == besideHere) {
       SliceFace both = face;
       both.loops.insert(both.loops.end(), nextFace->loops.begin(), nextFace->loops.end());
       consider(FaceTriangulation(both).roomyPoints(true));
@@ -547,9 +557,6 @@ class RouteWalker {
     const std::shared_ptr<const SliceFace> face = faceAt(node, exit);
     if (!face) return false;
     const std::vector<std::pair<double, std::array<double, 2>>> usable = crossingPoints(node, exit, *face, next, entry);
-    const auto inBothNodes = [&](const Pose2& there, const Pose2& turned) {
-      return space_.nodeOf(turned) == next && space_.nodeOf(there) == node;
-    };
     const std::array<double, 2> here = scaled(current());
     // First only where the way there keeps a share of the crossing's clearance (a far
     // crossing point may be reached only through a face pinched to rounding), then
@@ -561,7 +568,7 @@ class RouteWalker {
         if (std::chrono::steady_clock::now() > deadline_) return false;
         const auto& [clearance, point] = usable[k];
         const Pose2 there{point[0] / scale_, point[1] / scale_, exit}, turned{there.x, there.y, entry};
-        if (!confirmed[k]) confirmed[k] = inBothNodes(there, turned);
+        if (!confirmed[k]) confirmed[k] = inBothNodes(node, there, next, turned);
         if (!*confirmed[k]) continue;
         if (!turns[k]) turns[k] = checker_.check(there, turned);
         if (!turns[k]->free) continue;

@@ -41,7 +41,9 @@ class FaceTriangulation {
   /// space's exact ray, and the same answer but within rounding of the loops).
   bool contains(const std::array<double, 2>& point) const;
   /// Whether a point lies strictly inside the box the triangulation spans (around the
-  /// face's loops and the points it was made to hold): only such points are located.
+  /// face's loops and the points it was made to hold). Points beyond it lie outside
+  /// every triangle: for an unbounded face, path, incentreAt and contains are right
+  /// only for points inside it.
   bool boxHolds(const std::array<double, 2>& point) const;
 
  private:
