@@ -41,8 +41,41 @@ const PatchSlab* slabMeeting(const PatchSubdivision& subdivision, const Algebrai
 
 namespace freespace {
 
+namespace {
+
+/// Below this many slabs, a patch's slabs are searched from the first.
+constexpr std::size_t kBisectedSlabs = 8;
+
+/// The slab likeliest to hold the angle, by bisection: the slabs follow one another
+/// around the patch's range from the first one's `from`, each starting where the last
+/// ended, so the first whose `to` lies past the angle along the range holds it. Only
+/// where the search starts (slabIndexAt tests it and goes on from there when it does
+/// not hold the angle): the answer stays the slabs' own.
+std::size_t likeliestSlab(const std::vector<PatchSlab>& slabs, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
+  if (slabs.size() < kBisectedSlabs) return 0;
+  const AlgebraicAngle& start = slabs.front().from;
+  // Whether the angle lies on the arc from the range's start to slab k's end.
+  const auto reachedBy = [&](std::size_t k) {
+    const int order = algebra.compare(start, slabs[k].to);
+    if (order == 0) return true;  // around the whole circle
+    return algebra.contains(start, slabs[k].to, order > 0, angle, AngleAlgebra::Boundary::Excluded);
+  };
+  std::size_t low = 0, high = slabs.size() - 1;
+  while (low < high) {
+    const std::size_t middle = (low + high) / 2;
+    if (reachedBy(middle)) {
+      high = middle;
+    } else {
+      low = middle + 1;
+    }
+  }
+  return low;
+}
+
+}  // namespace
+
 const PatchSlab* slabAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
-  const auto found = gluing::slabIndexAt(subdivision, angle, algebra, 0);
+  const auto found = gluing::slabIndexAt(subdivision, angle, algebra, likeliestSlab(subdivision.slabs, angle, algebra));
   return found ? &subdivision.slabs[*found] : nullptr;
 }
 

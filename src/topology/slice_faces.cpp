@@ -158,23 +158,32 @@ std::optional<SliceFace> SliceFaces::faceOf(std::uint32_t node, const AlgebraicA
     throw std::invalid_argument("SliceFaces: the angle is critical");
   }
   if (!graph_.runHolds(graph_.nodes()[node], interval)) return std::nullopt;
-  // The node's pieces whose slab holds the angle (each slab looked at once) and which
-  // bound its face over this interval.
+  // The node's pieces whose slab holds the angle and which bound its face over this
+  // interval: of each of the node's patches whose range holds the angle, the slab
+  // holding it (slabAt: a bisection among the patch's slabs, not a test of each of the
+  // node's slabs, which may be thousands along its run).
   IntervalLoops loops;
   loops.sample = rationalAngle;
-  std::optional<std::pair<std::uint32_t, std::uint32_t>> lastSlab;
-  bool slabHolds = false;
-  for (const PieceId& piece : piecesOfNode_[node]) {
-    const auto [patch, slab, gap] = piece;
-    if (lastSlab != std::pair(patch, slab)) {
-      lastSlab = {patch, slab};
-      slabHolds = gluing::holds(arrangement_.subdivisions[patch].slabs[slab], rationalAngle, algebra);
-      if (slabHolds) loops.slabs.push_back({patch, slab});
+  const std::vector<PieceId>& pieces = piecesOfNode_[node];  // by patch, slab, gap
+  for (auto first = pieces.begin(); first != pieces.end();) {
+    const std::uint32_t patch = (*first)[0];
+    const auto last = std::find_if(first, pieces.end(), [&](const PieceId& piece) { return piece[0] != patch; });
+    const PatchSubdivision& subdivision = arrangement_.subdivisions[patch];
+    const PatchSlab* slab = algebra.contains(arrangement_.patches[patch].patch.range, rationalAngle)
+                                ? slabAt(subdivision, rationalAngle, algebra)
+                                : nullptr;
+    if (slab) {
+      const auto slabIndex = static_cast<std::uint32_t>(slab - subdivision.slabs.data());
+      auto piece = std::lower_bound(first, last, PieceId{patch, slabIndex, 0});
+      if (piece != last && (*piece)[1] == slabIndex) loops.slabs.push_back({patch, slabIndex});
+      for (; piece != last && (*piece)[1] == slabIndex; ++piece) {
+        const std::size_t index = graph_.pieceIndex(patch, slabIndex, (*piece)[2]);
+        if (graph_.nodeOfPiece(index, interval) != node) continue;
+        loops.pieces.push_back({patch, slabIndex, (*piece)[2]});
+        loops.pieceIndices.push_back(index);
+      }
     }
-    const std::size_t index = graph_.pieceIndex(patch, slab, gap);
-    if (!slabHolds || graph_.nodeOfPiece(index, interval) != node) continue;
-    loops.pieces.push_back({patch, slab, gap});
-    loops.pieceIndices.push_back(index);
+    first = last;
   }
   std::map<std::uint32_t, SliceFace> faces = facesOf(loops, interval);
   const auto found = faces.find(node);
