@@ -550,9 +550,9 @@ class RouteWalker {
     return usable;
   }
 
-  /// Moves, at angle `exit` in `node`, to a point (the current one, or the roomiest
-  /// of the triangles of both faces) where turning to `entry` is certified free and
-  /// lands in `next`, and turns there.
+  /// Moves, at angle `exit` in `node`, to a point (of crossingPoints', the roomiest
+  /// first) where turning to `entry` is certified free and lands in `next`, and turns
+  /// there.
   bool turnThroughAt(std::uint32_t node, double exit, double entry, std::uint32_t next) {
     const std::shared_ptr<const SliceFace> face = faceAt(node, exit);
     if (!face) return false;
