@@ -18,6 +18,13 @@ namespace freespace {
 
 namespace {
 
+/// How many parts halving along the axes of `axes` (bit k for axis k) makes.
+std::uint32_t partCount(std::uint8_t axes) {
+  std::uint32_t count = 1;
+  for (int axis = 0; axis < 3; ++axis) count <<= axes >> axis & 1;
+  return count;
+}
+
 /// The turn between two angles of [-pi, pi] the shorter way round (|remainder(a - b,
 /// 2 pi)| within rounding, which the bounds' slack covers; std::remainder in general).
 double turnBetween(double a, double b) {
@@ -418,32 +425,34 @@ std::uint32_t ClearanceBoxes::leafAt(const Pose2& pose) const {
   return index;
 }
 
-void ClearanceBoxes::split(std::uint32_t index, std::uint8_t axes) { attach(index, axes, halves(index, axes)); }
+void ClearanceBoxes::split(std::uint32_t index, std::uint8_t axes) {
+  boundHalves(index, attach(index, axes, halves(index, axes)));
+}
 
 std::size_t ClearanceBoxes::splitEach(const std::vector<std::uint32_t>& boxes, const std::function<bool()>& keepGoing) {
   std::vector<std::uint8_t> axes(boxes.size());
   for (std::size_t k = 0; k < boxes.size(); ++k) axes[k] = axesToSplit(boxes[k]);
   // A box's halves depend on it alone (its centre's clearance, cell and bounds), so
   // they are measured on every core, then attached in order, as split() would one
-  // after another.
+  // after another, and bounded on every core (a box's halves' bounds depend on the
+  // neighbours it had when attached, and are written to its halves alone).
   std::vector<std::vector<ClearanceBox>> halved(boxes.size());
   onEveryCore(boxes.size(), keepGoing, [&](std::size_t k) { halved[k] = halves(boxes[k], axes[k]); });
   // Those measured before `keepGoing` said stop (a box halved after one left whole is
   // left whole too).
   std::size_t done = 0;
-  while (done < boxes.size() && !halved[done].empty()) {
-    attach(boxes[done], axes[done], std::move(halved[done]));
-    ++done;
-  }
+  while (done < boxes.size() && !halved[done].empty()) ++done;
+  std::vector<std::vector<std::uint32_t>> neighbours(done);
+  for (std::size_t k = 0; k < done; ++k) neighbours[k] = attach(boxes[k], axes[k], std::move(halved[k]));
+  const auto always = [] { return true; };
+  onEveryCore(done, always, [&](std::size_t k) { boundHalves(boxes[k], neighbours[k]); });
   return done;
 }
 
 std::vector<ClearanceBox> ClearanceBoxes::halves(std::uint32_t index, std::uint8_t axes) const {
-  int halvedAxes = 0;
-  for (int axis = 0; axis < 3; ++axis) halvedAxes += axes >> axis & 1;
   const ClearanceBox& box = boxes_[index];
   std::vector<ClearanceBox> parts;
-  for (std::uint32_t part = 0; part < 1u << halvedAxes; ++part) {
+  for (std::uint32_t part = 0; part < partCount(axes); ++part) {
     std::array<double, 3> low = box.low, high = box.high;
     for (int axis = 0, bit = 0; axis < 3; ++axis) {
       if (!(axes >> axis & 1)) continue;
@@ -456,7 +465,8 @@ std::vector<ClearanceBox> ClearanceBoxes::halves(std::uint32_t index, std::uint8
   return parts;
 }
 
-void ClearanceBoxes::attach(std::uint32_t index, std::uint8_t axes, std::vector<ClearanceBox> halves) {
+std::vector<std::uint32_t> ClearanceBoxes::attach(std::uint32_t index, std::uint8_t axes,
+                                                  std::vector<ClearanceBox> halves) {
   const std::uint32_t first = static_cast<std::uint32_t>(boxes_.size());
   const std::uint32_t parts = static_cast<std::uint32_t>(halves.size());
   for (ClearanceBox& half : halves) boxes_.push_back(std::move(half));
@@ -466,7 +476,11 @@ void ClearanceBoxes::attach(std::uint32_t index, std::uint8_t axes, std::vector<
   boxes_[index].firstChild = first;
   // The halves touch one another (they share the centre) and each of the box's
   // neighbours (not split, not dropped) they touch, both ways.
-  const std::vector<std::uint32_t> neighbours = boxes_[index].neighbours;
+  std::vector<std::uint32_t> neighbours = std::move(boxes_[index].neighbours);
+  boxes_[index].neighbours = {};
+  neighbours.erase(std::remove_if(neighbours.begin(), neighbours.end(),
+                                  [&](std::uint32_t other) { return boxes_[other].split || boxes_[other].dropped; }),
+                   neighbours.end());
   const std::uint32_t end = first + parts;
   for (std::uint32_t child = first; child < end; ++child) {
     for (std::uint32_t sibling = first; sibling < end; ++sibling) {
@@ -474,7 +488,6 @@ void ClearanceBoxes::attach(std::uint32_t index, std::uint8_t axes, std::vector<
     }
   }
   for (std::uint32_t neighbour : neighbours) {
-    if (boxes_[neighbour].split || boxes_[neighbour].dropped) continue;
     // Its list loses the box split (and any other split or dropped since): the
     // searches over chains walk these lists every round.
     std::vector<std::uint32_t>& list = boxes_[neighbour].neighbours;
@@ -487,22 +500,26 @@ void ClearanceBoxes::attach(std::uint32_t index, std::uint8_t axes, std::vector<
       boxes_[neighbour].neighbours.push_back(child);
     }
   }
-  // Each half is bounded by the best of the parent's anchors and the halves' and
+  return neighbours;
+}
+
+void ClearanceBoxes::boundHalves(std::uint32_t index, const std::vector<std::uint32_t>& neighbours) {
+  const ClearanceBox& box = boxes_[index];
+  const std::uint32_t first = box.firstChild, end = first + partCount(box.splitAxes);
+  // Each half is bounded by the best of the box's anchors and the halves' and
   // neighbours' own.
-  std::vector<ClearanceAnchor> candidates = boxes_[index].anchors;
+  std::vector<ClearanceAnchor> candidates = box.anchors;
   for (std::uint32_t child = first; child < end; ++child) {
     candidates.insert(candidates.end(), boxes_[child].own.begin(), boxes_[child].own.end());
   }
   for (std::uint32_t neighbour : neighbours) {
-    if (boxes_[neighbour].split || boxes_[neighbour].dropped) continue;
     candidates.insert(candidates.end(), boxes_[neighbour].own.begin(), boxes_[neighbour].own.end());
   }
   for (std::uint32_t child = first; child < end; ++child) {
     bound(boxes_[child], candidates);
     // The box's bound holds in its halves: bounds only fall (UpperSearch relies on it).
-    boxes_[child].upper = std::min(boxes_[child].upper, boxes_[index].upper);
+    boxes_[child].upper = std::min(boxes_[child].upper, box.upper);
   }
-  boxes_[index].neighbours = {};
 }
 
 std::uint8_t ClearanceBoxes::axesToSplit(std::uint32_t index) const {

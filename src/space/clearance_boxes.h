@@ -149,8 +149,13 @@ class ClearanceBoxes {
                         const std::optional<Location>& location) const;
   /// A box's halves along `axes`, measured (not yet added).
   std::vector<ClearanceBox> halves(std::uint32_t box, std::uint8_t axes) const;
-  /// Adds a box's halves in its place: neighbours and bounds from them.
-  void attach(std::uint32_t box, std::uint8_t axes, std::vector<ClearanceBox> halves);
+  /// Adds a box's halves in its place and joins them to its neighbours (not split, not
+  /// dropped), whom it returns; bounds wait for boundHalves.
+  std::vector<std::uint32_t> attach(std::uint32_t box, std::uint8_t axes, std::vector<ClearanceBox> halves);
+  /// Bounds a split box's halves from its anchors and its halves' and `neighbours`'
+  /// own (those attach returned). It writes those halves alone: threads may bound
+  /// different boxes' halves at once.
+  void boundHalves(std::uint32_t box, const std::vector<std::uint32_t>& neighbours);
   /// Where the centre of [low, high] lies when a free box's centre certifies it: its
   /// clearance exceeds the move between the centres (|dxy| + reach |dtheta|), so the
   /// motion between them stays free, in its cell (docs/design.md section 7).
