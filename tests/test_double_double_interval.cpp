@@ -140,6 +140,34 @@ RC_GTEST_PROP(DoubleDoubleInterval, RationalsAreEnclosedTightly, ()) {
   RC_ASSERT(Rational(doubles.lower()) <= value && value <= Rational(doubles.upper()));
 }
 
+/// Whether `near` lies less than an ulp from `value`: value strictly between the
+/// doubles on either side of it.
+bool withinAnUlp(double near, const Rational& value) {
+  return Rational(std::nextafter(near, -HUGE_VAL)) < value && value < Rational(std::nextafter(near, HUGE_VAL));
+}
+
+// GMP's conversion is not rounded to nearest, but never an ulp off; at the ends of
+// the doubles (subnormal, beyond the largest) it is Boost's.
+RC_GTEST_PROP(NearDouble, IsLessThanAnUlpOff, ()) {
+  const int exponent = *rc::gen::inRange(-1070, 1020);
+  const Rational value = anyRational() * Rational(std::ldexp(1.0, exponent)) / 7;
+  const bool zero = value == 0;
+  RC_ASSERT((zero ? nearDouble(value) == 0 : withinAnUlp(nearDouble(value), value)));
+  const Interval enclosure = enclosingInterval(value);
+  RC_ASSERT(Rational(enclosure.lower()) <= value && value <= Rational(enclosure.upper()));
+}
+
+TEST(NearDouble, AtTheEndsOfTheDoubles) {
+  const Rational subnormal = Rational(1, 3) * powerOfHalf(1060), tiny = powerOfHalf(1200) / 3;
+  EXPECT_TRUE(withinAnUlp(nearDouble(subnormal), subnormal));
+  EXPECT_TRUE(withinAnUlp(nearDouble(-subnormal), -subnormal));
+  EXPECT_TRUE(withinAnUlp(nearDouble(tiny), tiny));
+  const Rational huge = Rational(1) / (powerOfHalf(1100) * 3);
+  EXPECT_EQ(nearDouble(huge), HUGE_VAL);
+  EXPECT_EQ(nearDouble(-huge), -HUGE_VAL);
+  EXPECT_EQ(nearDouble(Rational(0)), 0.0);
+}
+
 TEST(DoubleDoubleInterval, DecidesSignsThatDoubleIntervalsCannot) {
   NearestRoundingScope rounding;
   // 0.1 * 3 - 0.3 in doubles is 2^-54 and in double intervals of unknown sign; the

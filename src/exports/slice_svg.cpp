@@ -97,7 +97,7 @@ void writePieces(const FreeSpace& space, double theta, double strokeWidth, std::
   const auto [cosine, sine] = exactCosSin(angle);
   const double scale = space.meshes().scale;
   const auto toDouble = [scale](const std::array<Rational, 2>& p) {
-    return std::array<double, 2>{p[0].convert_to<double>() / scale, p[1].convert_to<double>() / scale};
+    return std::array<double, 2>{nearDouble(p[0]) / scale, nearDouble(p[1]) / scale};
   };
   out << "<g stroke-linecap=\"round\">\n";
   for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {

@@ -24,13 +24,13 @@ constexpr int kPreciseLevel = static_cast<int>(PrecisionLevel::Multiprecision);
 constexpr int kDoubleRefinements = 48;
 
 double lowerDouble(const Rational& value) {
-  double nearest = value.convert_to<double>();
+  double nearest = nearDouble(value);
   if (Rational(nearest) > value) nearest = std::nextafter(nearest, -std::numeric_limits<double>::infinity());
   return nearest;
 }
 
 double upperDouble(const Rational& value) {
-  double nearest = value.convert_to<double>();
+  double nearest = nearDouble(value);
   if (Rational(nearest) < value) nearest = std::nextafter(nearest, std::numeric_limits<double>::infinity());
   return nearest;
 }

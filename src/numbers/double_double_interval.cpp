@@ -83,8 +83,8 @@ double magnitude(DoubleWord x) { return std::fabs(x.high) + std::fabs(x.low); }
 }  // namespace
 
 DoubleDoubleInterval::DoubleDoubleInterval(const Rational& value) {
-  // convert_to<double> truncates toward zero: each part is off by less than an ulp.
-  const double high = value.convert_to<double>();
+  // Each part is off by less than an ulp (nearDouble).
+  const double high = nearDouble(value);
   if (!std::isfinite(high)) {
     // Beyond doubles: an interval that decides nothing.
     high_ = 0;
@@ -92,9 +92,9 @@ DoubleDoubleInterval::DoubleDoubleInterval(const Rational& value) {
     return;
   }
   const Rational rest = value - Rational(high);
-  const double low = rest.convert_to<double>();
+  const double low = nearDouble(rest);
   const Rational remainderExactly = abs(Rational(rest - Rational(low)));
-  const double remainder = remainderExactly.convert_to<double>();
+  const double remainder = nearDouble(remainderExactly);
   const DoubleWord normalized = fastTwoSum(high, low);
   high_ = normalized.high;
   low_ = normalized.low;

@@ -51,7 +51,7 @@ std::optional<std::array<double, 2>> FacePlacement::pointBeside(const AlgebraicA
     }
     const RayHit ahead = rays_.cast(angle, off, direction);
     const Rational room = ahead.kind == RayHit::Kind::Nothing ? scale : Rational(ahead.along) / 2;
-    return std::array<double, 2>{(off[0] + direction * room).convert_to<double>(), off[1].convert_to<double>()};
+    return std::array<double, 2>{nearDouble(off[0] + direction * room), nearDouble(off[1])};
   }
   return std::nullopt;
 }

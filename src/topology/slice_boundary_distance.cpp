@@ -70,7 +70,7 @@ struct SliceBoundaryDistance::Impl {
                                           const Point& from, const IntervalPoint& fromInterval, double reach) const {
     std::array<double, 2> low{}, high{};
     for (int axis = 0; axis < 2; ++axis) {
-      const double centre = from[axis].convert_to<double>();
+      const double centre = nearDouble(from[axis]);
       const double pad = 1e-9 * (1 + std::fabs(centre) + reach);
       low[axis] = std::isinf(reach) ? -std::numeric_limits<double>::max() : centre - reach - pad;
       high[axis] = std::isinf(reach) ? std::numeric_limits<double>::max() : centre + reach + pad;

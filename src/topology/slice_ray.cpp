@@ -103,7 +103,7 @@ struct SliceRays::Impl {
     const double huge = std::numeric_limits<double>::max();
     std::array<double, 2> low{}, high{};
     for (int axis = 0; axis < 2; ++axis) {
-      const double start = from[axis].convert_to<double>(), step = direction[axis].convert_to<double>();
+      const double start = nearDouble(from[axis]), step = nearDouble(direction[axis]);
       const double pad = 1e-9 * (1 + std::fabs(start) + std::fabs(step) * reach.value_or(0));
       const double end = reach ? start + *reach * step
                                : (direction[axis] > 0 ? huge : (direction[axis] < 0 ? -huge : start));
@@ -305,7 +305,7 @@ RayHit SliceRays::Impl::castExactly(const AlgebraicAngle& angle, const Point& fr
     return hit;
   }
   hit.kind = RayHit::Kind::Degenerate;
-  hit.along = first->distance.convert_to<double>();
+  hit.along = nearDouble(first->distance);
   if (tie || first->alongSegment || first->lambda == 0 || first->lambda == 1) return hit;
   const PatchSlab* slab = slabAt(arrangement.subdivisions[first->patch], angle, algebra);
   if (!slab) return hit;  // the angle is an event of the patch
