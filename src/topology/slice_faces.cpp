@@ -67,24 +67,20 @@ RoundedEnd endOf(const Arrangement& arrangement, const slices::IntervalSlice& sl
 }
 
 /// One loop from a piece, walked from end to end: each piece is entered at the end
-/// its predecessor left it by (the end whose neighbour is the predecessor; a piece
-/// entered at its high end leaves by its low one, whose neighbour that found).
+/// its predecessor's crossing reached, and left by its other end.
 std::vector<std::size_t> walkLoop(const cellgraph::PieceNeighbours& neighbours, const IntervalLoops& loops,
                                   std::size_t first, std::vector<char>& seen, std::vector<int>& entry) {
   std::vector<std::size_t> loop;
   std::size_t at = first;
   int enteredBy = 0;
-  std::optional<std::size_t> leavingTo;  // the neighbour across the end `at` leaves by, when found already
   while (!seen[at]) {
     seen[at] = 1;
     entry[at] = enteredBy;
     loop.push_back(at);
-    const std::optional<std::size_t> next = leavingTo ? leavingTo : neighbours.neighbour(loops, at, 1 - enteredBy);
+    const std::optional<cellgraph::PieceNeighbours::Crossing> next = neighbours.across(loops, at, 1 - enteredBy);
     if (!next) throw std::logic_error("SliceFaces: a loop does not close");
-    const std::optional<std::size_t> lowNeighbour = neighbours.neighbour(loops, *next, 0);
-    enteredBy = lowNeighbour == at ? 0 : 1;
-    leavingTo = enteredBy == 1 ? lowNeighbour : std::nullopt;
-    at = *next;
+    enteredBy = next->end;
+    at = next->piece;
   }
   return loop;
 }

@@ -84,11 +84,20 @@ class PieceNeighbours {
  public:
   PieceNeighbours(const Arrangement& arrangement, const CellGraph& numbering);
 
+  /// A piece and its end (0 low, 1 high).
+  struct Crossing {
+    std::size_t piece;
+    int end;
+  };
+
   /// The piece a piece continues into across the curve at its low (0) or high (1)
   /// end: on the curve's other patch, the one side of the curve there that bounds
   /// free space (the other side lies inside this patch's obstacle). None at a spiral.
   template <class State>
-  std::optional<std::size_t> curveNeighbour(const State& state, std::size_t id, std::size_t end) const;
+  std::optional<std::size_t> curveNeighbour(const State& state, std::size_t id, std::size_t end) const {
+    const std::optional<Crossing> crossing = acrossCurve(state, id, end);
+    return crossing ? std::optional(crossing->piece) : std::nullopt;
+  }
 
   /// The free pieces that end at a spiral.
   template <class State>
@@ -97,7 +106,14 @@ class PieceNeighbours {
   /// The piece across a piece's low (0) or high (1) end: across a curve, or the one
   /// glued to it around the spiral there; none when that is unclear.
   template <class State>
-  std::optional<std::size_t> neighbour(const State& state, std::size_t id, std::size_t end) const;
+  std::optional<std::size_t> neighbour(const State& state, std::size_t id, std::size_t end) const {
+    const std::optional<Crossing> crossing = across(state, id, end);
+    return crossing ? std::optional(crossing->piece) : std::nullopt;
+  }
+
+  /// The neighbour across a piece's end (as neighbour()) and the neighbour's end there.
+  template <class State>
+  std::optional<Crossing> across(const State& state, std::size_t id, std::size_t end) const;
 
   /// The number of the spiral at a patch's segment end 0 or 1.
   std::uint32_t spiralOf(std::uint32_t patch, int end) const { return spiralOfEnd_[patch][end]; }
@@ -106,6 +122,10 @@ class PieceNeighbours {
   const PatchSlab& slabOf(const Piece& piece) const { return arrangement_.subdivisions[piece.patch].slabs[piece.slab]; }
 
  private:
+  /// curveNeighbour, with the neighbour's end on the curve.
+  template <class State>
+  std::optional<Crossing> acrossCurve(const State& state, std::size_t id, std::size_t end) const;
+
   const Arrangement& arrangement_;
   const CellGraph& numbering_;
   std::set<std::pair<std::uint64_t, std::uint64_t>> spiralGlues_;
@@ -114,7 +134,8 @@ class PieceNeighbours {
 };
 
 template <class State>
-std::optional<std::size_t> PieceNeighbours::curveNeighbour(const State& state, std::size_t id, std::size_t end) const {
+std::optional<PieceNeighbours::Crossing> PieceNeighbours::acrossCurve(const State& state, std::size_t id,
+                                                                      std::size_t end) const {
   const Piece& piece = state.piece(id);
   const PatchSlab& slab = slabOf(piece);
   const std::size_t at = piece.gap + end;
@@ -125,12 +146,13 @@ std::optional<std::size_t> PieceNeighbours::curveNeighbour(const State& state, s
   if (!otherSlab) throw std::logic_error("CellGraph: a free piece's curve ends nowhere");
   const auto& curves = arrangement_.subdivisions[other].slabs[*otherSlab].curves;
   const std::size_t crossing = std::find(curves.begin(), curves.end(), curve) - curves.begin();
-  std::optional<std::size_t> next;
+  // The gap below the curve meets it by its high end, the one above by its low end.
+  std::optional<Crossing> next;
   for (const std::size_t gap : {crossing, crossing + 1}) {
     const auto found = state.pieceAt(numbering_.pieceIndex(other, *otherSlab, static_cast<std::uint32_t>(gap)));
     if (!found) continue;
     if (next) throw std::logic_error("CellGraph: both sides of a curve bound free space");
-    next = *found;
+    next = Crossing{*found, gap == crossing ? 1 : 0};
   }
   if (!next) throw std::logic_error("CellGraph: a free piece continues into no free piece across a curve");
   return next;
@@ -150,10 +172,12 @@ std::vector<std::size_t> PieceNeighbours::endPiecesAt(const State& state, std::u
 }
 
 template <class State>
-std::optional<std::size_t> PieceNeighbours::neighbour(const State& state, std::size_t id, std::size_t end) const {
-  if (const std::optional<std::size_t> next = curveNeighbour(state, id, end)) return next;
+std::optional<PieceNeighbours::Crossing> PieceNeighbours::across(const State& state, std::size_t id,
+                                                                 std::size_t end) const {
+  if (const std::optional<Crossing> next = acrossCurve(state, id, end)) return next;
   const Piece& piece = state.piece(id);
-  const std::vector<std::size_t> ending = endPiecesAt(state, spiralOf(piece.patch, static_cast<int>(end)));
+  const std::uint32_t spiral = spiralOf(piece.patch, static_cast<int>(end));
+  const std::vector<std::size_t> ending = endPiecesAt(state, spiral);
   std::optional<std::size_t> found;
   for (std::size_t other : ending) {
     if (other == id) continue;
@@ -161,7 +185,10 @@ std::optional<std::size_t> PieceNeighbours::neighbour(const State& state, std::s
     if (found) return std::nullopt;
     found = other;
   }
-  return found;
+  if (!found) return std::nullopt;
+  // A piece ending at a spiral is its slab's first gap (low end) or last (high end).
+  const Piece& other = state.piece(*found);
+  return Crossing{*found, other.gap == 0 && spiralOf(other.patch, 0) == spiral ? 0 : 1};
 }
 
 }  // namespace freespace::cellgraph
