@@ -24,15 +24,15 @@ constexpr int kPreciseLevel = static_cast<int>(PrecisionLevel::Multiprecision);
 constexpr int kDoubleRefinements = 48;
 
 double lowerDouble(const Rational& value) {
-  double nearest = nearDouble(value);
-  if (Rational(nearest) > value) nearest = std::nextafter(nearest, -std::numeric_limits<double>::infinity());
-  return nearest;
+  double near = nearDouble(value);
+  if (Rational(near) > value) near = std::nextafter(near, -std::numeric_limits<double>::infinity());
+  return near;
 }
 
 double upperDouble(const Rational& value) {
-  double nearest = nearDouble(value);
-  if (Rational(nearest) < value) nearest = std::nextafter(nearest, std::numeric_limits<double>::infinity());
-  return nearest;
+  double near = nearDouble(value);
+  if (Rational(near) < value) near = std::nextafter(near, std::numeric_limits<double>::infinity());
+  return near;
 }
 
 /// Bisects an exactly isolated root until its interval is about as narrow as a

@@ -36,8 +36,9 @@ struct ClearanceBox {
   /// The certified lower bound on its centre's clearance.
   double centreLower = -HUGE_VAL;
   /// Its centre and the contact its clearance reaches there (the witness, clearance
-  /// 0), then the anchors that bound it best among its own, its neighbours' and its
-  /// parent's (upper is the least of their bounds).
+  /// 0), then the anchors that bound it best among its own, its siblings', its
+  /// parent's neighbours' (their own) and its parent's (upper is the least of their
+  /// bounds).
   std::vector<ClearanceAnchor> own, anchors;
   /// Once split, its parts are boxes firstChild on: halved along the axes of
   /// `splitAxes` (bit k for axis k), 2 to the number of those axes of them, part i
@@ -115,7 +116,8 @@ class ClearanceBoxes {
   /// clearances).
   void split(std::uint32_t box, std::uint8_t axes = kEveryAxis);
   /// Halves each of `boxes` (distinct, none split) along its axesToSplit, as split()
-  /// one after another would, their halves measured on every core; asks `keepGoing`
+  /// one after another would, their halves measured on every core, attached in order,
+  /// then bounded on every core (from the neighbours each box had when attached); asks `keepGoing`
   /// (from any thread) before each and stops when it says no. Returns how many of
   /// `boxes` (the first ones) were halved; when `keepGoing` or a clearance throws, none
   /// is, and the exception is thrown again.
