@@ -240,6 +240,7 @@ void expectSameBoxes(const ClearanceBoxes& a, const ClearanceBoxes& b) {
     EXPECT_EQ(x.centreCell, y.centreCell) << "box " << index;
     EXPECT_EQ(x.unbroken, y.unbroken) << "box " << index;
     EXPECT_EQ(x.split, y.split) << "box " << index;
+    EXPECT_EQ(x.dropped, y.dropped) << "box " << index;
     EXPECT_EQ(x.firstChild, y.firstChild) << "box " << index;
     EXPECT_EQ(x.neighbours, y.neighbours) << "box " << index;
     ASSERT_EQ(x.anchors.size(), y.anchors.size()) << "box " << index;
@@ -250,9 +251,9 @@ void expectSameBoxes(const ClearanceBoxes& a, const ClearanceBoxes& b) {
   }
 }
 
-// Halving many boxes at once (their halves measured on every core) leaves what halving
-// them one after another leaves, neighbours of one another among them; a halving told
-// to stop leaves the rest whole.
+// Halving many boxes at once (their halves measured and bounded on every core) leaves
+// what halving them one after another leaves, neighbours of one another among them,
+// some of their neighbours dropped; a halving told to stop leaves the rest whole.
 TEST_P(BundledClearanceBoxes, HalvingAtOnceMatchesHalvingInTurn) {
   const LoadedProblem loaded = loadBundledProblem(GetParam());
   const FreeSpace space(loaded.robot, loaded.world);
@@ -260,16 +261,28 @@ TEST_P(BundledClearanceBoxes, HalvingAtOnceMatchesHalvingInTurn) {
   ClearanceBoxes inTurn = halvedBoxes(space, loaded, 100, random).boxes;
   ClearanceBoxes atOnce = halvedBoxes(space, loaded, 100, sameRandom).boxes;
   for (int round = 0; round < 3; ++round) {
+    // From the second round, the boxes of the lowest upper bounds dropped (neighbours
+    // left out of the halves' bounds).
+    if (round > 0) {
+      std::vector<double> uppers;
+      for (std::uint32_t box = 0; box < inTurn.size(); ++box) {
+        if (!inTurn.box(box).split && !inTurn.box(box).dropped) uppers.push_back(inTurn.box(box).upper);
+      }
+      std::nth_element(uppers.begin(), uppers.begin() + uppers.size() / 5, uppers.end());
+      inTurn.dropBelow(uppers[uppers.size() / 5]);
+      atOnce.dropBelow(uppers[uppers.size() / 5]);
+    }
     // A box and its leaf neighbours, from random boxes, until some 200.
     std::vector<std::uint32_t> chosen;
     std::vector<char> taken(inTurn.size(), 0);
+    const auto usable = [&](std::uint32_t box) { return !inTurn.box(box).split && !inTurn.box(box).dropped; };
     while (chosen.size() < 200) {
       const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, inTurn.size() - 1)(random);
-      if (inTurn.box(box).split) continue;
+      if (!usable(box)) continue;
       std::vector<std::uint32_t> group{box};
       group.insert(group.end(), inTurn.box(box).neighbours.begin(), inTurn.box(box).neighbours.end());
       for (std::uint32_t member : group) {
-        if (!taken[member] && !inTurn.box(member).split) chosen.push_back(member), taken[member] = 1;
+        if (!taken[member] && usable(member)) chosen.push_back(member), taken[member] = 1;
       }
     }
     for (std::uint32_t box : chosen) inTurn.split(box, inTurn.axesToSplit(box));
