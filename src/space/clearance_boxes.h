@@ -117,10 +117,10 @@ class ClearanceBoxes {
   void split(std::uint32_t box, std::uint8_t axes = kEveryAxis);
   /// Halves each of `boxes` (distinct, none split) along its axesToSplit, as split()
   /// one after another would, their halves measured on every core, attached in order,
-  /// then bounded on every core (from the neighbours each box had when attached); asks `keepGoing`
-  /// (from any thread) before each and stops when it says no. Returns how many of
-  /// `boxes` (the first ones) were halved; when `keepGoing` or a clearance throws, none
-  /// is, and the exception is thrown again.
+  /// then bounded on every core (from the neighbours each box had when attached); asks
+  /// `keepGoing` (from any thread) before each and stops when it says no. Returns how
+  /// many of `boxes` (the first ones) were halved; when `keepGoing` or a clearance
+  /// throws, none is, and the exception is thrown again.
   std::size_t splitEach(const std::vector<std::uint32_t>& boxes, const std::function<bool()>& keepGoing);
   static constexpr std::uint8_t kEveryAxis = 7, kThetaAxis = 4;
   /// The axes worth halving a box along: theta alone when its centre lies deeper in
