@@ -57,7 +57,7 @@ TEST_P(BundledFreeSpace, KnownTopologyAndAgreementWithTheExactCollisionTest) {
     EXPECT_EQ(space.cellCount(), static_cast<std::size_t>(scene.cells));
   }
   // A bounded cell's box holds the configurations in it.
-  const std::vector<std::optional<PatchBox>> boxes = space.cellBoxes();
+  const std::vector<std::optional<PatchBox>>& boxes = space.cellBoxes();
   ASSERT_EQ(boxes.size(), space.cellCount());
   EXPECT_FALSE(boxes[0].has_value());
   for (const Pose2& pose : {problem.problem.start, problem.problem.goal}) {

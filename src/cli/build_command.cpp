@@ -30,7 +30,7 @@ nlohmann::json predicatesJson(const PredicateStatistics& statistics) {
 /// Each free cell with a box holding it (none for the unbounded cell 0).
 nlohmann::json cellsJson(const FreeSpace& space) {
   nlohmann::json cells = nlohmann::json::array();
-  const std::vector<std::optional<PatchBox>> boxes = space.cellBoxes();
+  const std::vector<std::optional<PatchBox>>& boxes = space.cellBoxes();
   for (std::size_t cell = 0; cell < boxes.size(); ++cell) {
     nlohmann::json entry = {{"cell", cell}, {"bounded", boxes[cell].has_value()}};
     if (boxes[cell]) {

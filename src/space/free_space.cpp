@@ -172,6 +172,8 @@ const SliceFaces& FreeSpace::sliceFaces() const {
   if (!impl_->sliceFaces) {
     impl_->sliceFaces =
         std::make_unique<SliceFaces>(impl_->arrangement, graph, [this](SubFaceId face) { return cellOfSubFace(face); });
+    // Every path query asks for its cell's box: found with what its walk needs.
+    if (!impl_->cellBoxes) impl_->cellBoxes = impl_->findCellBoxes();
   }
   return *impl_->sliceFaces;
 }
@@ -223,18 +225,17 @@ Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth, double e
 
 std::size_t FreeSpace::cellCount() const { return impl_->cells->count(); }
 
-std::vector<std::optional<PatchBox>> FreeSpace::cellBoxes() const {
-  const Arrangement& arrangement = impl_->arrangement;
+std::vector<std::optional<PatchBox>> FreeSpace::Impl::findCellBoxes() const {
   // The bounded free cells that each patch's sub-faces bound.
   std::vector<std::vector<std::uint32_t>> cellsOfPatch(arrangement.patches.size());
   for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
     for (std::uint32_t face = 0; face < arrangement.subdivisions[patch].faceCount; ++face) {
-      const std::optional<std::uint32_t> cell = cellOfSubFace({patch, face});
+      const std::optional<std::uint32_t> cell = cells->cellOfShell(arrangement.shells.shellOf({patch, face}));
       if (cell && *cell != FreeCells::kUnbounded) cellsOfPatch[patch].push_back(*cell);
     }
   }
   // Each cell's box holds the boxes (those of the index) of the patches bounding it.
-  std::vector<std::optional<PatchBox>> boxes(cellCount());
+  std::vector<std::optional<PatchBox>> boxes(cells->count());
   for (const auto& [box, patch] : arrangement.boxIndex->boxes()) {
     for (std::uint32_t cell : cellsOfPatch[patch]) {
       if (!boxes[cell]) {
@@ -251,11 +252,17 @@ std::vector<std::optional<PatchBox>> FreeSpace::cellBoxes() const {
   for (std::optional<PatchBox>& box : boxes) {
     if (!box) continue;
     for (int axis = 0; axis < 2; ++axis) {
-      box->low[axis] /= impl_->meshes.scale;
-      box->high[axis] /= impl_->meshes.scale;
+      box->low[axis] /= meshes.scale;
+      box->high[axis] /= meshes.scale;
     }
   }
   return boxes;
+}
+
+const std::vector<std::optional<PatchBox>>& FreeSpace::cellBoxes() const {
+  const std::lock_guard lock(impl_->firstUse);
+  if (!impl_->cellBoxes) impl_->cellBoxes = impl_->findCellBoxes();
+  return *impl_->cellBoxes;
 }
 
 std::size_t FreeSpace::shellCount() const { return impl_->arrangement.shells.count(); }

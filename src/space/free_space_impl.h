@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
 
 #include "freespace/collision/exact_collision_checker.h"
@@ -56,7 +57,9 @@ struct FreeSpace::Impl {
   std::unique_ptr<CellGraph> graph;
   /// Built on first use (FreeSpace::sliceFaces).
   std::unique_ptr<SliceFaces> sliceFaces;
-  /// Guards the graph's and the slice faces' making on first use.
+  /// Found with the slice faces or on first use (FreeSpace::cellBoxes).
+  std::optional<std::vector<std::optional<PatchBox>>> cellBoxes;
+  /// Guards the graph's, the slice faces' and the cell boxes' making on first use.
   mutable std::mutex firstUse;
   /// The query tools not borrowed now.
   mutable std::mutex idleToolsMutex;
@@ -74,6 +77,8 @@ struct FreeSpace::Impl {
     collision = std::make_unique<ExactCollisionChecker>(meshes.robot, meshes.world);
   }
 
+  /// Each free cell's box (FreeSpace::cellBoxes).
+  std::vector<std::optional<PatchBox>> findCellBoxes() const;
   RayHit firstHit(const SliceRays& queryRays, const Pose2& pose, const AlgebraicAngle& at) const;
   /// Where a configuration (`from`, exactly in the construction's coordinates, at
   /// angle `at`) lies, from the first sub-face met on a short way toward
