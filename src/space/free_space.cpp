@@ -53,6 +53,14 @@ void requireMemoryFor(std::size_t candidates, const FreeSpaceOptions& options) {
   throw InputError(options.sourceName, problem.str());
 }
 
+/// An input coordinate times the construction's scale (a power of two), exactly: the
+/// product in doubles when it is a normal double (then exact), else in rationals.
+Rational scaledExactly(double value, double scale) {
+  const double product = value * scale;
+  if (std::isnormal(product) || value == 0) return Rational(product);
+  return Rational(value) * Rational(scale);
+}
+
 }  // namespace
 
 FreeSpace::Impl::Impl(const Mesh& robot, const Mesh& world, const FreeSpaceOptions& options)
@@ -103,12 +111,29 @@ FreeSpace::Impl::QueryTools::QueryTools(const Impl& impl)
         return impl.cells->cellOfShell(impl.arrangement.shells.shellOf(face)).has_value();
       }) {}
 
+FreeSpace::Impl::~Impl() {
+  for (IdleSlot& slot : idleSlots) std::unique_ptr<QueryTools>(slot.tools.exchange(nullptr));
+}
+
 FreeSpace::Impl::BorrowedTools::~BorrowedTools() {
+  for (IdleSlot& slot : impl_.idleSlots) {
+    QueryTools* empty = nullptr;
+    if (slot.tools.compare_exchange_strong(empty, tools_.get(), std::memory_order_release)) {
+      tools_.release();
+      return;
+    }
+  }
   const std::lock_guard lock(impl_.idleToolsMutex);
   impl_.idleTools.push_back(std::move(tools_));
 }
 
 FreeSpace::Impl::BorrowedTools FreeSpace::Impl::borrowQueryTools() const {
+  for (IdleSlot& slot : idleSlots) {
+    if (slot.tools.load(std::memory_order_relaxed) == nullptr) continue;
+    if (QueryTools* tools = slot.tools.exchange(nullptr, std::memory_order_acquire)) {
+      return BorrowedTools(*this, std::unique_ptr<QueryTools>(tools));
+    }
+  }
   {
     const std::lock_guard lock(idleToolsMutex);
     if (!idleTools.empty()) {
@@ -124,7 +149,7 @@ FreeSpace::Impl::BorrowedTools FreeSpace::Impl::borrowQueryTools() const {
 /// that ray passes exactly through a vertex of the slice), at its rational angle.
 RayHit FreeSpace::Impl::firstHit(const SliceRays& queryRays, const Pose2& pose, const AlgebraicAngle& at) const {
   // Exactly in the construction's coordinates.
-  const Rational scale(meshes.scale), x = Rational(pose.x) * scale, y = Rational(pose.y) * scale;
+  const Rational x = scaledExactly(pose.x, meshes.scale), y = scaledExactly(pose.y, meshes.scale);
   for (int direction : {-1, 1}) {
     const RayHit hit = queryRays.cast(at, {x, y}, direction);
     if (hit.kind != RayHit::Kind::Degenerate) return hit;
@@ -195,7 +220,7 @@ Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth, double e
   Clearance result;
   const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
   const double scale = impl_->meshes.scale;
-  const Rational x = Rational(pose.x) * Rational(scale), y = Rational(pose.y) * Rational(scale);
+  const Rational x = scaledExactly(pose.x, scale), y = scaledExactly(pose.y, scale);
   const Impl::BorrowedTools tools = impl_->borrowQueryTools();
   const std::optional<BoundaryDistance> found = tools->boundary.nearest(at, {x, y}, relativeWidth, expected * scale);
   if (location) {
