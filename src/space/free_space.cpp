@@ -225,6 +225,9 @@ Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth, double e
   const std::optional<BoundaryDistance> found = tools->boundary.nearest(at, {x, y}, relativeWidth, expected * scale);
   if (location) {
     result.location = *location;
+  } else if (found && found->fromPositiveSide) {
+    // Its way to the nearest point meets that sub-face first.
+    result.location = impl_->locationSeeing(found->face, *found->fromPositiveSide);
   } else if (found) {
     result.location = impl_->locationToward(tools->rays, pose, {x, y}, at, found->nearest);
   } else {

@@ -104,8 +104,14 @@ struct FreeSpace::Impl {
   /// an open shell bounds no free cell).
   Location locationOf(const RayHit& hit) const {
     if (hit.kind == RayHit::Kind::Nothing) return {true, FreeCells::kUnbounded};
-    if (hit.kind == RayHit::Kind::OnSegment || !hit.fromPositiveSide) return {false, 0};
-    const std::optional<std::uint32_t> cell = cells->cellOfShell(arrangement.shells.shellOf(hit.face));
+    if (hit.kind == RayHit::Kind::OnSegment) return {false, 0};
+    return locationSeeing(hit.face, hit.fromPositiveSide);
+  }
+  /// Where a point lies that sees a sub-face first, from its positive side or not (as
+  /// locationOf).
+  Location locationSeeing(SubFaceId face, bool fromPositiveSide) const {
+    if (!fromPositiveSide) return {false, 0};
+    const std::optional<std::uint32_t> cell = cells->cellOfShell(arrangement.shells.shellOf(face));
     if (!cell) return {false, 0};
     return {true, *cell};
   }

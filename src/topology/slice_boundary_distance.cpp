@@ -117,9 +117,24 @@ struct SliceBoundaryDistance::Impl {
     return sqrt(enclosingInterval(squaredDistance));
   }
 
+  /// The side of the nearest piece's segment the point lies on (BoundaryDistance::
+  /// fromPositiveSide), when every other piece is certainly farther.
+  std::optional<bool> sideOfNearest(const std::vector<PieceDistance>& pieces, const PieceDistance& nearest,
+                                    const slices::IntervalSlice& slice, const IntervalPoint& from) const {
+    for (const PieceDistance& other : pieces) {
+      if (&other != &nearest && !(other.distance.lower() > nearest.distance.upper())) return std::nullopt;
+    }
+    const RoundingScope rounding;
+    const LineAtAngle<Interval> line = slice.line(arrangement.patches[nearest.piece.patch]);
+    const std::optional<Sign> side = certainSign(line.nx * from[0] + line.ny * from[1] + line.w);
+    if (!side || *side == Sign::Zero) return std::nullopt;
+    return *side == Sign::Positive;
+  }
+
   /// The nearest of the pieces that may be nearest, exactly where the intervals are
   /// wider than asked.
   BoundaryDistance nearestOf(std::vector<PieceDistance> pieces, const AlgebraicAngle& angle, const Point& from,
+                             const slices::IntervalSlice& slice, const IntervalPoint& fromInterval,
                              double relativeWidth) const {
     const auto byUpper = [](const PieceDistance& a, const PieceDistance& b) {
       return a.distance.upper() < b.distance.upper();
@@ -142,7 +157,8 @@ struct SliceBoundaryDistance::Impl {
     const PatchSlab& slab = *nearest.piece.slab;
     return {Interval(lowest(), nearest.distance.upper()),
             {nearest.piece.patch, slab.faces[nearest.piece.gap]},
-            nearest.nearest};
+            nearest.nearest,
+            sideOfNearest(pieces, nearest, slice, fromInterval)};
   }
 };
 
@@ -185,7 +201,7 @@ std::optional<BoundaryDistance> SliceBoundaryDistance::nearest(const AlgebraicAn
     if (std::isinf(reach)) break;
   }
   if (pieces.empty()) return std::nullopt;
-  return impl_->nearestOf(std::move(pieces), rationalAngle, from, relativeWidth);
+  return impl_->nearestOf(std::move(pieces), rationalAngle, from, *slice, fromInterval, relativeWidth);
 }
 
 }  // namespace freespace

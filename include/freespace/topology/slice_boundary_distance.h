@@ -23,6 +23,12 @@ struct BoundaryDistance {
   SubFaceId face;
   /// The nearest point, rounded to doubles.
   std::array<double, 2> nearest{};
+  /// The side of that sub-face's segment the point lies on (true: positive), when
+  /// every other piece is certainly farther and the side certain: no point of the
+  /// boundary lies on the way to the nearest point (it would be nearer), so that
+  /// sub-face is the first the way meets, from that side (the nearest point lies
+  /// inside its piece: at an end, the piece its loop goes on with would be as near).
+  std::optional<bool> fromPositiveSide;
 };
 
 /// Distances from points of the slices of an arrangement at rational angles to the
