@@ -281,7 +281,8 @@ ClearanceBox ClearanceBoxes::measured(const std::array<double, 3>& low, const st
                          std::min(reach_, contactLever(clearance, centre.theta, rounding) * (1 + 1e-9) + rounding)});
     }
   }
-  box.unbroken = !meetsFreeBoundary(box);
+  // Free throughout at a positive clearance, no boundary meets it.
+  box.unbroken = box.lower > 0 || !meetsFreeBoundary(box);
   // Blocked throughout: no clearance above 0 anywhere in it (the Lipschitz bound
   // across angles leaves room for pockets that no boundary here could enclose).
   if (box.unbroken && !clearance.location.free) box.upper = std::min(box.upper, 0.0);

@@ -29,7 +29,9 @@ void onEveryCore(std::size_t count, const std::function<bool()>& keepGoing, cons
     }
   };
   std::vector<std::future<void>> helpers;
-  const std::size_t threads = std::min<std::size_t>(count, std::max(1u, std::thread::hardware_concurrency()));
+  // (The count of cores is read from the system each time it is asked for.)
+  static const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t threads = std::min<std::size_t>(count, cores);
   try {
     for (std::size_t helper = 1; helper < threads; ++helper) helpers.push_back(std::async(std::launch::async, run));
   } catch (const std::system_error&) {
