@@ -545,7 +545,7 @@ void ClearanceBoxes::dropBelow(double level) {
 void ClearanceBoxes::dropOutside(std::uint32_t cell) {
   for (std::uint32_t index = 0; index < boxes_.size(); ++index) {
     const ClearanceBox& box = boxes_[index];
-    if (!box.split && !box.dropped && (box.lower > 0 || box.unbroken) && box.centreCell && *box.centreCell != cell) {
+    if (!box.split && !box.dropped && box.unbroken && box.centreCell && *box.centreCell != cell) {
       drop(index);
     }
   }

@@ -50,8 +50,8 @@ struct ClearanceBox {
   bool dropped = false;
   /// The free cell holding the box's centre (none when it is blocked).
   std::optional<std::uint32_t> centreCell;
-  /// No patch of the free space's boundary meets the box: all of it lies where its
-  /// centre does (blocked, or in centreCell).
+  /// No patch of the free space's boundary meets the box (as when its lower bound is
+  /// above 0): all of it lies where its centre does (blocked, or in centreCell).
   bool unbroken = false;
   /// Boxes it touches (closed boxes, theta wrapping around); some may be split since.
   std::vector<std::uint32_t> neighbours;
@@ -129,9 +129,8 @@ class ClearanceBoxes {
   std::uint8_t axesToSplit(std::uint32_t box) const;
   /// Drops every box whose upper bound is below `level`.
   void dropBelow(double level);
-  /// Drops every box that lies in another free cell than `cell`: free throughout
-  /// (lower bound above 0; connected, so all of it in its centre's cell) or unbroken,
-  /// its centre in another.
+  /// Drops every box that lies in another free cell than `cell`: unbroken (free
+  /// throughout or not, all of it in its centre's cell), its centre in another.
   void dropOutside(std::uint32_t cell);
 
   const ClearanceBox& box(std::uint32_t index) const { return boxes_[index]; }

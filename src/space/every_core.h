@@ -13,6 +13,13 @@
 
 namespace freespace {
 
+/// The machine's cores (at least 1), asked of the system once (it reads a file each
+/// time).
+inline unsigned coreCount() {
+  static const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+  return cores;
+}
+
 /// Runs work(k) for k = 0 to count - 1 on every core (a thread each, the caller's
 /// among them), k handed out in order, each while keepGoing() says so; an exception
 /// thrown by work stops them all and is thrown again here.
@@ -29,9 +36,7 @@ void onEveryCore(std::size_t count, const std::function<bool()>& keepGoing, cons
     }
   };
   std::vector<std::future<void>> helpers;
-  // (The count of cores is read from the system each time it is asked for.)
-  static const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t threads = std::min<std::size_t>(count, cores);
+  const std::size_t threads = std::min<std::size_t>(count, coreCount());
   try {
     for (std::size_t helper = 1; helper < threads; ++helper) helpers.push_back(std::async(std::launch::async, run));
   } catch (const std::system_error&) {

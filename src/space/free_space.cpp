@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -54,10 +55,14 @@ void requireMemoryFor(std::size_t candidates, const FreeSpaceOptions& options) {
 }
 
 /// An input coordinate times the construction's scale (a power of two), exactly: the
-/// product in doubles when it is a normal double (then exact), else in rationals.
+/// product in doubles when it is finite and above the least normal double (the exact
+/// product then is a normal double too: a power of two only moves the exponent), else
+/// in rationals.
 Rational scaledExactly(double value, double scale) {
   const double product = value * scale;
-  if (std::isnormal(product) || value == 0) return Rational(product);
+  if (value == 0 || (std::isfinite(product) && std::fabs(product) > std::numeric_limits<double>::min())) {
+    return Rational(product);
+  }
   return Rational(value) * Rational(scale);
 }
 
@@ -112,7 +117,7 @@ FreeSpace::Impl::QueryTools::QueryTools(const Impl& impl)
       }) {}
 
 FreeSpace::Impl::~Impl() {
-  for (IdleSlot& slot : idleSlots) std::unique_ptr<QueryTools>(slot.tools.exchange(nullptr));
+  for (IdleSlot& slot : idleSlots) delete slot.tools.exchange(nullptr);
 }
 
 FreeSpace::Impl::BorrowedTools::~BorrowedTools() {
@@ -225,7 +230,7 @@ Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth, double e
   const std::optional<BoundaryDistance> found = tools->boundary.nearest(at, {x, y}, relativeWidth, expected * scale);
   if (location) {
     result.location = *location;
-  } else if (found && found->fromPositiveSide) {
+  } else if (found && found->fromPositiveSide.has_value()) {
     // Its way to the nearest point meets that sub-face first.
     result.location = impl_->locationSeeing(found->face, *found->fromPositiveSide);
   } else if (found) {

@@ -24,6 +24,8 @@ struct BoundaryPiece {
   std::uint32_t patch;
   const PatchSlab* slab;
   std::size_t gap;
+  /// The angle is one of the patch's events: the piece is a limit of a slab's.
+  bool atEvent;
 };
 
 /// A piece's distance from the point, bounded, and its point nearest to it (rounded).
@@ -45,16 +47,19 @@ PieceDistance distanceToPiece(const BoundaryPiece& piece, const IntervalPoint& e
 }
 
 /// The slabs of a patch whose gaps are the pieces of its segment at the angle: the
-/// slab holding it, or at one of the patch's events the slabs ending and starting
-/// there (the pieces at an event are limits of theirs).
-std::vector<const PatchSlab*> slabsAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle,
-                                      AngleAlgebra& algebra) {
-  if (const PatchSlab* slab = slabAt(subdivision, angle, algebra)) return {slab};
+/// slab holding it, or at one of the patch's events (`event`) the slabs ending and
+/// starting there (the pieces at an event are limits of theirs).
+struct SlabsAt {
   std::vector<const PatchSlab*> slabs;
+  bool event = false;
+};
+SlabsAt slabsAt(const PatchSubdivision& subdivision, const AlgebraicAngle& angle, AngleAlgebra& algebra) {
+  if (const PatchSlab* slab = slabAt(subdivision, angle, algebra)) return {{slab}, false};
+  SlabsAt found{{}, true};
   for (const bool ending : {true, false}) {
-    if (const PatchSlab* slab = gluing::slabMeeting(subdivision, angle, ending, algebra)) slabs.push_back(slab);
+    if (const PatchSlab* slab = gluing::slabMeeting(subdivision, angle, ending, algebra)) found.slabs.push_back(slab);
   }
-  return slabs;
+  return found;
 }
 
 }  // namespace
@@ -79,17 +84,18 @@ struct SliceBoundaryDistance::Impl {
     for (std::uint32_t patch : arrangement.boxIndex->meetingAt(angle.radians(), low, high)) {
       const PatchGeometry& geometry = arrangement.patches[patch];
       if (!algebra.contains(geometry.patch.range, angle)) continue;
-      for (const PatchSlab* slab : slabsAt(arrangement.subdivisions[patch], angle, algebra)) {
+      const SlabsAt found = slabsAt(arrangement.subdivisions[patch], angle, algebra);
+      for (const PatchSlab* slab : found.slabs) {
         for (std::size_t gap = 0; gap < slab->faces.size(); ++gap) {
           if (!boundsFree({patch, slab->faces[gap]})) continue;
           const RoundingScope rounding;
           // An end that the intervals cannot place: the whole segment bounds the piece from outside.
           const auto ends = slice.pieceOf(arrangement, patch, *slab, gap);
-          PieceDistance found = distanceToPiece({patch, slab, gap}, slice.end(geometry, 0), slice.end(geometry, 1),
-                                                ends ? ends->first : Interval(0), ends ? ends->second : Interval(1),
-                                                fromInterval);
-          if (!ends) found.distance = Interval(found.distance.lower(), kInfinity);
-          pieces.push_back(found);
+          PieceDistance piece =
+              distanceToPiece({patch, slab, gap, found.event}, slice.end(geometry, 0), slice.end(geometry, 1),
+                              ends ? ends->first : Interval(0), ends ? ends->second : Interval(1), fromInterval);
+          if (!ends) piece.distance = Interval(piece.distance.lower(), kInfinity);
+          pieces.push_back(piece);
         }
       }
     }
@@ -118,9 +124,12 @@ struct SliceBoundaryDistance::Impl {
   }
 
   /// The side of the nearest piece's segment the point lies on (BoundaryDistance::
-  /// fromPositiveSide), when every other piece is certainly farther.
+  /// fromPositiveSide), when every other piece is certainly farther (`pieces` holds
+  /// every piece within the nearest one's distance: see nearest()) and the angle is
+  /// not an event of the nearest piece's patch (where the rays do not decide either).
   std::optional<bool> sideOfNearest(const std::vector<PieceDistance>& pieces, const PieceDistance& nearest,
                                     const slices::IntervalSlice& slice, const IntervalPoint& from) const {
+    if (nearest.piece.atEvent) return std::nullopt;
     for (const PieceDistance& other : pieces) {
       if (&other != &nearest && !(other.distance.lower() > nearest.distance.upper())) return std::nullopt;
     }

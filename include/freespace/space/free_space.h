@@ -146,7 +146,8 @@ class FreeSpace {
   std::size_t cellCount() const;
   /// A box in (x, y, theta) holding each bounded free cell: the union of the boxes
   /// of the patches its boundary lies on (patchBoxes); none for the unbounded cell.
-  /// Found with sliceFaces (path queries need both) or on first use.
+  /// Found with sliceFaces (path queries need both) or on first use; the reference
+  /// lasts as long as the free space.
   const std::vector<std::optional<PatchBox>>& cellBoxes() const;
   std::size_t shellCount() const;
   std::size_t freeShellCount() const;
