@@ -157,6 +157,24 @@ RC_GTEST_PROP(NearDouble, IsLessThanAnUlpOff, ()) {
   RC_ASSERT(Rational(enclosure.lower()) <= value && value <= Rational(enclosure.upper()));
 }
 
+// A double times a power of two: the rationals' product, whether the doubles' is exact
+// or not (subnormal, rounded up to the least normal double, beyond the largest).
+RC_GTEST_PROP(TimesPowerOfTwo, IsTheExactProduct, ()) {
+  const double value = std::ldexp(*rc::gen::inRange(-(1 << 20), 1 << 20) + 0.5, *rc::gen::inRange(-1080, 1000));
+  const double power = std::ldexp(1.0, *rc::gen::inRange(-60, 60));
+  RC_ASSERT(timesPowerOfTwo(value, power) == Rational(value) * Rational(power));
+}
+
+TEST(TimesPowerOfTwo, AtTheEndsOfTheDoubles) {
+  const double least = std::numeric_limits<double>::min(), largest = std::numeric_limits<double>::max();
+  for (const double value : {std::nextafter(2 * least, 0.0), -std::nextafter(2 * least, 0.0), least, 3 * least,
+                             std::numeric_limits<double>::denorm_min(), largest, -largest, 0.0, -0.0}) {
+    for (const double power : {0.5, 0.25, 2.0, 1.0}) {
+      EXPECT_EQ(timesPowerOfTwo(value, power), Rational(value) * Rational(power)) << value << " times " << power;
+    }
+  }
+}
+
 // Subnormal values within an ulp, values below the least subnormal within one of 0,
 // values beyond the largest double infinite.
 TEST(NearDouble, AtTheEndsOfTheDoubles) {

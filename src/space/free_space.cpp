@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -52,18 +51,6 @@ void requireMemoryFor(std::size_t candidates, const FreeSpaceOptions& options) {
           << (options.memoryLimitBytes > 0 ? "the memory limit of " : "this machine's memory, ") << limit / 1e9
           << " GB";
   throw InputError(options.sourceName, problem.str());
-}
-
-/// An input coordinate times the construction's scale (a power of two), exactly: the
-/// product in doubles when it is finite and above the least normal double (the exact
-/// product then is a normal double too: a power of two only moves the exponent), else
-/// in rationals.
-Rational scaledExactly(double value, double scale) {
-  const double product = value * scale;
-  if (value == 0 || (std::isfinite(product) && std::fabs(product) > std::numeric_limits<double>::min())) {
-    return Rational(product);
-  }
-  return Rational(value) * Rational(scale);
 }
 
 }  // namespace
@@ -154,7 +141,7 @@ FreeSpace::Impl::BorrowedTools FreeSpace::Impl::borrowQueryTools() const {
 /// that ray passes exactly through a vertex of the slice), at its rational angle.
 RayHit FreeSpace::Impl::firstHit(const SliceRays& queryRays, const Pose2& pose, const AlgebraicAngle& at) const {
   // Exactly in the construction's coordinates.
-  const Rational x = scaledExactly(pose.x, meshes.scale), y = scaledExactly(pose.y, meshes.scale);
+  const Rational x = timesPowerOfTwo(pose.x, meshes.scale), y = timesPowerOfTwo(pose.y, meshes.scale);
   for (int direction : {-1, 1}) {
     const RayHit hit = queryRays.cast(at, {x, y}, direction);
     if (hit.kind != RayHit::Kind::Degenerate) return hit;
@@ -225,7 +212,7 @@ Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth, double e
   Clearance result;
   const AlgebraicAngle at = AlgebraicAngle::rational(HalfAngle::fromRadians(pose.theta));
   const double scale = impl_->meshes.scale;
-  const Rational x = scaledExactly(pose.x, scale), y = scaledExactly(pose.y, scale);
+  const Rational x = timesPowerOfTwo(pose.x, scale), y = timesPowerOfTwo(pose.y, scale);
   const Impl::BorrowedTools tools = impl_->borrowQueryTools();
   const std::optional<BoundaryDistance> found = tools->boundary.nearest(at, {x, y}, relativeWidth, expected * scale);
   if (location) {

@@ -21,6 +21,18 @@ inline Rational powerOfHalf(unsigned bits) {
   return Rational(boost::multiprecision::mpz_int(1), denominator);
 }
 
+/// value times a power of two, exactly: the product in doubles when it is finite and
+/// above the least normal double (the exact product then is a normal double too: a
+/// power of two only moves the exponent; one rounded up to the least normal double is
+/// not), else in rationals.
+inline Rational timesPowerOfTwo(double value, double powerOfTwo) {
+  const double product = value * powerOfTwo;
+  if (value == 0 || (std::isfinite(product) && std::fabs(product) > std::numeric_limits<double>::min())) {
+    return Rational(product);
+  }
+  return Rational(value) * Rational(powerOfTwo);
+}
+
 /// A double less than an ulp from a rational (GMP's, truncated toward zero: many times
 /// faster than Boost's correctly rounded conversion, which the rays and boundary
 /// distances of every query would otherwise spend a tenth of their time in). Boost's
