@@ -208,24 +208,30 @@ std::optional<std::vector<std::array<double, 2>>> pathInFace(const SliceFace& fa
 }
 
 BoundaryPoint nearestOnBoundary(const SliceFace& face, const std::array<double, 2>& point) {
-  BoundaryPoint nearest;
+  // Squared distances compared; one square root at the end.
+  double nearestSquared = HUGE_VAL;
+  std::array<double, 2> nearestPoint{};
   for (const SliceLoop& loop : face.loops) {
     for (std::size_t k = 0; k < loop.corners.size(); ++k) {
       const std::array<double, 2>& a = loop.corners[k];
-      const std::array<double, 2>& b = loop.corners[(k + 1) % loop.corners.size()];
+      const std::array<double, 2>& b = loop.corners[k + 1 < loop.corners.size() ? k + 1 : 0];
       // An edge whose box lies farther than the nearest point so far is skipped.
       const double gapX = std::max({0.0, std::min(a[0], b[0]) - point[0], point[0] - std::max(a[0], b[0])});
       const double gapY = std::max({0.0, std::min(a[1], b[1]) - point[1], point[1] - std::max(a[1], b[1])});
-      if (gapX * gapX + gapY * gapY > nearest.distance * nearest.distance) continue;
+      if (gapX * gapX + gapY * gapY > nearestSquared) continue;
       const double ex = b[0] - a[0], ey = b[1] - a[1], length2 = ex * ex + ey * ey;
       const double along = length2 > 0 ? ((point[0] - a[0]) * ex + (point[1] - a[1]) * ey) / length2 : 0;
       const double t = std::clamp(along, 0.0, 1.0);
       const std::array<double, 2> foot{a[0] + t * ex, a[1] + t * ey};
-      const double distance = std::hypot(point[0] - foot[0], point[1] - foot[1]);
-      if (distance < nearest.distance) nearest = {distance, foot};
+      const double dx = point[0] - foot[0], dy = point[1] - foot[1], squared = dx * dx + dy * dy;
+      if (squared < nearestSquared) {
+        nearestSquared = squared;
+        nearestPoint = foot;
+      }
     }
   }
-  return nearest;
+  if (nearestSquared == HUGE_VAL) return {};
+  return {std::sqrt(nearestSquared), nearestPoint};
 }
 
 namespace {
