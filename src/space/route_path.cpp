@@ -454,7 +454,8 @@ class RouteWalker {
   /// end.
   /// The index of the route's node reached; none when no crossing is found.
   std::optional<std::size_t> crossFrom(const std::vector<std::uint32_t>& route, std::size_t at) {
-    for (const CellGraphEdge& edge : graph_.edges()) {
+    for (const std::uint32_t index : graph_.edgesAt(route[at])) {
+      const CellGraphEdge& edge = graph_.edges()[index];
       if (!joins(edge, route[at], route[at + 1])) continue;
       const std::optional<bool> upward = crossesUpward(route[at], route[at + 1], edge.angle);
       if (!upward) continue;
@@ -466,7 +467,9 @@ class RouteWalker {
       while ((!entry || graph_.arcWidth(route[reached]) < CellGraph::kThinArc) && reached + 1 < route.size()) {
         const CellGraphNode& thin = graph_.nodes()[route[reached]];
         const std::uint32_t end = *upward ? (thin.lastInterval + 1) % graph_.intervalCount() : thin.firstInterval;
-        if (!std::any_of(graph_.edges().begin(), graph_.edges().end(), [&](const CellGraphEdge& e) {
+        const CellGraph::EdgeIndices edges = graph_.edgesAt(route[reached]);
+        if (!std::any_of(edges.begin(), edges.end(), [&](std::uint32_t index) {
+              const CellGraphEdge& e = graph_.edges()[index];
               return e.angle == end && joins(e, route[reached], route[reached + 1]);
             })) {
           break;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iterator>
 #include <map>
+#include <numeric>
 #include <queue>
 #include <set>
 #include <stdexcept>
@@ -369,23 +370,19 @@ class CellGraphSweep {
   /// Pieces ending at one spiral point are joined in pairs, by the gluing around
   /// spirals when more than two end there.
   void joinAroundSpirals(const IntervalLoops& loops, detail::DisjointSets& sets) const {
-    std::vector<std::uint32_t> spirals;
-    for (const Piece& piece : loops.pieces) {
-      if (piece.gap == 0) spirals.push_back(neighbours_.spiralOf(piece.patch, 0));
-      if (piece.gap + 1 == slabOf(piece).faces.size()) spirals.push_back(neighbours_.spiralOf(piece.patch, 1));
-    }
-    std::sort(spirals.begin(), spirals.end());
-    spirals.erase(std::unique(spirals.begin(), spirals.end()), spirals.end());
-    for (std::uint32_t spiral : spirals) {
-      const std::vector<std::size_t> ending = neighbours_.endPiecesAt(loops, spiral);
-      if (ending.size() == 1) throw std::logic_error("CellGraph: a free piece ends alone at a spiral");
-      for (std::size_t i = 0; i < ending.size(); ++i) {
-        for (std::size_t j = i + 1; j < ending.size(); ++j) {
-          if (ending.size() == 2 || neighbours_.gluedAroundSpiral(loops.pieces[ending[i]], loops.pieces[ending[j]])) {
-            sets.unite(static_cast<std::uint32_t>(ending[i]), static_cast<std::uint32_t>(ending[j]));
+    const cellgraph::SpiralEnds ends = neighbours_.spiralEnds(loops);
+    for (auto first = ends.begin(); first != ends.end();) {
+      const auto last = std::find_if(first, ends.end(), [&](const auto& end) { return end.first != first->first; });
+      const std::size_t count = last - first;
+      if (count == 1) throw std::logic_error("CellGraph: a free piece ends alone at a spiral");
+      for (auto i = first; i != last; ++i) {
+        for (auto j = i + 1; j != last; ++j) {
+          if (count == 2 || neighbours_.gluedAroundSpiral(loops.pieces[i->second], loops.pieces[j->second])) {
+            sets.unite(static_cast<std::uint32_t>(i->second), static_cast<std::uint32_t>(j->second));
           }
         }
       }
+      first = last;
     }
   }
 
@@ -720,12 +717,29 @@ class CellGraphSweep {
 CellGraph::CellGraph(const Arrangement& arrangement, const SliceRays& rays, const CellOfFace& cellOf,
                      AngleAlgebra& algebra, const Cancellation& cancellation) {
   CellGraphSweep(*this, arrangement, rays, cellOf, algebra).run(cancellation);
+  indexEdges();
 }
 
 CellGraph::CellGraph(const Arrangement& arrangement, Parts parts, std::size_t cellCount, AngleAlgebra& algebra)
     : parts_(std::move(parts)) {
   numberPieces(arrangement);
   checkParts(cellCount, algebra);
+  indexEdges();
+}
+
+void CellGraph::indexEdges() {
+  firstEdgeOfNode_.assign(parts_.nodes.size() + 1, 0);
+  for (const CellGraphEdge& edge : parts_.edges) {
+    ++firstEdgeOfNode_[edge.from + 1];
+    ++firstEdgeOfNode_[edge.to + 1];
+  }
+  std::partial_sum(firstEdgeOfNode_.begin(), firstEdgeOfNode_.end(), firstEdgeOfNode_.begin());
+  edgesByNode_.resize(firstEdgeOfNode_.back());
+  std::vector<std::uint32_t> filled(firstEdgeOfNode_.begin(), firstEdgeOfNode_.end() - 1);
+  for (std::uint32_t edge = 0; edge < parts_.edges.size(); ++edge) {
+    edgesByNode_[filled[parts_.edges[edge].from]++] = edge;
+    edgesByNode_[filled[parts_.edges[edge].to]++] = edge;
+  }
 }
 
 void CellGraph::numberPieces(const Arrangement& arrangement) {
@@ -790,13 +804,6 @@ bool CellGraph::runHolds(const CellGraphNode& node, std::uint32_t interval) cons
 
 std::optional<std::vector<std::uint32_t>> CellGraph::route(
     std::uint32_t from, std::uint32_t to, const std::function<bool(std::uint32_t, std::uint32_t)>& usable) const {
-  // Each node's edges: (the node across, the edge's critical angle).
-  std::vector<std::vector<std::pair<std::uint32_t, std::uint32_t>>> next(parts_.nodes.size());
-  for (const CellGraphEdge& edge : parts_.edges) {
-    if (usable && !usable(edge.from, edge.to)) continue;
-    next[edge.from].push_back({edge.to, edge.angle});
-    next[edge.to].push_back({edge.from, edge.angle});
-  }
   // Least cost first (Dijkstra) over (node, critical angle it was entered through),
   // each settled once, with the state it was reached from.
   using State = std::uint64_t;
@@ -822,7 +829,10 @@ std::optional<std::vector<std::uint32_t>> CellGraph::route(
     // through faces pinched to a sliver of angles.
     const double width = arcWidth(node);
     const double pinch = width < kThinArc ? kThinNodeCost / std::max(width, 1e-12) : 0;
-    for (const auto& [neighbour, angle] : next[node]) {
+    for (const std::uint32_t index : edgesAt(node)) {
+      const CellGraphEdge& edge = parts_.edges[index];
+      if (usable && !usable(edge.from, edge.to)) continue;
+      const std::uint32_t neighbour = edge.from == node ? edge.to : edge.from, angle = edge.angle;
       const double through = cost + 1 + (angle == angleOf(at) ? pinch : 0);
       const State onward = state(neighbour, angle);
       const auto found = reached.find(onward);

@@ -69,7 +69,8 @@ RoundedEnd endOf(const Arrangement& arrangement, const slices::IntervalSlice& sl
 /// One loop from a piece, walked from end to end: each piece is entered at the end
 /// its predecessor's crossing reached, and left by its other end.
 std::vector<std::size_t> walkLoop(const cellgraph::PieceNeighbours& neighbours, const IntervalLoops& loops,
-                                  std::size_t first, std::vector<char>& seen, std::vector<int>& entry) {
+                                  const cellgraph::SpiralEnds& spiralEnds, std::size_t first, std::vector<char>& seen,
+                                  std::vector<int>& entry) {
   std::vector<std::size_t> loop;
   std::size_t at = first;
   int enteredBy = 0;
@@ -77,7 +78,8 @@ std::vector<std::size_t> walkLoop(const cellgraph::PieceNeighbours& neighbours, 
     seen[at] = 1;
     entry[at] = enteredBy;
     loop.push_back(at);
-    const std::optional<cellgraph::PieceNeighbours::Crossing> next = neighbours.across(loops, at, 1 - enteredBy);
+    const std::optional<cellgraph::PieceNeighbours::Crossing> next =
+        neighbours.across(loops, spiralEnds, at, 1 - enteredBy);
     if (!next) throw std::logic_error("SliceFaces: a loop does not close");
     enteredBy = next->end;
     at = next->piece;
@@ -115,11 +117,12 @@ std::map<std::uint32_t, SliceFace> SliceFaces::facesOf(const IntervalLoops& loop
   if (const std::optional<std::uint32_t> node = graph_.unboundedNode(interval)) {
     faces[*node] = SliceFace{*node, 0, true, {}};
   }
+  const cellgraph::SpiralEnds spiralEnds = neighbours_->spiralEnds(loops);
   std::vector<char> seen(loops.pieces.size(), 0);
   std::vector<int> entry(loops.pieces.size(), 0);
   for (std::size_t first = 0; first < loops.pieces.size(); ++first) {
     if (seen[first]) continue;
-    const std::vector<std::size_t> members = walkLoop(*neighbours_, loops, first, seen, entry);
+    const std::vector<std::size_t> members = walkLoop(*neighbours_, loops, spiralEnds, first, seen, entry);
     const std::optional<std::uint32_t> node = graph_.nodeOfPiece(loops.pieceIndices[first], interval);
     if (!node) throw std::logic_error("SliceFaces: a free piece has no node");
     SliceLoop loop;

@@ -40,6 +40,28 @@ PieceNeighbours::PieceNeighbours(const Arrangement& arrangement, const CellGraph
   }
 }
 
+SpiralEnds PieceNeighbours::spiralEnds(const IntervalLoops& loops) const {
+  SpiralEnds ends;
+  for (std::size_t id = 0; id < loops.pieces.size(); ++id) {
+    const Piece& piece = loops.pieces[id];
+    // A piece ending at a spiral is its slab's first gap (low end) or last (high end).
+    if (piece.gap == 0) ends.push_back({spiralOf(piece.patch, 0), id});
+    if (piece.gap + 1 == slabOf(piece).faces.size()) ends.push_back({spiralOf(piece.patch, 1), id});
+  }
+  std::sort(ends.begin(), ends.end());
+  return ends;
+}
+
+std::optional<PieceNeighbours::Crossing> PieceNeighbours::across(const IntervalLoops& loops, const SpiralEnds& ends,
+                                                                 std::size_t id, std::size_t end) const {
+  if (const std::optional<Crossing> next = acrossCurve(loops, id, end)) return next;
+  const std::uint32_t spiral = spiralOf(loops.piece(id).patch, static_cast<int>(end));
+  SpiralEndPieces ending;
+  const auto first = std::lower_bound(ends.begin(), ends.end(), std::pair(spiral, std::size_t{0}));
+  for (auto at = first; at != ends.end() && at->first == spiral; ++at) ending.push_back(at->second);
+  return aroundSpiral(loops, id, spiral, ending);
+}
+
 bool PieceNeighbours::gluedAroundSpiral(const Piece& a, const Piece& b) const {
   const std::uint64_t first = codeOf(faceOf(a)), second = codeOf(faceOf(b));
   return spiralGlues_.count({first, second}) != 0 || spiralGlues_.count({second, first}) != 0;

@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include <boost/container/small_vector.hpp>
+
 #include "freespace/topology/cell_graph.h"
 
 namespace freespace::cellgraph {
@@ -75,6 +77,13 @@ struct LiveState {
   const Piece& piece(std::size_t id) const { return (*pieceOfIndex)[id]; }
 };
 
+/// Pieces ending at one spiral (a few: as many as the patches that end there).
+using SpiralEndPieces = boost::container::small_vector<std::size_t, 8>;
+
+/// The pieces of an IntervalLoops that end at spirals: (spiral, piece), by spiral.
+/// Looking a spiral up here is cheaper than trying each patch that ends there.
+using SpiralEnds = std::vector<std::pair<std::uint32_t, std::size_t>>;
+
 /// How the free pieces of a slice join into loops (docs/design.md section 7): across
 /// a curve, to the free piece of the curve's other patch; at a spiral, to the other
 /// piece ending there (the one glued to it around the spiral when more end there).
@@ -101,7 +110,9 @@ class PieceNeighbours {
 
   /// The free pieces that end at a spiral.
   template <class State>
-  std::vector<std::size_t> endPiecesAt(const State& state, std::uint32_t spiral) const;
+  SpiralEndPieces endPiecesAt(const State& state, std::uint32_t spiral) const;
+  /// The free pieces of `loops` that end at spirals (every spiral's endPiecesAt).
+  SpiralEnds spiralEnds(const IntervalLoops& loops) const;
 
   /// The piece across a piece's low (0) or high (1) end: across a curve, or the one
   /// glued to it around the spiral there; none when that is unclear.
@@ -114,6 +125,9 @@ class PieceNeighbours {
   /// The neighbour across a piece's end (as neighbour()) and the neighbour's end there.
   template <class State>
   std::optional<Crossing> across(const State& state, std::size_t id, std::size_t end) const;
+  /// across(), looking the pieces at spirals up in `ends` (spiralEnds(loops)).
+  std::optional<Crossing> across(const IntervalLoops& loops, const SpiralEnds& ends, std::size_t id,
+                                 std::size_t end) const;
 
   /// The number of the spiral at a patch's segment end 0 or 1.
   std::uint32_t spiralOf(std::uint32_t patch, int end) const { return spiralOfEnd_[patch][end]; }
@@ -125,6 +139,10 @@ class PieceNeighbours {
   /// curveNeighbour, with the neighbour's end on the curve.
   template <class State>
   std::optional<Crossing> acrossCurve(const State& state, std::size_t id, std::size_t end) const;
+  /// The piece glued to piece `id` around the spiral at its end, of those ending there.
+  template <class State>
+  std::optional<Crossing> aroundSpiral(const State& state, std::size_t id, std::uint32_t spiral,
+                                       const SpiralEndPieces& ending) const;
 
   const Arrangement& arrangement_;
   const CellGraph& numbering_;
@@ -159,8 +177,8 @@ std::optional<PieceNeighbours::Crossing> PieceNeighbours::acrossCurve(const Stat
 }
 
 template <class State>
-std::vector<std::size_t> PieceNeighbours::endPiecesAt(const State& state, std::uint32_t spiral) const {
-  std::vector<std::size_t> found;
+SpiralEndPieces PieceNeighbours::endPiecesAt(const State& state, std::uint32_t spiral) const {
+  SpiralEndPieces found;
   for (const auto& [patch, end] : patchesAtSpiral_[spiral]) {
     const std::optional<std::uint32_t> slab = state.slabOf(patch);
     if (!slab) continue;
@@ -175,9 +193,15 @@ template <class State>
 std::optional<PieceNeighbours::Crossing> PieceNeighbours::across(const State& state, std::size_t id,
                                                                  std::size_t end) const {
   if (const std::optional<Crossing> next = acrossCurve(state, id, end)) return next;
+  const std::uint32_t spiral = spiralOf(state.piece(id).patch, static_cast<int>(end));
+  return aroundSpiral(state, id, spiral, endPiecesAt(state, spiral));
+}
+
+template <class State>
+std::optional<PieceNeighbours::Crossing> PieceNeighbours::aroundSpiral(const State& state, std::size_t id,
+                                                                       std::uint32_t spiral,
+                                                                       const SpiralEndPieces& ending) const {
   const Piece& piece = state.piece(id);
-  const std::uint32_t spiral = spiralOf(piece.patch, static_cast<int>(end));
-  const std::vector<std::size_t> ending = endPiecesAt(state, spiral);
   std::optional<std::size_t> found;
   for (std::size_t other : ending) {
     if (other == id) continue;

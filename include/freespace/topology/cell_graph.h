@@ -91,6 +91,17 @@ class CellGraph {
   std::size_t intervalCount() const { return std::max<std::size_t>(1, parts_.criticalAngles.size()); }
   const std::vector<CellGraphNode>& nodes() const { return parts_.nodes; }
   const std::vector<CellGraphEdge>& edges() const { return parts_.edges; }
+  /// The edges at a node: indices into edges(), increasing (an edge from a node to
+  /// itself twice).
+  struct EdgeIndices {
+    const std::uint32_t* first;
+    const std::uint32_t* last;
+    const std::uint32_t* begin() const { return first; }
+    const std::uint32_t* end() const { return last; }
+  };
+  EdgeIndices edgesAt(std::uint32_t node) const {
+    return {edgesByNode_.data() + firstEdgeOfNode_[node], edgesByNode_.data() + firstEdgeOfNode_[node + 1]};
+  }
 
   /// The nodes from `from` to `to` joined by edges (both included) of least cost:
   /// each edge costs 1, and leaving a node thinner than kThinArc (arcWidth) through the
@@ -144,12 +155,16 @@ class CellGraph {
 
   void numberPieces(const Arrangement& arrangement);
   void checkParts(std::size_t cellCount, AngleAlgebra& algebra) const;
+  void indexEdges();
   std::optional<std::uint32_t> nodeAtRun(const std::vector<NodeRun>& runs, std::uint32_t interval) const;
 
   Parts parts_;
   std::vector<std::uint32_t> firstSlabOfPatch_;
   std::vector<std::uint32_t> firstGapOfSlab_;
   std::size_t pieceCount_ = 0;
+  // edgesAt: the edges of node n are edgesByNode_[firstEdgeOfNode_[n] .. firstEdgeOfNode_[n + 1]).
+  std::vector<std::uint32_t> firstEdgeOfNode_;
+  std::vector<std::uint32_t> edgesByNode_;
 };
 
 }  // namespace freespace
