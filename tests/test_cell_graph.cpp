@@ -199,7 +199,8 @@ TEST_P(BundledCellGraph, SliceFacesHoldTheirConfigurations) {
   const CellGraph& graph = space.cellGraph();
   const double scale = space.meshes().scale;
   RandomConfigurations random(space, 99);
-  const SliceFaces sliceFaces(space.arrangement(), graph, [&](SubFaceId face) { return space.cellOfSubFace(face); });
+  const SliceFaces sliceFaces(
+      space.arrangement(), graph, [&](SubFaceId face) { return space.cellOfSubFace(face); }, space.algebra());
   int checked = 0;
   for (int slice = 0; slice < 6; ++slice) {
     const double theta = random.next().theta;
@@ -250,7 +251,8 @@ TEST_P(BundledCellGraph, OneNodesFaceIsTheWholeSlicesFaceOfIt) {
   const FreeSpace space(loaded.robot, loaded.world);
   const CellGraph& graph = space.cellGraph();
   RandomConfigurations random(space, 7);
-  const SliceFaces sliceFaces(space.arrangement(), graph, [&](SubFaceId face) { return space.cellOfSubFace(face); });
+  const SliceFaces sliceFaces(
+      space.arrangement(), graph, [&](SubFaceId face) { return space.cellOfSubFace(face); }, space.algebra());
   int compared = 0;
   for (int slice = 0; slice < 12; ++slice) {
     const AlgebraicAngle angle = AlgebraicAngle::rational(HalfAngle::fromRadians(random.next().theta));

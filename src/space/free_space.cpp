@@ -187,8 +187,8 @@ const SliceFaces& FreeSpace::sliceFaces() const {
   const CellGraph& graph = cellGraph();
   const std::lock_guard lock(impl_->firstUse);
   if (!impl_->sliceFaces) {
-    impl_->sliceFaces =
-        std::make_unique<SliceFaces>(impl_->arrangement, graph, [this](SubFaceId face) { return cellOfSubFace(face); });
+    impl_->sliceFaces = std::make_unique<SliceFaces>(
+        impl_->arrangement, graph, [this](SubFaceId face) { return cellOfSubFace(face); }, impl_->algebra);
     // Every path query asks for its cell's box: found with what its walk needs.
     if (!impl_->cellBoxes) impl_->cellBoxes = impl_->findCellBoxes();
   }

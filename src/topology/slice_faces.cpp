@@ -89,24 +89,63 @@ std::vector<std::size_t> walkLoop(const cellgraph::PieceNeighbours& neighbours, 
 
 }  // namespace
 
-SliceFaces::SliceFaces(const Arrangement& arrangement, const CellGraph& graph, CellGraph::CellOfFace cellOf)
+SliceFaces::SliceFaces(const Arrangement& arrangement, const CellGraph& graph, CellGraph::CellOfFace cellOf,
+                       AngleAlgebra& algebra)
     : arrangement_(arrangement),
       graph_(graph),
       cellOf_(std::move(cellOf)),
       neighbours_(std::make_unique<cellgraph::PieceNeighbours>(arrangement, graph)),
       piecesOfNode_(graph.nodes().size()) {
-  const std::vector<std::vector<CellGraph::NodeRun>>& runs = graph.parts().runsOfPiece;
+  const std::vector<std::vector<CellGraph::NodeRun>>& runsOfPiece = graph.parts().runsOfPiece;
   for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
     const std::vector<PatchSlab>& slabs = arrangement.subdivisions[patch].slabs;
+    // The last slab placed and the critical angle where it ends: the next slab mostly
+    // starts there.
+    std::optional<std::pair<const PatchSlab*, std::uint32_t>> lastPlaced;
     for (std::uint32_t slab = 0; slab < slabs.size(); ++slab) {
+      std::optional<SlabIntervals> intervals;  // found for a slab with free pieces
       for (std::uint32_t gap = 0; gap < slabs[slab].faces.size(); ++gap) {
-        for (const CellGraph::NodeRun& run : runs[graph.pieceIndex(patch, slab, gap)]) {
-          std::vector<PieceId>& pieces = piecesOfNode_[run.node];
-          if (pieces.empty() || pieces.back() != PieceId{patch, slab, gap}) pieces.push_back({patch, slab, gap});
+        const std::size_t index = graph.pieceIndex(patch, slab, gap);
+        const std::vector<CellGraph::NodeRun>& runs = runsOfPiece[index];
+        if (runs.empty()) continue;
+        if (!intervals) intervals = intervalsOfSlab(slabs[slab], lastPlaced, algebra);
+        const auto add = [&](std::uint32_t node, std::uint32_t from, std::uint32_t to) {
+          piecesOfNode_[node].push_back({{patch, slab, gap}, from, to});
+        };
+        // Over each run of the slab's intervals, the piece's node from its start on,
+        // changing where its runs say.
+        for (const auto& [first, last] : intervals->runs) {
+          std::optional<std::uint32_t> node = graph.nodeOfPiece(index, first);
+          std::uint32_t from = first;
+          for (const CellGraph::NodeRun& run : runs) {
+            if (run.interval <= first || run.interval > last) continue;
+            if (node) add(*node, from, run.interval - 1);
+            node = run.node;
+            from = run.interval;
+          }
+          if (node) add(*node, from, last);
         }
       }
+      lastPlaced.reset();
+      if (intervals && intervals->end) lastPlaced = {{&slabs[slab], *intervals->end}};
     }
   }
+}
+
+SliceFaces::SlabIntervals SliceFaces::intervalsOfSlab(const PatchSlab& slab,
+                                                      std::optional<std::pair<const PatchSlab*, std::uint32_t>> before,
+                                                      AngleAlgebra& algebra) const {
+  const auto last = static_cast<std::uint32_t>(graph_.intervalCount() - 1);
+  // A slab without events, or from an event once around back to it, holds every interval.
+  if (graph_.criticalAngles().empty() || algebra.compare(slab.from, slab.to) == 0) return {{{0, last}}, std::nullopt};
+  // Otherwise its ends are critical angles (those of the slabs of free cells' patches).
+  const std::uint32_t from = before && algebra.compare(before->first->to, slab.from) == 0
+                                 ? before->second
+                                 : graph_.intervalOf(slab.from, algebra);
+  const std::uint32_t to = graph_.intervalOf(slab.to, algebra);
+  if (from < to) return {{{from, to - 1}}, to};
+  if (to == 0) return {{{from, last}}, to};
+  return {{{0, to - 1}, {from, last}}, to};
 }
 
 SliceFaces::~SliceFaces() = default;
@@ -157,32 +196,15 @@ std::optional<SliceFace> SliceFaces::faceOf(std::uint32_t node, const AlgebraicA
     throw std::invalid_argument("SliceFaces: the angle is critical");
   }
   if (!graph_.runHolds(graph_.nodes()[node], interval)) return std::nullopt;
-  // The node's pieces whose slab holds the angle and which bound its face over this
-  // interval: of each of the node's patches whose range holds the angle, the slab
-  // holding it (slabAt: a bisection among the patch's slabs, not a test of each of the
-  // node's slabs, which may be thousands along its run).
+  // The node's pieces over the angle's interval.
   IntervalLoops loops;
   loops.sample = rationalAngle;
-  const std::vector<PieceId>& pieces = piecesOfNode_[node];  // by patch, slab, gap
-  for (auto first = pieces.begin(); first != pieces.end();) {
-    const std::uint32_t patch = (*first)[0];
-    const auto last = std::find_if(first, pieces.end(), [&](const PieceId& piece) { return piece[0] != patch; });
-    const PatchSubdivision& subdivision = arrangement_.subdivisions[patch];
-    const PatchSlab* slab = algebra.contains(arrangement_.patches[patch].patch.range, rationalAngle)
-                                ? slabAt(subdivision, rationalAngle, algebra)
-                                : nullptr;
-    if (slab) {
-      const auto slabIndex = static_cast<std::uint32_t>(slab - subdivision.slabs.data());
-      auto piece = std::lower_bound(first, last, PieceId{patch, slabIndex, 0});
-      if (piece != last && (*piece)[1] == slabIndex) loops.slabs.push_back({patch, slabIndex});
-      for (; piece != last && (*piece)[1] == slabIndex; ++piece) {
-        const std::size_t index = graph_.pieceIndex(patch, slabIndex, (*piece)[2]);
-        if (graph_.nodeOfPiece(index, interval) != node) continue;
-        loops.pieces.push_back({patch, slabIndex, (*piece)[2]});
-        loops.pieceIndices.push_back(index);
-      }
-    }
-    first = last;
+  for (const NodePiece& entry : piecesOfNode_[node]) {
+    if (interval < entry.firstInterval || interval > entry.lastInterval) continue;
+    const auto& [patch, slab, gap] = entry.piece;
+    if (loops.slabs.empty() || loops.slabs.back().first != patch) loops.slabs.push_back({patch, slab});
+    loops.pieces.push_back({patch, slab, gap});
+    loops.pieceIndices.push_back(graph_.pieceIndex(patch, slab, gap));
   }
   std::map<std::uint32_t, SliceFace> faces = facesOf(loops, interval);
   const auto found = faces.find(node);

@@ -43,7 +43,9 @@ struct IntervalLoops;
 /// loop given the node the graph keeps for its pieces.
 class SliceFaces {
  public:
-  SliceFaces(const Arrangement& arrangement, const CellGraph& graph, CellGraph::CellOfFace cellOf);
+  /// `algebra` places the slabs' ends among the graph's critical angles (once, here).
+  SliceFaces(const Arrangement& arrangement, const CellGraph& graph, CellGraph::CellOfFace cellOf,
+             AngleAlgebra& algebra);
   ~SliceFaces();
   SliceFaces(const SliceFaces&) = delete;
   SliceFaces& operator=(const SliceFaces&) = delete;
@@ -61,6 +63,23 @@ class SliceFaces {
  private:
   /// A free piece: (patch, slab, gap).
   using PieceId = std::array<std::uint32_t, 3>;
+  /// A piece bounding a node's face over the intervals firstInterval .. lastInterval.
+  struct NodePiece {
+    PieceId piece;
+    std::uint32_t firstInterval;
+    std::uint32_t lastInterval;
+  };
+
+  /// A free slab's intervals: runs of them that do not wrap around (first, last), and
+  /// the critical angle where it ends (none for a whole circle).
+  struct SlabIntervals {
+    std::vector<std::array<std::uint32_t, 2>> runs;
+    std::optional<std::uint32_t> end;
+  };
+  /// The intervals of a free slab; `before`, a slab and the critical angle where it
+  /// ends (the slab's start, when it is the same angle: one comparison, not a search).
+  SlabIntervals intervalsOfSlab(const PatchSlab& slab, std::optional<std::pair<const PatchSlab*, std::uint32_t>> before,
+                                AngleAlgebra& algebra) const;
 
   /// The faces the pieces' loops bound at their angle (in `interval`), by node; the
   /// unbounded node's (empty) among them when the interval has one.
@@ -70,9 +89,10 @@ class SliceFaces {
   const CellGraph& graph_;
   CellGraph::CellOfFace cellOf_;
   std::unique_ptr<const cellgraph::PieceNeighbours> neighbours_;
-  /// The pieces that bound each node's face over some interval of its run, node by
-  /// node, by CellGraph::pieceIndex.
-  std::vector<std::vector<PieceId>> piecesOfNode_;
+  /// The pieces that bound each node's face, with the intervals over which they do
+  /// (the face at an angle is made of those whose intervals hold the angle's: no
+  /// search of slabs by angle), node by node, by CellGraph::pieceIndex.
+  std::vector<std::vector<NodePiece>> piecesOfNode_;
 };
 
 }  // namespace freespace
