@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "bundled_problem.h"
+#include "freespace/numbers/angle_reduction.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/scenes/scene_generator.h"
 #include "freespace/space/free_space.h"
@@ -91,6 +92,24 @@ TEST_P(BundledCellGraph, EdgesJoinNeighbouringIntervals) {
     EXPECT_EQ(edge.angle, to.firstInterval);
   }
   for (const CellGraphNode& node : graph.nodes()) EXPECT_LE(node.firstInterval, node.lastInterval);
+}
+
+/// Whether each node's edges (CellGraph::edgesAt) are the edges naming it, in order.
+void expectEdgesIndexedByNode(const CellGraph& graph) {
+  for (std::uint32_t node = 0; node < graph.nodes().size(); ++node) {
+    std::vector<std::uint32_t> naming;
+    for (std::uint32_t edge = 0; edge < graph.edges().size(); ++edge) {
+      if (graph.edges()[edge].from == node || graph.edges()[edge].to == node) naming.push_back(edge);
+    }
+    const CellGraph::EdgeIndices indexed = graph.edgesAt(node);
+    EXPECT_EQ(std::vector<std::uint32_t>(indexed.begin(), indexed.end()), naming) << "node " << node;
+  }
+}
+
+TEST_P(BundledCellGraph, EachNodesEdgesAreIndexed) {
+  const LoadedProblem loaded = problem();
+  const FreeSpace space(loaded.robot, loaded.world);
+  expectEdgesIndexedByNode(space.cellGraph());
 }
 
 /// Every node's point lies in its face: free in the node's cell by the exact
@@ -246,6 +265,34 @@ TEST_P(BundledCellGraph, SliceFacesHoldTheirConfigurations) {
 /// One node's face from its own pieces (SliceFaces::faceOf) against the whole slice's
 /// (SliceFaces::at): the same loops, corner for corner, for every node at random
 /// angles; none for nodes whose run misses the angle.
+/// How many nodes' faces SliceFaces::faceOf makes at an angle, each checked against
+/// the whole slice's face of that node (none for a critical angle).
+int compareNodeFacesAt(const FreeSpace& space, const SliceFaces& sliceFaces, const AlgebraicAngle& angle) {
+  std::vector<SliceFace> faces;
+  try {
+    faces = sliceFaces.at(angle, space.algebra());
+  } catch (const std::invalid_argument&) {
+    return 0;  // a critical angle
+  }
+  std::map<std::uint32_t, const SliceFace*> byNode;
+  for (const SliceFace& face : faces) byNode[face.node] = &face;
+  int compared = 0;
+  for (std::uint32_t node = 0; node < space.cellGraph().nodes().size(); ++node) {
+    const std::optional<SliceFace> alone = sliceFaces.faceOf(node, angle, space.algebra());
+    const auto whole = byNode.find(node);
+    EXPECT_EQ(alone.has_value(), whole != byNode.end()) << "node " << node;
+    if (!alone || whole == byNode.end()) continue;
+    EXPECT_EQ(alone->cell, whole->second->cell);
+    EXPECT_EQ(alone->unbounded, whole->second->unbounded);
+    EXPECT_EQ(alone->loops.size(), whole->second->loops.size()) << "node " << node;
+    for (std::size_t k = 0; k < std::min(alone->loops.size(), whole->second->loops.size()); ++k) {
+      EXPECT_EQ(alone->loops[k].corners, whole->second->loops[k].corners) << "node " << node << " loop " << k;
+    }
+    ++compared;
+  }
+  return compared;
+}
+
 TEST_P(BundledCellGraph, OneNodesFaceIsTheWholeSlicesFaceOfIt) {
   const LoadedProblem loaded = problem();
   const FreeSpace space(loaded.robot, loaded.world);
@@ -255,30 +302,20 @@ TEST_P(BundledCellGraph, OneNodesFaceIsTheWholeSlicesFaceOfIt) {
       space.arrangement(), graph, [&](SubFaceId face) { return space.cellOfSubFace(face); }, space.algebra());
   int compared = 0;
   for (int slice = 0; slice < 12; ++slice) {
-    const AlgebraicAngle angle = AlgebraicAngle::rational(HalfAngle::fromRadians(random.next().theta));
-    std::vector<SliceFace> faces;
-    try {
-      faces = sliceFaces.at(angle, space.algebra());
-    } catch (const std::invalid_argument&) {
-      continue;  // a critical angle
-    }
-    std::map<std::uint32_t, const SliceFace*> byNode;
-    for (const SliceFace& face : faces) byNode[face.node] = &face;
-    for (std::uint32_t node = 0; node < graph.nodes().size(); ++node) {
-      const std::optional<SliceFace> alone = sliceFaces.faceOf(node, angle, space.algebra());
-      const auto whole = byNode.find(node);
-      ASSERT_EQ(alone.has_value(), whole != byNode.end()) << "node " << node;
-      if (!alone) continue;
-      EXPECT_EQ(alone->cell, whole->second->cell);
-      EXPECT_EQ(alone->unbounded, whole->second->unbounded);
-      ASSERT_EQ(alone->loops.size(), whole->second->loops.size()) << "node " << node;
-      for (std::size_t k = 0; k < alone->loops.size(); ++k) {
-        EXPECT_EQ(alone->loops[k].corners, whole->second->loops[k].corners) << "node " << node << " loop " << k;
-      }
-      ++compared;
-    }
+    compared +=
+        compareNodeFacesAt(space, sliceFaces, AlgebraicAngle::rational(HalfAngle::fromRadians(random.next().theta)));
   }
   EXPECT_GT(compared, 10);
+  // At the first and the last interval of every node's run (where its pieces' tabled
+  // intervals start and end, across theta = pi when they wrap around).
+  int atEnds = 0;
+  for (const CellGraphNode& node : graph.nodes()) {
+    atEnds += compareNodeFacesAt(space, sliceFaces, node.sample);
+    const auto [low, width] = graph.arc(node.lastInterval, node.lastInterval);
+    atEnds += compareNodeFacesAt(space, sliceFaces,
+                                 AlgebraicAngle::rational(HalfAngle::fromRadians(reducedAngle(low + width / 2))));
+  }
+  EXPECT_GE(atEnds, static_cast<int>(graph.nodes().size()));
 }
 
 /// A saved free space holds its graph: read back, it has the same nodes and edges,
@@ -306,6 +343,7 @@ TEST(CellGraphFile, TheGraphIsSavedAndReadBack) {
     const CellGraphEdge &a = before.edges()[i], &b = after.edges()[i];
     EXPECT_EQ(std::tie(a.from, a.to, a.angle), std::tie(b.from, b.to, b.angle));
   }
+  expectEdgesIndexedByNode(after);
   RandomConfigurations random(built, 11);
   int different = 0;
   for (int sample = 0; sample < 500; ++sample) {

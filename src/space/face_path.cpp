@@ -230,7 +230,6 @@ BoundaryPoint nearestOnBoundary(const SliceFace& face, const std::array<double, 
       }
     }
   }
-  if (nearestSquared == HUGE_VAL) return {};
   return {std::sqrt(nearestSquared), nearestPoint};
 }
 

@@ -468,8 +468,8 @@ class RouteWalker {
         const CellGraphNode& thin = graph_.nodes()[route[reached]];
         const std::uint32_t end = *upward ? (thin.lastInterval + 1) % graph_.intervalCount() : thin.firstInterval;
         const CellGraph::EdgeIndices edges = graph_.edgesAt(route[reached]);
-        if (!std::any_of(edges.begin(), edges.end(), [&](std::uint32_t index) {
-              const CellGraphEdge& e = graph_.edges()[index];
+        if (!std::any_of(edges.begin(), edges.end(), [&](std::uint32_t other) {
+              const CellGraphEdge& e = graph_.edges()[other];
               return e.angle == end && joins(e, route[reached], route[reached + 1]);
             })) {
           break;

@@ -770,7 +770,8 @@ void CellGraph::checkParts(std::size_t cellCount, AngleAlgebra& algebra) const {
             "a node of the graph");
   }
   for (const CellGraphEdge& edge : parts_.edges) {
-    require(edge.from < nodes && edge.to < nodes && edge.angle < intervals, "an edge of the graph");
+    require(edge.from < nodes && edge.to < nodes && edge.from != edge.to && edge.angle < intervals,
+            "an edge of the graph");
   }
   require(parts_.runsOfPiece.size() == pieceCount_, "the graph's pieces");
   const auto checkRuns = [&](const std::vector<NodeRun>& runs) {

@@ -87,6 +87,35 @@ std::vector<std::size_t> walkLoop(const cellgraph::PieceNeighbours& neighbours, 
   return loop;
 }
 
+/// A free slab's intervals between critical angles: runs of them that do not wrap
+/// around (first, last), and the critical angle where it ends (none for a whole circle).
+struct SlabIntervals {
+  std::vector<std::array<std::uint32_t, 2>> runs;
+  std::optional<std::uint32_t> end;
+};
+
+/// A slab and the critical angle where it ends.
+struct PlacedSlab {
+  const PatchSlab* slab;
+  std::uint32_t end;
+};
+
+/// The intervals of a free slab. `before`: the slab placed last, whose end is this
+/// slab's start when the two angles are the same (one comparison, not a search).
+SlabIntervals intervalsOfSlab(const CellGraph& graph, const PatchSlab& slab, const std::optional<PlacedSlab>& before,
+                              AngleAlgebra& algebra) {
+  const auto last = static_cast<std::uint32_t>(graph.intervalCount() - 1);
+  // A slab without events, or from an event once around back to it, holds every interval.
+  if (graph.criticalAngles().empty() || algebra.compare(slab.from, slab.to) == 0) return {{{0, last}}, std::nullopt};
+  // Otherwise its ends are critical angles (those of the slabs of free cells' patches).
+  const std::uint32_t from =
+      before && algebra.compare(before->slab->to, slab.from) == 0 ? before->end : graph.intervalOf(slab.from, algebra);
+  const std::uint32_t to = graph.intervalOf(slab.to, algebra);
+  if (from < to) return {{{from, to - 1}}, to};
+  if (to == 0) return {{{from, last}}, to};
+  return {{{0, to - 1}, {from, last}}, to};
+}
+
 }  // namespace
 
 SliceFaces::SliceFaces(const Arrangement& arrangement, const CellGraph& graph, CellGraph::CellOfFace cellOf,
@@ -96,56 +125,38 @@ SliceFaces::SliceFaces(const Arrangement& arrangement, const CellGraph& graph, C
       cellOf_(std::move(cellOf)),
       neighbours_(std::make_unique<cellgraph::PieceNeighbours>(arrangement, graph)),
       piecesOfNode_(graph.nodes().size()) {
-  const std::vector<std::vector<CellGraph::NodeRun>>& runsOfPiece = graph.parts().runsOfPiece;
   for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
     const std::vector<PatchSlab>& slabs = arrangement.subdivisions[patch].slabs;
-    // The last slab placed and the critical angle where it ends: the next slab mostly
-    // starts there.
-    std::optional<std::pair<const PatchSlab*, std::uint32_t>> lastPlaced;
+    std::optional<PlacedSlab> lastPlaced;
     for (std::uint32_t slab = 0; slab < slabs.size(); ++slab) {
       std::optional<SlabIntervals> intervals;  // found for a slab with free pieces
       for (std::uint32_t gap = 0; gap < slabs[slab].faces.size(); ++gap) {
-        const std::size_t index = graph.pieceIndex(patch, slab, gap);
-        const std::vector<CellGraph::NodeRun>& runs = runsOfPiece[index];
-        if (runs.empty()) continue;
-        if (!intervals) intervals = intervalsOfSlab(slabs[slab], lastPlaced, algebra);
-        const auto add = [&](std::uint32_t node, std::uint32_t from, std::uint32_t to) {
-          piecesOfNode_[node].push_back({{patch, slab, gap}, from, to});
-        };
-        // Over each run of the slab's intervals, the piece's node from its start on,
-        // changing where its runs say.
-        for (const auto& [first, last] : intervals->runs) {
-          std::optional<std::uint32_t> node = graph.nodeOfPiece(index, first);
-          std::uint32_t from = first;
-          for (const CellGraph::NodeRun& run : runs) {
-            if (run.interval <= first || run.interval > last) continue;
-            if (node) add(*node, from, run.interval - 1);
-            node = run.node;
-            from = run.interval;
-          }
-          if (node) add(*node, from, last);
-        }
+        if (graph.parts().runsOfPiece[graph.pieceIndex(patch, slab, gap)].empty()) continue;
+        if (!intervals) intervals = intervalsOfSlab(graph, slabs[slab], lastPlaced, algebra);
+        tablePiece({patch, slab, gap}, intervals->runs);
       }
       lastPlaced.reset();
-      if (intervals && intervals->end) lastPlaced = {{&slabs[slab], *intervals->end}};
+      if (intervals && intervals->end) lastPlaced = PlacedSlab{&slabs[slab], *intervals->end};
     }
   }
 }
 
-SliceFaces::SlabIntervals SliceFaces::intervalsOfSlab(const PatchSlab& slab,
-                                                      std::optional<std::pair<const PatchSlab*, std::uint32_t>> before,
-                                                      AngleAlgebra& algebra) const {
-  const auto last = static_cast<std::uint32_t>(graph_.intervalCount() - 1);
-  // A slab without events, or from an event once around back to it, holds every interval.
-  if (graph_.criticalAngles().empty() || algebra.compare(slab.from, slab.to) == 0) return {{{0, last}}, std::nullopt};
-  // Otherwise its ends are critical angles (those of the slabs of free cells' patches).
-  const std::uint32_t from = before && algebra.compare(before->first->to, slab.from) == 0
-                                 ? before->second
-                                 : graph_.intervalOf(slab.from, algebra);
-  const std::uint32_t to = graph_.intervalOf(slab.to, algebra);
-  if (from < to) return {{{from, to - 1}}, to};
-  if (to == 0) return {{{from, last}}, to};
-  return {{{0, to - 1}, {from, last}}, to};
+void SliceFaces::tablePiece(const PieceId& piece, const std::vector<std::array<std::uint32_t, 2>>& slabIntervals) {
+  const std::size_t index = graph_.pieceIndex(piece[0], piece[1], piece[2]);
+  const std::vector<CellGraph::NodeRun>& runs = graph_.parts().runsOfPiece[index];
+  // Over each run of the slab's intervals, the piece's node from the run's start on,
+  // changing where the piece's runs say.
+  for (const auto& [first, last] : slabIntervals) {
+    std::optional<std::uint32_t> node = graph_.nodeOfPiece(index, first);
+    std::uint32_t from = first;
+    for (const CellGraph::NodeRun& run : runs) {
+      if (run.interval <= first || run.interval > last) continue;
+      if (node) piecesOfNode_[*node].push_back({piece, from, run.interval - 1});
+      node = run.node;
+      from = run.interval;
+    }
+    if (node) piecesOfNode_[*node].push_back({piece, from, last});
+  }
 }
 
 SliceFaces::~SliceFaces() = default;

@@ -108,10 +108,7 @@ class PieceNeighbours {
     return crossing ? std::optional(crossing->piece) : std::nullopt;
   }
 
-  /// The free pieces that end at a spiral.
-  template <class State>
-  SpiralEndPieces endPiecesAt(const State& state, std::uint32_t spiral) const;
-  /// The free pieces of `loops` that end at spirals (every spiral's endPiecesAt).
+  /// The free pieces of `loops` that end at spirals.
   SpiralEnds spiralEnds(const IntervalLoops& loops) const;
 
   /// The piece across a piece's low (0) or high (1) end: across a curve, or the one
@@ -129,13 +126,16 @@ class PieceNeighbours {
   std::optional<Crossing> across(const IntervalLoops& loops, const SpiralEnds& ends, std::size_t id,
                                  std::size_t end) const;
 
-  /// The number of the spiral at a patch's segment end 0 or 1.
-  std::uint32_t spiralOf(std::uint32_t patch, int end) const { return spiralOfEnd_[patch][end]; }
   SubFaceId faceOf(const Piece& piece) const { return {piece.patch, slabOf(piece).faces[piece.gap]}; }
   bool gluedAroundSpiral(const Piece& a, const Piece& b) const;
   const PatchSlab& slabOf(const Piece& piece) const { return arrangement_.subdivisions[piece.patch].slabs[piece.slab]; }
 
  private:
+  /// The number of the spiral at a patch's segment end 0 or 1.
+  std::uint32_t spiralOf(std::uint32_t patch, int end) const { return spiralOfEnd_[patch][end]; }
+  /// The free pieces that end at a spiral.
+  template <class State>
+  SpiralEndPieces endPiecesAt(const State& state, std::uint32_t spiral) const;
   /// curveNeighbour, with the neighbour's end on the curve.
   template <class State>
   std::optional<Crossing> acrossCurve(const State& state, std::size_t id, std::size_t end) const;

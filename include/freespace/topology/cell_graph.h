@@ -91,8 +91,7 @@ class CellGraph {
   std::size_t intervalCount() const { return std::max<std::size_t>(1, parts_.criticalAngles.size()); }
   const std::vector<CellGraphNode>& nodes() const { return parts_.nodes; }
   const std::vector<CellGraphEdge>& edges() const { return parts_.edges; }
-  /// The edges at a node: indices into edges(), increasing (an edge from a node to
-  /// itself twice).
+  /// The edges at a node: indices into edges(), increasing.
   struct EdgeIndices {
     const std::uint32_t* first;
     const std::uint32_t* last;

@@ -70,17 +70,9 @@ class SliceFaces {
     std::uint32_t lastInterval;
   };
 
-  /// A free slab's intervals: runs of them that do not wrap around (first, last), and
-  /// the critical angle where it ends (none for a whole circle).
-  struct SlabIntervals {
-    std::vector<std::array<std::uint32_t, 2>> runs;
-    std::optional<std::uint32_t> end;
-  };
-  /// The intervals of a free slab; `before`, a slab and the critical angle where it
-  /// ends (the slab's start, when it is the same angle: one comparison, not a search).
-  SlabIntervals intervalsOfSlab(const PatchSlab& slab, std::optional<std::pair<const PatchSlab*, std::uint32_t>> before,
-                                AngleAlgebra& algebra) const;
-
+  /// Tables a free piece for the nodes whose faces it bounds over its slab's intervals
+  /// (runs of them that do not wrap around: first, last).
+  void tablePiece(const PieceId& piece, const std::vector<std::array<std::uint32_t, 2>>& slabIntervals);
   /// The faces the pieces' loops bound at their angle (in `interval`), by node; the
   /// unbounded node's (empty) among them when the interval has one.
   std::map<std::uint32_t, SliceFace> facesOf(const cellgraph::IntervalLoops& loops, std::uint32_t interval) const;
