@@ -10,11 +10,12 @@ build=${1:?usage: benchmarks/first_path_results.sh BUILD_DIR RUNS [PROBLEM.cfg .
 runs=${2:?usage: benchmarks/first_path_results.sh BUILD_DIR RUNS [PROBLEM.cfg ...]}
 shift 2
 problems=("$@")
+given="${*:+ $*}"  # the problems as given, for the command line printed
 if [ ${#problems[@]} -eq 0 ]; then problems=("$(dirname "$0")"/problems/*.cfg); fi
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 
-echo "Command: \`benchmarks/first_path_results.sh build $runs\`; machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p' | head -1); $(date +%Y-%m-%d)."
+echo "Command: \`benchmarks/first_path_results.sh build $runs$given\`; machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p' | head -1); $(date +%Y-%m-%d)."
 echo
 echo "| problem | first path ms, median | least | most |"
 echo "| --- | --- | --- | --- |"

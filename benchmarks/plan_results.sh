@@ -8,9 +8,10 @@ build=${1:?usage: benchmarks/plan_results.sh BUILD_DIR SECONDS_LIMIT [PROBLEM.cf
 limit=${2:?usage: benchmarks/plan_results.sh BUILD_DIR SECONDS_LIMIT [PROBLEM.cfg ...]}
 shift 2
 problems=("$@")
+given="${*:+ $*}"  # the problems as given, for the command line printed
 if [ ${#problems[@]} -eq 0 ]; then problems=("$(dirname "$0")"/problems/*.cfg); fi
 
-echo "Command: \`benchmarks/plan_results.sh build $limit\`; machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p' | head -1); $(date +%Y-%m-%d)."
+echo "Command: \`benchmarks/plan_results.sh build $limit$given\`; machine: $(nproc) cores, $(lscpu | sed -n 's/^Model name: *//p' | head -1); $(date +%Y-%m-%d)."
 echo
 echo "| problem | status | converged | c_lo (path) | c_hi (any path) | c_lo / c_hi | waypoints | first path s | query s | construction s | boxes |"
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |"
