@@ -99,9 +99,8 @@ FreeSpace::FreeSpace(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 FreeSpace::~FreeSpace() = default;
 
 FreeSpace::Impl::QueryTools::QueryTools(const Impl& impl)
-    : rays(impl.arrangement, algebra), boundary(impl.arrangement, algebra, [&impl](SubFaceId face) {
-        return impl.cells->cellOfShell(impl.arrangement.shells.shellOf(face)).has_value();
-      }) {}
+    : rays(impl.arrangement, algebra),
+      boundary(impl.arrangement, algebra, [&impl](SubFaceId face) { return impl.cellOfSubFace(face).has_value(); }) {}
 
 FreeSpace::Impl::~Impl() {
   for (IdleSlot& slot : idleSlots) delete slot.tools.exchange(nullptr);
@@ -250,7 +249,7 @@ std::vector<std::optional<PatchBox>> FreeSpace::Impl::findCellBoxes() const {
   std::vector<std::vector<std::uint32_t>> cellsOfPatch(arrangement.patches.size());
   for (std::uint32_t patch = 0; patch < arrangement.patches.size(); ++patch) {
     for (std::uint32_t face = 0; face < arrangement.subdivisions[patch].faceCount; ++face) {
-      const std::optional<std::uint32_t> cell = cells->cellOfShell(arrangement.shells.shellOf({patch, face}));
+      const std::optional<std::uint32_t> cell = cellOfSubFace({patch, face});
       if (cell && *cell != FreeCells::kUnbounded) cellsOfPatch[patch].push_back(*cell);
     }
   }
@@ -294,7 +293,7 @@ std::optional<std::uint32_t> FreeSpace::cellOfShell(std::uint32_t shell) const {
   return impl_->cells->cellOfShell(shell);
 }
 std::optional<std::uint32_t> FreeSpace::cellOfSubFace(SubFaceId face) const {
-  return cellOfShell(impl_->arrangement.shells.shellOf(face));
+  return impl_->cellOfSubFace(face);
 }
 AngleAlgebra& FreeSpace::algebra() const { return impl_->algebra; }
 const PerturbedMeshes& FreeSpace::meshes() const { return impl_->meshes; }

@@ -98,6 +98,10 @@ struct FreeSpace::Impl {
   Location locationToward(const SliceRays& queryRays, const Pose2& pose, const std::array<Rational, 2>& from,
                           const AlgebraicAngle& at, const std::array<double, 2>& boundaryPoint) const;
 
+  /// The free cell a sub-face bounds (its positive side), if it bounds one.
+  std::optional<std::uint32_t> cellOfSubFace(SubFaceId face) const {
+    return cells->cellOfShell(arrangement.shells.shellOf(face));
+  }
   /// Free (with its cell) or blocked, from the first sub-face a ray meets: a point
   /// sees a sub-face's positive side across free space only if that side is free,
   /// i.e. its shell is free (a closed shell's sides are all free or all blocked, and
@@ -111,7 +115,7 @@ struct FreeSpace::Impl {
   /// locationOf).
   Location locationSeeing(SubFaceId face, bool fromPositiveSide) const {
     if (!fromPositiveSide) return {false, 0};
-    const std::optional<std::uint32_t> cell = cells->cellOfShell(arrangement.shells.shellOf(face));
+    const std::optional<std::uint32_t> cell = cellOfSubFace(face);
     if (!cell) return {false, 0};
     return {true, *cell};
   }
