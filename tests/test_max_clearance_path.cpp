@@ -93,7 +93,9 @@ TEST_P(SolvedProblems, PathsAreFreeAndKeepTheirCertifiedClearance) {
   expectCertifiedPath(problem, path);
 }
 
-INSTANTIATE_TEST_SUITE_P(Bundled, SolvedProblems, ::testing::Values("flip_window", "random_polyhedra"));
+// The maze converges only once its chain by lower bounds is raised (its boxes' own
+// chain stays below 98% of c_hi after a minute).
+INSTANTIATE_TEST_SUITE_P(Bundled, SolvedProblems, ::testing::Values("flip_window", "random_polyhedra", "maze"));
 
 /// A bundled problem and the seconds its query is given.
 struct TimedProblem {
@@ -104,7 +106,7 @@ struct TimedProblem {
 class RoutedProblems : public ::testing::TestWithParam<TimedProblem> {};
 
 // Problems whose first path comes from the cell graph's route (the bounds stopped
-// early): within milliseconds (half a second in the maze).
+// early): within milliseconds.
 TEST_P(RoutedProblems, TheRoutesPathIsCertified) {
   Problem problem = bundled(GetParam().name);
   problem.options.secondsLimit = GetParam().seconds;
@@ -117,8 +119,7 @@ TEST_P(RoutedProblems, TheRoutesPathIsCertified) {
 INSTANTIATE_TEST_SUITE_P(Bundled, RoutedProblems,
                          ::testing::Values(TimedProblem{"room_door", 0.5}, TimedProblem{"turn_around", 0.5},
                                            TimedProblem{"tetra_floorplan", 0.5}, TimedProblem{"overhang", 0.5},
-                                           TimedProblem{"keyhole", 2}, TimedProblem{"keyhole_wide", 2},
-                                           TimedProblem{"maze", 3}),
+                                           TimedProblem{"keyhole", 2}, TimedProblem{"keyhole_wide", 2}),
                          [](const auto& info) { return std::string(info.param.name); });
 
 // Keyhole's bar (0.5 wide) passes a slot 0.75 wide, so no path keeps more than 0.125

@@ -21,8 +21,18 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// The share of a query's time the routed path's raising may take.
+/// The share of a query's time one raising of a path may take.
 constexpr double kRaisingShare = 0.4;
+/// How much of a chain's bottleneck its path keeps when shortened before raising, and
+/// how much wider than the last chain raised a chain must be to be raised in turn.
+constexpr double kChainShortening = 0.99;
+constexpr double kRaiseAgain = 1.01;
+
+/// When a raising that starts now must end.
+Clock::time_point raisingDeadline(Clock::time_point deadline, const MaxClearancePathOptions& options) {
+  return std::min(deadline, Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                               std::chrono::duration<double>(kRaisingShare * options.secondsLimit)));
+}
 
 std::string poseText(const Pose2& pose) {
   std::ostringstream text;
@@ -158,26 +168,42 @@ std::optional<Passage> certifiedRoutePath(const FreeSpace& space, const MotionCh
 
 /// Replaces runs of waypoints between `first` and `last` by single motions certified
 /// to keep at least `level`, the longest found by doubling jumps from each waypoint.
-void shorten(const MotionChecker& checker, std::size_t first, std::size_t last, double level, MaxClearancePath& path) {
-  std::vector<Pose2> waypoints(path.waypoints.begin(), path.waypoints.begin() + first + 1);
-  std::vector<double> clearances(path.motionClearance.begin(), path.motionClearance.begin() + first);
+void shorten(const MotionChecker& checker, std::size_t first, std::size_t last, double level,
+             std::vector<Pose2>& waypoints, std::vector<double>& motionClearance) {
+  std::vector<Pose2> shorter(waypoints.begin(), waypoints.begin() + first + 1);
+  std::vector<double> clearances(motionClearance.begin(), motionClearance.begin() + first);
   for (std::size_t at = first; at < last;) {
     std::size_t reach = at + 1;
-    double reachClearance = path.motionClearance[at];
+    double reachClearance = motionClearance[at];
     for (std::size_t jump = 2; at + jump / 2 < last; jump *= 2) {
       const std::size_t to = std::min(last, at + jump);
-      if (!checker.keepsClearance(path.waypoints[at], path.waypoints[to], level, 64)) break;
+      if (!checker.keepsClearance(waypoints[at], waypoints[to], level, 64)) break;
       reach = to;
       reachClearance = level;
     }
-    waypoints.push_back(path.waypoints[reach]);
+    shorter.push_back(waypoints[reach]);
     clearances.push_back(reachClearance);
     at = reach;
   }
-  waypoints.insert(waypoints.end(), path.waypoints.begin() + last + 1, path.waypoints.end());
-  clearances.insert(clearances.end(), path.motionClearance.begin() + last, path.motionClearance.end());
-  path.waypoints = std::move(waypoints);
-  path.motionClearance = std::move(clearances);
+  shorter.insert(shorter.end(), waypoints.begin() + last + 1, waypoints.end());
+  clearances.insert(clearances.end(), motionClearance.begin() + last, motionClearance.end());
+  waypoints = std::move(shorter);
+  motionClearance = std::move(clearances);
+}
+
+/// The path through a chain of boxes (chainPath), shortened to keep 99% of the chain's
+/// bottleneck (a few dozen motions instead of one per box), then raised
+/// (raisedPassage): the chain's boxes are many times smaller than its passages, and
+/// their lower bounds lose about a box's size near the bottleneck, where a path pushed
+/// to the passages' middles keeps nearly all of it.
+std::optional<Passage> raisedChainPath(const FreeSpace& space, const MotionChecker& checker,
+                                       const ClearanceBoxes& boxes, const ClearanceBoxes::Chain& chain,
+                                       const Pose2& from, const Pose2& to, Clock::time_point deadline, QueryRate& rate,
+                                       const Cancellation& cancellation) {
+  Passage passage = chainPath(boxes, chain, from, to);
+  passage.lower = kChainShortening * chain.bottleneck;
+  shorten(checker, 0, passage.waypoints.size() - 1, passage.lower, passage.waypoints, passage.motionClearance);
+  return raisedPassage(space, checker, passage, deadline, rate, cancellation);
 }
 
 void measure(MaxClearancePath& path) {
@@ -216,38 +242,36 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   const double passageStartUpper = space.clearance(passageStart, MotionChecker::kClearanceWidth).upper;
   const double passageEndUpper = space.clearance(passageEnd, MotionChecker::kClearanceWidth).upper;
 
-  // The first path: along the cell graph's route.
+  // The first path: along the cell graph's route (`best`: the best path certified so far).
   const Clock::time_point deadline =
       began + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.secondsLimit));
   QueryRate rate;
-  std::optional<Passage> routed = certifiedRoutePath(space, checker, passageStart, passageEnd, deadline, rate, options);
-  if (routed) {
+  std::optional<Passage> best = certifiedRoutePath(space, checker, passageStart, passageEnd, deadline, rate, options);
+  if (best) {
     path.secondsToFirstPath = secondsSince(began);
-    if (!routed->motionClearance.empty()) {
-      tightenBounds(checker, *routed, 0.02, deadline, rate, options.cancellation);
+    if (!best->motionClearance.empty()) {
+      tightenBounds(checker, *best, 0.02, deadline, rate, options.cancellation);
       // The route keeps to the middle of the faces' triangles, not of the passages:
       // pushed to their middle, its least clearance rises (within a share of the time).
-      const Clock::time_point raisingDeadline =
-          std::min(deadline, Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                                std::chrono::duration<double>(kRaisingShare * options.secondsLimit)));
       std::optional<Passage> raised =
-          raisedPassage(space, checker, *routed, raisingDeadline, rate, options.cancellation);
-      if (raised && raised->lower > routed->lower) routed = std::move(raised);
+          raisedPassage(space, checker, *best, raisingDeadline(deadline, options), rate, options.cancellation);
+      if (raised && raised->lower > best->lower) best = std::move(raised);
     }
   }
-  const double routedLower = routed ? routed->lower : -HUGE_VAL;
+  double bestLower = best ? best->lower : -HUGE_VAL;
 
   // Halve the boxes that keep the bounds apart (not yet certain at the ratio asked,
-  // chosen as said below), until a chain's lower bounds (or the routed path's
+  // chosen as said below), until a chain's lower bounds (or the best path's
   // clearance) reach that ratio of the upper bound.
   ClearanceBoxes boxes(space, domain.low, domain.high, checker.reach());
   ClearanceBoxes::Chain lowerChain;
   // Each round's searches go on from the last round's (ClearanceBoxes::UpperSearch).
   ClearanceBoxes::UpperSearch startSearch, goalSearch;
+  double raisedChain = 0;  // the bottleneck of the last chain raised
   for (;;) {
     options.cancellation.check();
     // Paths through boxes below the clearance of a path already found are worse.
-    if (routedLower > 0) boxes.dropBelow(routedLower);
+    if (bestLower > 0) boxes.dropBelow(bestLower);
     boxes.dropOutside(path.startCell);
     const std::uint32_t from = boxes.leafAt(passageStart), to = boxes.leafAt(passageEnd);
     // Only chains at the target's level matter below: each search stops under it.
@@ -268,7 +292,18 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     searchFromGoal.get();
     const std::vector<double>& fromGoal = goalSearch.widest;
     if (lowerChain.bottleneck > 0 && path.secondsToFirstPath == 0) path.secondsToFirstPath = secondsSince(began);
-    path.converged = std::max(lowerChain.bottleneck, routedLower) >= target;
+    // A chain wider than the best path is raised (its bounds lose about a box's size
+    // where the path's motions lose little): the path may then carry c_lo.
+    if (lowerChain.bottleneck > bestLower && lowerChain.bottleneck > kRaiseAgain * raisedChain) {
+      raisedChain = lowerChain.bottleneck;
+      std::optional<Passage> raised = raisedChainPath(space, checker, boxes, lowerChain, passageStart, passageEnd,
+                                                      raisingDeadline(deadline, options), rate, options.cancellation);
+      if (raised && raised->lower > bestLower) {
+        best = std::move(raised);
+        bestLower = best->lower;
+      }
+    }
+    path.converged = std::max(lowerChain.bottleneck, bestLower) >= target;
     if (path.converged || secondsSince(began) > options.secondsLimit || boxes.size() > options.boxLimit) break;
     // Boxes not certain at the ratio that some chain at the target's level passes
     // (reached from both ends at it): those that limit c_hi (reached at its level,
@@ -315,9 +350,9 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   if (!path.converged) {
     lowerChain = boxes.widestChain(boxes.leafAt(passageStart), boxes.leafAt(passageEnd), ClearanceBoxes::Bound::Lower);
   }
-  // The better of the routed path and the chain's.
-  std::optional<Passage> passage = routed;
-  if (lowerChain.bottleneck > 0 && lowerChain.bottleneck > routedLower) {
+  // The better of the best path raised and the chain's.
+  std::optional<Passage> passage = best;
+  if (lowerChain.bottleneck > 0 && lowerChain.bottleneck > bestLower) {
     passage = chainPath(boxes, lowerChain, passageStart, passageEnd);
   }
   if (!passage) {
@@ -343,7 +378,7 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     path.waypoints.push_back(goal);
     path.motionClearance.push_back(arrive.clearance);
   }
-  shorten(checker, first, last, path.passage.lower, path);
+  shorten(checker, first, last, path.passage.lower, path.waypoints, path.motionClearance);
 
   path.whole.lower = *std::min_element(path.motionClearance.begin(), path.motionClearance.end());
   const ClearanceBoxes::Chain wholeChain =
