@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <future>
 #include <sstream>
 
 #include "clearance_boxes.h"
@@ -265,8 +264,8 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   // clearance) reach that ratio of the upper bound.
   ClearanceBoxes boxes(space, domain.low, domain.high, checker.reach());
   ClearanceBoxes::Chain lowerChain;
-  // Each round's searches go on from the last round's (ClearanceBoxes::UpperSearch).
-  ClearanceBoxes::UpperSearch startSearch, goalSearch;
+  // Each round's search goes on from the last round's (ClearanceBoxes::UpperSearch).
+  ClearanceBoxes::UpperSearch startSearch;
   double raisedChain = 0;  // the bottleneck of the last chain raised
   for (;;) {
     options.cancellation.check();
@@ -274,11 +273,8 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     if (bestLower > 0) boxes.dropBelow(bestLower);
     boxes.dropOutside(path.startCell);
     const std::uint32_t from = boxes.leafAt(passageStart), to = boxes.leafAt(passageEnd);
-    // Only chains at the target's level matter below: each search stops under it.
+    // Only chains at the target's level matter below: the search stops under it.
     const double cap = std::min(passageStartUpper, passageEndUpper);
-    // The two searches only read the boxes: the goal's runs beside the start's.
-    std::future<void> searchFromGoal = std::async(
-        std::launch::async, [&] { boxes.widestUpperFrom(to, from, options.clearanceRatio, cap, goalSearch); });
     const std::vector<double>& fromStart = boxes.widestUpperFrom(from, to, options.clearanceRatio, cap, startSearch);
     if (fromStart[to] == -HUGE_VAL) {
       path.status = PathStatus::infeasible;
@@ -287,10 +283,7 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     }
     path.passage.upper = std::min({fromStart[to], passageStartUpper, passageEndUpper});
     const double target = options.clearanceRatio * path.passage.upper;
-    // The chain by lower bounds needs the start's search alone: it runs beside the goal's.
     lowerChain = boxes.widestChain(from, to, ClearanceBoxes::Bound::Lower, target, path.startCell);
-    searchFromGoal.get();
-    const std::vector<double>& fromGoal = goalSearch.widest;
     if (lowerChain.bottleneck > 0 && path.secondsToFirstPath == 0) path.secondsToFirstPath = secondsSince(began);
     // A chain wider than the best path is raised (its bounds lose about a box's size
     // where the path's motions lose little): the path may then carry c_lo.
@@ -306,15 +299,17 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     path.converged = std::max(lowerChain.bottleneck, bestLower) >= target;
     if (path.converged || secondsSince(began) > options.secondsLimit || boxes.size() > options.boxLimit) break;
     // Boxes not certain at the ratio that some chain at the target's level passes
-    // (reached from both ends at it): those that limit c_hi (reached at its level,
-    // an upper bound near it), and those whose centre lies outside the cell (blocked,
-    // or another cell's): their upper bound is about their size, and chains of them
-    // along walls or around the cell's outside may be all that carries c_hi.
+    // (reached from the start at it: at a level at most c_hi, the boxes chains at it
+    // reach from the start are those they reach from the goal): those that limit c_hi
+    // (reached at its level, an upper bound near it), and those whose centre lies
+    // outside the cell (blocked, or another cell's): their upper bound is about their
+    // size, and chains of them along walls or around the cell's outside may be all
+    // that carries c_hi.
     std::vector<std::uint32_t> uncertain;
     for (std::uint32_t box = 0; box < boxes.size(); ++box) {
       const ClearanceBox& candidate = boxes.box(box);
       if (candidate.split || candidate.dropped || candidate.lower >= target) continue;
-      const double reached = std::min(fromStart[box], fromGoal[box]);
+      const double reached = fromStart[box];
       if (reached < target) continue;
       const bool limits = reached >= fromStart[to] && candidate.upper <= (1 + 1e-3) * fromStart[to];
       if (limits || candidate.centreCell != path.startCell) uncertain.push_back(box);
