@@ -226,6 +226,47 @@ TEST_P(BundledClearanceBoxes, KeptSearchesAgreeWithNewOnes) {
   EXPECT_GT(compared, 1000);
 }
 
+// Drops look only at the boxes added since the last call unless the level rose or the
+// cell changed: after levels that fall and rise between halvings, and a change of cell,
+// no live box lies below the last level or (unbroken) in another cell than the last,
+// and a box is dropped only for one or the other (against a scan of every box).
+TEST_P(BundledClearanceBoxes, DropsLeaveNoBoxBelowTheLevelNorOutsideTheCell) {
+  const LoadedProblem loaded = loadBundledProblem(GetParam());
+  const FreeSpace space(loaded.robot, loaded.world);
+  std::mt19937_64 random(20261206);
+  ClearanceBoxes boxes = halvedBoxes(space, loaded, 200, random).boxes;
+  std::vector<double> uppers;
+  for (std::uint32_t box = 0; box < boxes.size(); ++box) uppers.push_back(boxes.box(box).upper);
+  std::sort(uppers.begin(), uppers.end());
+  const std::uint32_t startCell = space.locate(loaded.problem.start).cell;
+  // Levels at the 20th, 5th and 10th percentiles of the first bounds, cells in turn.
+  const double levels[] = {uppers[uppers.size() / 5], uppers[uppers.size() / 20], uppers[uppers.size() / 10]};
+  const std::uint32_t cells[] = {startCell, startCell + 1, startCell};
+  int dropped = 0;
+  for (int step = 0; step < 3; ++step) {
+    for (int k = 0; k < 100; ++k) {
+      const std::uint32_t box = std::uniform_int_distribution<std::uint32_t>(0, boxes.size() - 1)(random);
+      if (!boxes.box(box).split && !boxes.box(box).dropped) boxes.split(box, boxes.axesToSplit(box));
+    }
+    std::vector<char> liveBefore(boxes.size());
+    for (std::uint32_t box = 0; box < boxes.size(); ++box) {
+      liveBefore[box] = !boxes.box(box).split && !boxes.box(box).dropped;
+    }
+    boxes.dropBelow(levels[step]);
+    boxes.dropOutside(cells[step]);
+    for (std::uint32_t box = 0; box < boxes.size(); ++box) {
+      const ClearanceBox& candidate = boxes.box(box);
+      const bool outside = candidate.unbroken && candidate.centreCell && *candidate.centreCell != cells[step];
+      const bool droppable = candidate.upper < levels[step] || outside;
+      if (liveBefore[box]) {
+        EXPECT_EQ(candidate.dropped, droppable) << "step " << step << " box " << box;
+        dropped += candidate.dropped;
+      }
+    }
+  }
+  EXPECT_GT(dropped, 10);
+}
+
 /// Whether two sets of boxes are the same, box by box: ranges, bounds, centres'
 /// cells, anchors, neighbours and halvings.
 void expectSameBoxes(const ClearanceBoxes& a, const ClearanceBoxes& b) {

@@ -1,6 +1,7 @@
 #include "clearance_boxes.h"
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <optional>
 #include <queue>
@@ -536,14 +537,20 @@ void ClearanceBoxes::drop(std::uint32_t index) {
 }
 
 void ClearanceBoxes::dropBelow(double level) {
-  for (std::uint32_t index = 0; index < boxes_.size(); ++index) {
+  // Every box before seenByDropBelow_ was looked at with a level at least the last one.
+  if (level > droppedBelow_) seenByDropBelow_ = 0;
+  droppedBelow_ = level;
+  for (std::size_t index = std::exchange(seenByDropBelow_, boxes_.size()); index < boxes_.size(); ++index) {
     const ClearanceBox& box = boxes_[index];
-    if (!box.split && !box.dropped && box.upper < level) drop(index);
+    if (!box.split && !box.dropped && box.upper < level) drop(static_cast<std::uint32_t>(index));
   }
 }
 
 void ClearanceBoxes::dropOutside(std::uint32_t cell) {
-  for (std::uint32_t index = 0; index < boxes_.size(); ++index) {
+  if (droppedOutside_ != cell) seenByDropOutside_ = 0;
+  droppedOutside_ = cell;
+  for (std::uint32_t index = static_cast<std::uint32_t>(std::exchange(seenByDropOutside_, boxes_.size()));
+       index < boxes_.size(); ++index) {
     const ClearanceBox& box = boxes_[index];
     if (!box.split && !box.dropped && box.unbroken && box.centreCell && *box.centreCell != cell) {
       drop(index);

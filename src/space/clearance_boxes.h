@@ -127,10 +127,13 @@ class ClearanceBoxes {
   /// the obstacle than its half diagonal in (x, y) (its upper bound then comes from
   /// its theta width alone, docs/design.md section 7), else every axis.
   std::uint8_t axesToSplit(std::uint32_t box) const;
-  /// Drops every box whose upper bound is below `level`.
+  /// Drops every box whose upper bound is below `level`. A box's bounds, cell and
+  /// unbrokenness never change once bounded, so a call looks only at the boxes added
+  /// since the last one (at every box when the level rose).
   void dropBelow(double level);
   /// Drops every box that lies in another free cell than `cell`: unbroken (free
-  /// throughout or not, all of it in its centre's cell), its centre in another.
+  /// throughout or not, all of it in its centre's cell), its centre in another (at the
+  /// boxes added since the last call, as dropBelow, every box for another cell).
   void dropOutside(std::uint32_t cell);
 
   const ClearanceBox& box(std::uint32_t index) const { return boxes_[index]; }
@@ -197,6 +200,11 @@ class ClearanceBoxes {
   std::vector<ClearanceBox> boxes_;
   /// The boxes halved or dropped, in order (UpperSearch::changesSeen counts them).
   std::vector<std::uint32_t> changed_;
+  /// The last level and cell dropped by, and how many boxes there were then.
+  double droppedBelow_ = -HUGE_VAL;
+  std::size_t seenByDropBelow_ = 0;
+  std::optional<std::uint32_t> droppedOutside_;
+  std::size_t seenByDropOutside_ = 0;
   /// A slab of a patch with sub-faces that bound a free cell: its angles, its index,
   /// and the first and last of its gaps between curves (PatchSlab::faces) that are
   /// such sub-faces.

@@ -307,10 +307,11 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     // that carries c_hi.
     std::vector<std::uint32_t> uncertain;
     for (std::uint32_t box = 0; box < boxes.size(); ++box) {
-      const ClearanceBox& candidate = boxes.box(box);
-      if (candidate.split || candidate.dropped || candidate.lower >= target) continue;
+      // (The search's values first: most boxes are not reached at the target.)
       const double reached = fromStart[box];
       if (reached < target) continue;
+      const ClearanceBox& candidate = boxes.box(box);
+      if (candidate.split || candidate.dropped || candidate.lower >= target) continue;
       const bool limits = reached >= fromStart[to] && candidate.upper <= (1 + 1e-3) * fromStart[to];
       if (limits || candidate.centreCell != path.startCell) uncertain.push_back(box);
     }
