@@ -186,7 +186,8 @@ TEST_P(BundledClearanceBoxes, SearchesStoppedBelowTheTargetAgreeWithRelaxationAb
 
 // A search kept from round to round (ClearanceBoxes::UpperSearch) agrees with a new
 // one after every round of halvings and drops: the same bottleneck on every box at
-// the level or above, and below it on the others. The boxes halved are among those a
+// the level or above, and below it on the others; its chain to the goal's box
+// (ClearanceBoxes::chainTo) joins touching boxes with that bottleneck. The boxes halved are among those a
 // chain at the level reaches (the searches' trees pass them).
 TEST_P(BundledClearanceBoxes, KeptSearchesAgreeWithNewOnes) {
   const LoadedProblem loaded = loadBundledProblem(GetParam());
@@ -205,6 +206,24 @@ TEST_P(BundledClearanceBoxes, KeptSearchesAgreeWithNewOnes) {
     ASSERT_EQ(goneOn.size(), fresh.size());
     ASSERT_GT(fresh[to], -HUGE_VAL);
     const double level = ratio * fresh[to];
+    // Its chain to the goal's box: touching live boxes from the start's, the least of
+    // their upper bounds the bottleneck.
+    const ClearanceBoxes::Chain chain = ClearanceBoxes::chainTo(kept, to);
+    ASSERT_FALSE(chain.boxes.empty());
+    EXPECT_EQ(chain.boxes.front(), from);
+    EXPECT_EQ(chain.boxes.back(), to);
+    EXPECT_EQ(chain.bottleneck, fresh[to]);
+    double least = HUGE_VAL;
+    for (std::size_t k = 0; k < chain.boxes.size(); ++k) {
+      const ClearanceBox& box = boxes.box(chain.boxes[k]);
+      EXPECT_FALSE(box.split || box.dropped) << "round " << round;
+      least = std::min(least, box.upper);
+      if (k > 0) {
+        const std::vector<std::uint32_t>& touching = boxes.box(chain.boxes[k - 1]).neighbours;
+        EXPECT_NE(std::find(touching.begin(), touching.end(), chain.boxes[k]), touching.end()) << "round " << round;
+      }
+    }
+    EXPECT_EQ(least, fresh[to]) << "round " << round;
     std::vector<std::uint32_t> reached;
     for (std::uint32_t box = 0; box < boxes.size(); ++box) {
       if (boxes.box(box).split || boxes.box(box).dropped) continue;

@@ -701,6 +701,14 @@ const std::vector<double>& ClearanceBoxes::widestUpperFrom(std::uint32_t from, s
   return widest;
 }
 
+ClearanceBoxes::Chain ClearanceBoxes::chainTo(const UpperSearch& search, std::uint32_t to) {
+  Chain chain;
+  chain.bottleneck = search.widest[to];
+  for (std::uint32_t index = to; index != UINT32_MAX; index = search.previous[index]) chain.boxes.push_back(index);
+  std::reverse(chain.boxes.begin(), chain.boxes.end());
+  return chain;
+}
+
 Pose2 ClearanceBoxes::meeting(std::uint32_t index, std::uint32_t nextIndex) const {
   const ClearanceBox &box = boxes_[index], &next = boxes_[nextIndex];
   const auto middleOfCommon = [&](int axis) {

@@ -110,6 +110,10 @@ class ClearanceBoxes {
   const std::vector<double>& widestUpperFrom(std::uint32_t from, std::uint32_t to, double ratio, double cap,
                                              UpperSearch& search) const;
 
+  /// The widest chain by upper bounds a search (widestUpperFrom) found from its box to
+  /// `to`, a box it reached at its level: along its tree of predecessors.
+  static Chain chainTo(const UpperSearch& search, std::uint32_t to);
+
   /// The box (not split) holding a configuration of the domain.
   std::uint32_t leafAt(const Pose2& pose) const;
   /// Halves a box along the axes of `axes` (bit k for axis k; every axis: eight
