@@ -95,7 +95,8 @@ TEST_P(SolvedProblems, PathsAreFreeAndKeepTheirCertifiedClearance) {
 
 // The maze converges only once its chain by lower bounds is raised (its boxes' own
 // chain stays below 98% of c_hi after a minute).
-INSTANTIATE_TEST_SUITE_P(Bundled, SolvedProblems, ::testing::Values("flip_window", "random_polyhedra", "maze"));
+INSTANTIATE_TEST_SUITE_P(Bundled, SolvedProblems, ::testing::Values("flip_window", "random_polyhedra", "maze"),
+                         [](const auto& info) { return info.param; });
 
 /// A bundled problem and the seconds its query is given.
 struct TimedProblem {
