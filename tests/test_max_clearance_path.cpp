@@ -39,10 +39,11 @@ Problem bundled(const std::string& name) {
   return problem;
 }
 
-/// Every motion of a solved path: free by the exact collision test at 10,001
-/// configurations, by FCL on the input meshes, and by the motion checker; the
-/// certified clearance at 201 configurations never below the motion's bound; the
-/// bounds hold the clearance seen along it.
+/// Every motion of a solved path: inside the problem's volume (its waypoints, within
+/// their rounding), free by the exact collision test at 10,001 configurations, by FCL
+/// on the input meshes, and by the motion checker; the certified clearance at 201
+/// configurations never below the motion's bound; the bounds hold the clearance seen
+/// along it.
 void expectCertifiedPath(const Problem& problem, const MaxClearancePath& path) {
   const FreeSpace& space = *problem.space;
   ASSERT_EQ(path.status, PathStatus::solved);
@@ -57,6 +58,12 @@ void expectCertifiedPath(const Problem& problem, const MaxClearancePath& path) {
   const ExactCollisionChecker exact(space.meshes().robot, space.meshes().world);
   const FclCollisionChecker fcl(problem.loaded.robot, problem.loaded.world);
   const MotionChecker motions(space);
+  const Eigen::AlignedBox2d volume = *problem.loaded.problem.volume;
+  const double rounding = 1e-12 * (1 + volume.max().cwiseAbs().maxCoeff() + volume.min().cwiseAbs().maxCoeff());
+  for (const Pose2& waypoint : path.waypoints) {
+    EXPECT_TRUE(volume.exteriorDistance(Eigen::Vector2d(waypoint.x, waypoint.y)) <= rounding)
+        << "waypoint " << waypoint.x << " " << waypoint.y << " outside the volume";
+  }
   double leastSeen = HUGE_VAL;
   for (std::size_t k = 0; k + 1 < path.waypoints.size(); ++k) {
     const Pose2 &from = path.waypoints[k], &to = path.waypoints[k + 1];
@@ -106,8 +113,8 @@ struct TimedProblem {
 
 class RoutedProblems : public ::testing::TestWithParam<TimedProblem> {};
 
-// Problems whose first path comes from the cell graph's route (the bounds stopped
-// early): within milliseconds.
+// Problems given short limits: the path may be the route's, raised, or a chain's
+// (the bounds may have stopped early).
 TEST_P(RoutedProblems, TheRoutesPathIsCertified) {
   Problem problem = bundled(GetParam().name);
   problem.options.secondsLimit = GetParam().seconds;
@@ -139,6 +146,20 @@ TEST(MaxClearancePathQuality, KeyholesSlotLiesBetweenTheBounds) {
   EXPECT_LE(path.passage.lower, slot + rounding);
   EXPECT_GE(path.passage.upper, slot - rounding);
   EXPECT_GE(path.passage.lower, 0.97 * slot);
+}
+
+// random_polyhedra in a volume that cuts its free cell 0.1 beyond the start and the
+// goal: pushed away from the polyhedra, the raised paths would leave it (waypoints at
+// y = -3.3 were returned before raising kept to the volume), and c_lo would then
+// bound no path inside it.
+TEST(MaxClearancePathQuality, PathsKeepToAVolumeThatCutsTheCell) {
+  Problem problem = bundled("random_polyhedra");
+  problem.loaded.problem.volume = Eigen::AlignedBox2d(Eigen::Vector2d(-6.75, -3.1), Eigen::Vector2d(6.75, 3.1));
+  problem.options.volumeLow = std::array<double, 2>{-6.75, -3.1};
+  problem.options.volumeHigh = std::array<double, 2>{6.75, 3.1};
+  const MaxClearancePath path =
+      maxClearancePath(*problem.space, problem.loaded.problem.start, problem.loaded.problem.goal, problem.options);
+  expectCertifiedPath(problem, path);
 }
 
 class InfeasibleProblems : public ::testing::TestWithParam<std::string> {};

@@ -1,7 +1,6 @@
 #include "clearance_boxes.h"
 
 #include <algorithm>
-#include <utility>
 #include <cmath>
 #include <optional>
 #include <queue>
@@ -703,6 +702,7 @@ const std::vector<double>& ClearanceBoxes::widestUpperFrom(std::uint32_t from, s
 
 ClearanceBoxes::Chain ClearanceBoxes::chainTo(const UpperSearch& search, std::uint32_t to) {
   Chain chain;
+  if (search.widest[to] == -HUGE_VAL) return chain;
   chain.bottleneck = search.widest[to];
   for (std::uint32_t index = to; index != UINT32_MAX; index = search.previous[index]) chain.boxes.push_back(index);
   std::reverse(chain.boxes.begin(), chain.boxes.end());

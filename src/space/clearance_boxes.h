@@ -111,7 +111,8 @@ class ClearanceBoxes {
                                              UpperSearch& search) const;
 
   /// The widest chain by upper bounds a search (widestUpperFrom) found from its box to
-  /// `to`, a box it reached at its level: along its tree of predecessors.
+  /// `to`, a box it reached at its level: along its tree of predecessors (empty when it
+  /// did not reach `to`).
   static Chain chainTo(const UpperSearch& search, std::uint32_t to);
 
   /// The box (not split) holding a configuration of the domain.

@@ -40,14 +40,6 @@ std::string poseText(const Pose2& pose) {
   return text.str();
 }
 
-/// The x and y range paths may use.
-struct Domain {
-  std::array<double, 2> low, high;
-  bool holds(const Pose2& pose) const {
-    return pose.x >= low[0] && pose.x <= high[0] && pose.y >= low[1] && pose.y <= high[1];
-  }
-};
-
 /// The clearance of a start or goal; an InputError naming it when it is not finite,
 /// outside the volume, or not free.
 Clearance checkedEnd(const FreeSpace& space, const Pose2& pose, const std::string& name,
@@ -134,16 +126,39 @@ Passage chainPath(const ClearanceBoxes& boxes, const ClearanceBoxes::Chain& chai
   return passage;
 }
 
+/// Leaves out the route's waypoints outside `domain`, the motion that replaces each run
+/// of them not certified yet; false when an end lies outside.
+bool keepToDomain(const Domain& domain, RoutedPath& route) {
+  if (!domain.holds(route.waypoints.front()) || !domain.holds(route.waypoints.back())) return false;
+  RoutedPath kept{{route.waypoints.front()}, {}};
+  bool skipped = false;
+  for (std::size_t k = 1; k < route.waypoints.size(); ++k) {
+    if (!domain.holds(route.waypoints[k])) {
+      skipped = true;
+      continue;
+    }
+    kept.certified.push_back(skipped ? std::nullopt : route.certified[k - 1]);
+    kept.waypoints.push_back(route.waypoints[k]);
+    skipped = false;
+  }
+  route = std::move(kept);
+  return true;
+}
+
 /// The path along the cell graph's route (routePath), each motion certified free by
 /// the motion checker (unless routing certified it already) with the clearance bound
 /// that took (halving a motion that passes near a contact until its bound is near the
 /// true least clearance could take billions of parts); none when one is not, or not
-/// before `deadline`.
+/// before `deadline`. The route keeps to the cell, not to the volume: a run of its
+/// waypoints outside `domain` (the walk through a face's triangles can pass the far
+/// corner of the box around an unbounded face) is replaced by the motion between the
+/// waypoints on either side, which lie in it (so does the motion: the domain is a
+/// rectangle).
 std::optional<Passage> certifiedRoutePath(const FreeSpace& space, const MotionChecker& checker, const Pose2& from,
-                                          const Pose2& to, Clock::time_point deadline, QueryRate& rate,
-                                          const MaxClearancePathOptions& options) {
+                                          const Pose2& to, const Domain& domain, Clock::time_point deadline,
+                                          QueryRate& rate, const MaxClearancePathOptions& options) {
   std::optional<RoutedPath> routed = routePath(space, from, to, deadline, options.cancellation);
-  if (!routed) return std::nullopt;
+  if (!routed || !keepToDomain(domain, *routed)) return std::nullopt;
   Passage passage{std::move(routed->waypoints), {}, HUGE_VAL};
   for (std::size_t k = 0; k + 1 < passage.waypoints.size(); ++k) {
     options.cancellation.check();
@@ -197,12 +212,12 @@ void shorten(const MotionChecker& checker, std::size_t first, std::size_t last, 
 /// to the passages' middles keeps nearly all of it.
 std::optional<Passage> raisedChainPath(const FreeSpace& space, const MotionChecker& checker,
                                        const ClearanceBoxes& boxes, const ClearanceBoxes::Chain& chain,
-                                       const Pose2& from, const Pose2& to, Clock::time_point deadline, QueryRate& rate,
-                                       const Cancellation& cancellation) {
+                                       const Pose2& from, const Pose2& to, const Domain& domain,
+                                       Clock::time_point deadline, QueryRate& rate, const Cancellation& cancellation) {
   Passage passage = chainPath(boxes, chain, from, to);
   passage.lower = kChainShortening * chain.bottleneck;
   shorten(checker, 0, passage.waypoints.size() - 1, passage.lower, passage.waypoints, passage.motionClearance);
-  return raisedPassage(space, checker, passage, deadline, rate, cancellation);
+  return raisedPassage(space, checker, passage, domain, deadline, rate, cancellation);
 }
 
 void measure(MaxClearancePath& path) {
@@ -245,7 +260,8 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   const Clock::time_point deadline =
       began + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.secondsLimit));
   QueryRate rate;
-  std::optional<Passage> best = certifiedRoutePath(space, checker, passageStart, passageEnd, deadline, rate, options);
+  std::optional<Passage> best =
+      certifiedRoutePath(space, checker, passageStart, passageEnd, domain, deadline, rate, options);
   if (best) {
     path.secondsToFirstPath = secondsSince(began);
     if (!best->motionClearance.empty()) {
@@ -253,7 +269,7 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
       // The route keeps to the middle of the faces' triangles, not of the passages:
       // pushed to their middle, its least clearance rises (within a share of the time).
       std::optional<Passage> raised =
-          raisedPassage(space, checker, *best, raisingDeadline(deadline, options), rate, options.cancellation);
+          raisedPassage(space, checker, *best, domain, raisingDeadline(deadline, options), rate, options.cancellation);
       if (raised && raised->lower > best->lower) best = std::move(raised);
     }
   }
@@ -289,8 +305,9 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     // where the path's motions lose little): the path may then carry c_lo.
     if (lowerChain.bottleneck > bestLower && lowerChain.bottleneck > kRaiseAgain * raisedChain) {
       raisedChain = lowerChain.bottleneck;
-      std::optional<Passage> raised = raisedChainPath(space, checker, boxes, lowerChain, passageStart, passageEnd,
-                                                      raisingDeadline(deadline, options), rate, options.cancellation);
+      std::optional<Passage> raised =
+          raisedChainPath(space, checker, boxes, lowerChain, passageStart, passageEnd, domain,
+                          raisingDeadline(deadline, options), rate, options.cancellation);
       if (raised && raised->lower > bestLower) {
         best = std::move(raised);
         bestLower = best->lower;
@@ -311,7 +328,7 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     const ClearanceBoxes::Chain upperChain = ClearanceBoxes::chainTo(startSearch, to);
     for (std::uint32_t box : upperChain.boxes) {
       const ClearanceBox& candidate = boxes.box(box);
-      if (candidate.lower < target && candidate.upper * options.clearanceRatio <= upperChain.bottleneck) {
+      if (candidate.lower < target && candidate.upper * options.clearanceRatio <= path.passage.upper) {
         uncertain.push_back(box);
       }
     }

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <vector>
@@ -9,6 +10,14 @@
 #include "query_rate.h"
 
 namespace freespace {
+
+/// The x and y range paths may use (the volume, within the free cell's box).
+struct Domain {
+  std::array<double, 2> low, high;
+  bool holds(const Pose2& pose) const {
+    return pose.x >= low[0] && pose.x <= high[0] && pose.y >= low[1] && pose.y <= high[1];
+  }
+};
 
 /// A path between the climbs' ends (docs/design.md section 7), each motion with a
 /// certified lower bound on its clearance, and the least of them.

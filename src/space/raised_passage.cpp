@@ -128,8 +128,9 @@ Pose2 moved(const Pose2& pose, const std::array<double, 3>& direction, double le
 /// gradient; where that meets another contact, up both of theirs (the direction
 /// between the two gradients that raises both: the clearance is the least of them);
 /// else each coordinate alone (away from the contact in (x, y), turning either way).
-/// Whether it moved.
-bool push(const FreeSpace& space, double reach, const Pose2& previous, const Pose2& next, PushedWaypoint& waypoint) {
+/// Whether it moved (never out of `domain`).
+bool push(const FreeSpace& space, const Domain& domain, double reach, const Pose2& previous, const Pose2& next,
+          PushedWaypoint& waypoint) {
   if (waypoint.step <= 1e-6 * waypoint.clearance.lower) return false;
   const PushedWaypoint from = waypoint;
   Clearance there;
@@ -138,6 +139,7 @@ bool push(const FreeSpace& space, double reach, const Pose2& previous, const Pos
     const std::array<double, 3> across = acrossPath(direction, previous, next, reach);
     if (norm(across) <= 1e-9) return false;
     tried = moved(from.pose, across, from.step, reach);
+    if (!domain.holds(tried)) return false;
     // A step of Euclidean length `step` moves |dxy| + reach |dtheta| <= sqrt(2) step:
     // the clearance there is at most that much above the waypoint's (the search's hint).
     there = space.clearance(tried, MotionChecker::kClearanceWidth, from.clearance.upper + 1.5 * from.step);
@@ -167,8 +169,8 @@ bool push(const FreeSpace& space, double reach, const Pose2& previous, const Pos
 /// Pushes the waypoints near the least clearance among them, round after round, and
 /// cuts the motions that grow longer than `spacing`, until none moves; false when
 /// `deadline` passes first.
-bool relax(const FreeSpace& space, double reach, double spacing, std::vector<PushedWaypoint>& waypoints,
-           Clock::time_point deadline, const Cancellation& cancellation) {
+bool relax(const FreeSpace& space, const Domain& domain, double reach, double spacing,
+           std::vector<PushedWaypoint>& waypoints, Clock::time_point deadline, const Cancellation& cancellation) {
   const auto partsOf = [&](std::size_t k) {
     return std::max(
         1, static_cast<int>(std::ceil(metricLength(waypoints[k].pose, waypoints[k + 1].pose, reach) / spacing)));
@@ -181,7 +183,7 @@ bool relax(const FreeSpace& space, double reach, double spacing, std::vector<Pus
       if (waypoints[k].clearance.lower > kNearFloor * floor) continue;
       cancellation.check();
       if (Clock::now() > deadline) return false;
-      if (!push(space, reach, waypoints[k - 1].pose, waypoints[k + 1].pose, waypoints[k])) continue;
+      if (!push(space, domain, reach, waypoints[k - 1].pose, waypoints[k + 1].pose, waypoints[k])) continue;
       moved = true;
       waypoints[k - 1].motionBound.reset();
       waypoints[k].motionBound.reset();
@@ -226,7 +228,8 @@ std::optional<Passage> certified(const MotionChecker& checker, std::vector<Pushe
 }  // namespace
 
 std::optional<Passage> raisedPassage(const FreeSpace& space, const MotionChecker& checker, const Passage& passage,
-                                     Clock::time_point deadline, QueryRate& rate, const Cancellation& cancellation) {
+                                     const Domain& domain, Clock::time_point deadline, QueryRate& rate,
+                                     const Cancellation& cancellation) {
   const double reach = checker.reach();
   double length = 0;
   for (std::size_t k = 0; k + 1 < passage.waypoints.size(); ++k) {
@@ -243,7 +246,7 @@ std::optional<Passage> raisedPassage(const FreeSpace& space, const MotionChecker
   // and their middles pushed too.
   std::optional<Passage> raised;
   for (int halving = 0; halving <= kHalvings; ++halving) {
-    if (!relax(space, reach, spacing, waypoints, deadline, cancellation)) break;
+    if (!relax(space, domain, reach, spacing, waypoints, deadline, cancellation)) break;
     std::optional<Passage> next = certified(checker, waypoints, deadline, rate);
     if (!next) break;
     if (!raised || next->lower > raised->lower) raised = next;
