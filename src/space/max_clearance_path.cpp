@@ -220,6 +220,54 @@ std::optional<Passage> raisedChainPath(const FreeSpace& space, const MotionCheck
   return raisedPassage(space, checker, passage, domain, deadline, rate, cancellation);
 }
 
+/// A round's bounds: c_hi, the target c_lo must reach, and their ratio.
+struct RoundLevels {
+  double target, upper, ratio;
+};
+
+/// The boxes a round halves, distinct and in order: those not certain at the ratio
+/// (lower bound below the target) of the widest chain by upper bounds (`upperChain`)
+/// whose bound lies within the ratio's slack of c_hi (those that limit it and those
+/// that would next: halving all that tie with them along other chains took 40% longer
+/// on tetra_floorplan); those whose centre lies outside `cell` (blocked, or another
+/// cell's) that some chain at the target's level passes (reached from the start at it,
+/// `fromStart`: at a level at most c_hi, the boxes chains at it reach from the start
+/// are those they reach from the goal): their upper bound is about their size, and
+/// chains of them along walls or around the cell's outside may be all that carries
+/// c_hi; and the worse half of the widest chain by lower bounds (docs/design.md
+/// section 7).
+std::vector<std::uint32_t> boxesToHalve(const ClearanceBoxes& boxes, const ClearanceBoxes::Chain& upperChain,
+                                        const std::vector<double>& fromStart, const ClearanceBoxes::Chain& lowerChain,
+                                        const RoundLevels& levels, std::uint32_t cell) {
+  std::vector<std::uint32_t> uncertain;
+  for (std::uint32_t box : upperChain.boxes) {
+    const ClearanceBox& candidate = boxes.box(box);
+    if (candidate.lower < levels.target && candidate.upper * levels.ratio <= levels.upper) uncertain.push_back(box);
+  }
+  for (std::uint32_t box = 0; box < boxes.size(); ++box) {
+    // (The search's values first: most boxes are not reached at the target.)
+    if (fromStart[box] < levels.target) continue;
+    const ClearanceBox& candidate = boxes.box(box);
+    if (candidate.split || candidate.dropped || candidate.lower >= levels.target) continue;
+    if (candidate.centreCell != cell) uncertain.push_back(box);
+  }
+  for (std::uint32_t box : lowerChain.boxes) {
+    if (boxes.box(box).lower <= 0.5 * (lowerChain.bottleneck + levels.target)) uncertain.push_back(box);
+  }
+  if (lowerChain.boxes.empty()) {
+    // No chain of boxes whose centres lie in the cell joins the ends at the target's
+    // upper bounds: the widest chain by upper bounds passes boxes too coarse to say
+    // (those outside the cell are halved above; a box outside it never has a lower
+    // bound at the target: it would have been dropped).
+    for (std::uint32_t box : upperChain.boxes) {
+      if (boxes.box(box).lower < levels.target) uncertain.push_back(box);
+    }
+  }
+  std::sort(uncertain.begin(), uncertain.end());
+  uncertain.erase(std::unique(uncertain.begin(), uncertain.end()), uncertain.end());
+  return uncertain;
+}
+
 void measure(MaxClearancePath& path) {
   for (std::size_t k = 0; k + 1 < path.waypoints.size(); ++k) {
     const Pose2 &from = path.waypoints[k], &to = path.waypoints[k + 1];
@@ -315,44 +363,9 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     }
     path.converged = std::max(lowerChain.bottleneck, bestLower) >= target;
     if (path.converged || secondsSince(began) > options.secondsLimit || boxes.size() > options.boxLimit) break;
-    // Boxes not certain at the ratio: those of the widest chain by upper bounds whose
-    // bound lies within the ratio's slack of c_hi (those that limit it and those that
-    // would next: halving all that tie with them along other chains took 40% longer on
-    // tetra_floorplan); those whose centre lies outside the cell (blocked, or another
-    // cell's) that some chain at the target's level passes (reached from the start at
-    // it: at a level at most c_hi, the boxes chains at it reach from the start are
-    // those they reach from the goal): their upper bound is about their size, and
-    // chains of them along walls or around the cell's outside may be all that carries
-    // c_hi; and the worse half of the widest chain by lower bounds.
-    std::vector<std::uint32_t> uncertain;
-    const ClearanceBoxes::Chain upperChain = ClearanceBoxes::chainTo(startSearch, to);
-    for (std::uint32_t box : upperChain.boxes) {
-      const ClearanceBox& candidate = boxes.box(box);
-      if (candidate.lower < target && candidate.upper * options.clearanceRatio <= path.passage.upper) {
-        uncertain.push_back(box);
-      }
-    }
-    for (std::uint32_t box = 0; box < boxes.size(); ++box) {
-      // (The search's values first: most boxes are not reached at the target.)
-      if (fromStart[box] < target) continue;
-      const ClearanceBox& candidate = boxes.box(box);
-      if (candidate.split || candidate.dropped || candidate.lower >= target) continue;
-      if (candidate.centreCell != path.startCell) uncertain.push_back(box);
-    }
-    for (std::uint32_t box : lowerChain.boxes) {
-      if (boxes.box(box).lower <= 0.5 * (lowerChain.bottleneck + target)) uncertain.push_back(box);
-    }
-    if (lowerChain.boxes.empty()) {
-      // No chain of boxes whose centres lie in the cell joins the ends at the target's
-      // upper bounds: the widest chain by upper bounds passes boxes too coarse to say
-      // (those outside the cell are halved above; a box outside it never has a lower
-      // bound at the target: it would have been dropped).
-      for (std::uint32_t box : upperChain.boxes) {
-        if (boxes.box(box).lower < target) uncertain.push_back(box);
-      }
-    }
-    std::sort(uncertain.begin(), uncertain.end());
-    uncertain.erase(std::unique(uncertain.begin(), uncertain.end()), uncertain.end());
+    const std::vector<std::uint32_t> uncertain =
+        boxesToHalve(boxes, ClearanceBoxes::chainTo(startSearch, to), fromStart, lowerChain,
+                     {target, path.passage.upper, options.clearanceRatio}, path.startCell);
     if (uncertain.empty()) break;
     // The limit and cancellation are looked at between halvings too: a round can halve
     // thousands.
