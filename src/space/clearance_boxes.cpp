@@ -535,26 +535,26 @@ void ClearanceBoxes::drop(std::uint32_t index) {
   changed_.push_back(index);
 }
 
+template <typename Droppable>
+void ClearanceBoxes::dropLiveFrom(std::size_t& seen, Droppable droppable) {
+  for (std::size_t index = std::exchange(seen, boxes_.size()); index < boxes_.size(); ++index) {
+    const ClearanceBox& box = boxes_[index];
+    if (!box.split && !box.dropped && droppable(box)) drop(static_cast<std::uint32_t>(index));
+  }
+}
+
 void ClearanceBoxes::dropBelow(double level) {
   // Every box before seenByDropBelow_ was looked at with a level at least the last one.
   if (level > droppedBelow_) seenByDropBelow_ = 0;
   droppedBelow_ = level;
-  for (std::size_t index = std::exchange(seenByDropBelow_, boxes_.size()); index < boxes_.size(); ++index) {
-    const ClearanceBox& box = boxes_[index];
-    if (!box.split && !box.dropped && box.upper < level) drop(static_cast<std::uint32_t>(index));
-  }
+  dropLiveFrom(seenByDropBelow_, [&](const ClearanceBox& box) { return box.upper < level; });
 }
 
 void ClearanceBoxes::dropOutside(std::uint32_t cell) {
   if (droppedOutside_ != cell) seenByDropOutside_ = 0;
   droppedOutside_ = cell;
-  for (std::uint32_t index = static_cast<std::uint32_t>(std::exchange(seenByDropOutside_, boxes_.size()));
-       index < boxes_.size(); ++index) {
-    const ClearanceBox& box = boxes_[index];
-    if (!box.split && !box.dropped && box.unbroken && box.centreCell && *box.centreCell != cell) {
-      drop(index);
-    }
-  }
+  dropLiveFrom(seenByDropOutside_,
+               [&](const ClearanceBox& box) { return box.unbroken && box.centreCell && *box.centreCell != cell; });
 }
 
 namespace {

@@ -189,6 +189,10 @@ class ClearanceBoxes {
   bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
   /// Marks a box dropped (and logs it for the searches).
   void drop(std::uint32_t index);
+  /// Drops the boxes from `seen` on, neither split nor dropped, that `droppable`
+  /// accepts; `seen` becomes the number of boxes (dropBelow, dropOutside).
+  template <typename Droppable>
+  void dropLiveFrom(std::size_t& seen, Droppable droppable);
   /// The boxes an UpperSearch must start again (1) before its next search: those
   /// halved or dropped since its last, every box whose chain passed them, and the
   /// boxes added since; all for a new one.
