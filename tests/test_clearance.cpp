@@ -6,6 +6,8 @@
 // out by hand; the same answers from several threads at once as from one.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <future>
 #include <iostream>
@@ -17,9 +19,12 @@
 #include "clearance_oracle.h"
 #include "random_configurations.h"
 #include "temp_dir.h"
+#include "freespace/numbers/half_angle.h"
+#include "freespace/numbers/interval.h"
 #include "freespace/problem/planar_problem.h"
 #include "freespace/scenes/scene_generator.h"
 #include "freespace/space/free_space.h"
+#include "freespace/topology/slice_pieces.h"
 
 using namespace freespace;
 using namespace freespace::testing;
@@ -139,6 +144,41 @@ void expectSameAnswers(const ThreadedAnswer& other, const ThreadedAnswer& alone,
 // what one thread gets asking alone afterwards; so do twelve threads asking the space
 // read back from a file first (its exact coefficients decoded on first use; more
 // threads than the space keeps idle predicates for without a lock).
+// The witness names its patch: at the configuration's angle, the patch's segment (the
+// places where its two features touch, docs/design.md section 3) passes through the
+// contact reached, within the rounding of its place.
+TEST_P(BundledClearance, TheWitnessLiesOnItsPatch) {
+  const LoadedProblem problem = loadBundledProblem(GetParam());
+  const FreeSpace space(problem.robot, problem.world);
+  const double scale = space.meshes().scale;
+  int witnessed = 0;
+  for (const Pose2& pose : randomPoses(space, 11, 60)) {
+    const Clearance clearance = space.clearance(pose);
+    if (!clearance.contact) continue;
+    ++witnessed;
+    const PatchGeometry& patch = space.arrangement().patches.at(clearance.contactPatch);
+    EXPECT_EQ(patch.patch.contact.kind, clearance.contact->kind);
+    EXPECT_EQ(patch.patch.contact.robot, clearance.contact->robot);
+    EXPECT_EQ(patch.patch.contact.world, clearance.contact->world);
+    const RoundingScope rounding;
+    slices::SliceIn<Interval> slice;
+    HalfAngle::fromRadians(pose.theta).cosSin(slice.cosine, slice.sine);
+    std::array<std::array<double, 2>, 2> ends;
+    for (int end = 0; end < 2; ++end) {
+      const std::array<Interval, 2> point = slice.end(patch, end);
+      ends[end] = {point[0].midpoint() / scale, point[1].midpoint() / scale};
+    }
+    // The distance from the contact to the segment.
+    const double alongX = ends[1][0] - ends[0][0], alongY = ends[1][1] - ends[0][1];
+    const double dx = clearance.nearest[0] - ends[0][0], dy = clearance.nearest[1] - ends[0][1];
+    const double t = std::clamp((dx * alongX + dy * alongY) / (alongX * alongX + alongY * alongY), 0.0, 1.0);
+    const double size = 1 + std::fabs(clearance.nearest[0]) + std::fabs(clearance.nearest[1]);
+    EXPECT_LT(std::hypot(dx - t * alongX, dy - t * alongY), 1e-9 * size)
+        << "at " << pose.x << " " << pose.y << " " << pose.theta << ", patch " << clearance.contactPatch;
+  }
+  EXPECT_GT(witnessed, 30);
+}
+
 TEST_P(BundledClearance, SeveralThreadsGetWhatOneGets) {
   const LoadedProblem problem = loadBundledProblem(GetParam());
   const FreeSpace space(problem.robot, problem.world);

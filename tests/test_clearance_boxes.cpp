@@ -182,6 +182,19 @@ TEST_P(BundledClearanceBoxes, SearchesStoppedBelowTheTargetAgreeWithRelaxationAb
   }
   EXPECT_GT(atLevel, 10);
   EXPECT_GT(below, 10);
+  // The boxes chains wider than a level reach (ClearanceBoxes::reachedAbove): those
+  // whose relaxed bottleneck exceeds it.
+  for (const double above : {level, relaxed[to], 0.5 * relaxed[to]}) {
+    const std::vector<char> reached = boxes.reachedAbove(from, above);
+    int inside = 0, outside = 0;
+    for (std::uint32_t box = 0; box < boxes.size(); ++box) {
+      if (boxes.box(box).split) continue;
+      EXPECT_EQ(reached[box] != 0, relaxed[box] > above) << "box " << box << " above " << above;
+      ++(reached[box] ? inside : outside);
+    }
+    EXPECT_GT(inside, 10);
+    EXPECT_GT(outside, 10);
+  }
 }
 
 // A search kept from round to round (ClearanceBoxes::UpperSearch) agrees with a new

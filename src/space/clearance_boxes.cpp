@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <queue>
+#include <tuple>
 
 #include "contact_point.h"
 #include "every_core.h"
@@ -50,6 +51,34 @@ std::size_t intervalOf(const std::vector<double>& edges, double value) {
 }
 
 bool closedOverlap(double lowA, double highA, double lowB, double highB) { return lowA <= highB && lowB <= highA; }
+
+void addAnchors(const std::vector<ClearanceAnchor>& anchors, std::vector<const ClearanceAnchor*>& candidates) {
+  for (const ClearanceAnchor& anchor : anchors) candidates.push_back(&anchor);
+}
+
+/// The bound a segment anchor gives on the clearance in a box whose angles lie within
+/// `turn` of the anchor's: the most, over the box's (x, y) corners, of the distance to
+/// the segment's point nearest the corner plus the lever there times the turn. The
+/// least over the segment's points of that sum is convex in (x, y) (the distance and
+/// the lever's norm are of affine functions of (x, y) and the fraction along the
+/// segment), so its most over the rectangle lies at a corner (rounding left to the
+/// caller).
+double segmentBound(const ClearanceAnchor& anchor, const ClearanceBox& box, double turn, double reach) {
+  const double length2 = anchor.along[0] * anchor.along[0] + anchor.along[1] * anchor.along[1];
+  double most = 0;
+  for (const double x : {box.low[0], box.high[0]}) {
+    for (const double y : {box.low[1], box.high[1]}) {
+      const double dx = x - anchor.at[0], dy = y - anchor.at[1];
+      const double t = std::clamp((dx * anchor.along[0] + dy * anchor.along[1]) / length2, 0.0, 1.0);
+      const double leverX = anchor.contactFrom[0] + t * anchor.contactAlong[0];
+      const double leverY = anchor.contactFrom[1] + t * anchor.contactAlong[1];
+      const double apartX = dx - t * anchor.along[0], apartY = dy - t * anchor.along[1];
+      most = std::max(most, std::sqrt(apartX * apartX + apartY * apartY) +
+                                std::min(reach, std::sqrt(leverX * leverX + leverY * leverY) * (1 + 1e-12)) * turn);
+    }
+  }
+  return most;
+}
 
 /// Whether the segment from `from` to `to` meets the rectangle [low, high] (clipped
 /// to it, Liang and Barsky's way).
@@ -220,11 +249,10 @@ ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 
     }
   }
   for (ClearanceBox& box : boxes_) {
-    std::vector<ClearanceAnchor> candidates = box.own;
-    for (std::uint32_t neighbour : box.neighbours) {
-      candidates.insert(candidates.end(), boxes_[neighbour].own.begin(), boxes_[neighbour].own.end());
-    }
-    bound(box, std::move(candidates));
+    std::vector<const ClearanceAnchor*> candidates;
+    addAnchors(box.own, candidates);
+    for (std::uint32_t neighbour : box.neighbours) addAnchors(boxes_[neighbour].own, candidates);
+    bound(box, candidates);
   }
 }
 
@@ -279,6 +307,11 @@ ClearanceBox ClearanceBoxes::measured(const std::array<double, 3>& low, const st
       box.own.push_back({{clearance.nearest[0], clearance.nearest[1], centre.theta},
                          rounding,
                          std::min(reach_, contactLever(clearance, centre.theta, rounding) * (1 + 1e-9) + rounding)});
+      // Its whole patch: farther in (x, y) along it, but with the lever of the patch's
+      // farther end.
+      if (const std::optional<ClearanceAnchor> segment = contactSegment(clearance, centre.theta)) {
+        box.own.push_back(*segment);
+      }
     }
   }
   // Free throughout at a positive clearance, no boundary meets it.
@@ -306,6 +339,44 @@ double ClearanceBoxes::contactLever(const Clearance& clearance, double theta, do
   return std::min(known, std::max(fromAxis(clearance.contactVertices[0]), fromAxis(clearance.contactVertices[1])));
 }
 
+// A patch's segment at a fixed angle is where its two features touch (docs/design.md
+// section 3); the robot's point in the contact moves along the robot's feature in step
+// with the place along the segment, so it lies no farther from the axis than at one of
+// the segment's ends (each a vertex of one body on an edge of the other, a spiral
+// u + R v with |v| that distance).
+std::optional<ClearanceAnchor> ClearanceBoxes::contactSegment(const Clearance& clearance, double theta) const {
+  const PatchGeometry& patch = space_.arrangement().patches[clearance.contactPatch];
+  const double scale = space_.meshes().scale;
+  const RoundingScope rounding;
+  slices::SliceIn<Interval> slice;
+  HalfAngle::fromRadians(theta).cosSin(slice.cosine, slice.sine);
+  std::array<std::array<double, 2>, 2> ends, contacts;
+  double error = 0, leverError = 0;
+  for (int end = 0; end < 2; ++end) {
+    const Spiral<Interval> spiral = spiralOf<Interval>(patch.ends[end]);
+    const std::array<Interval, 2> point = slice.end(patch, end), contact{spiral.vx, spiral.vy};
+    for (int axis = 0; axis < 2; ++axis) {
+      ends[end][axis] = point[axis].midpoint() / scale;
+      error = std::max(error, (point[axis].upper() - point[axis].lower()) / scale);
+      contacts[end][axis] = contact[axis].midpoint() / scale;
+      leverError = std::max(leverError, (contact[axis].upper() - contact[axis].lower()) / scale);
+    }
+  }
+  if (!(error + leverError < HUGE_VAL) || error > 1e-3 * reach_) return std::nullopt;
+  // Every point of the segment between the rounded ends lies within `error` of the
+  // patch's (each end within half of it along each axis), and every lever within
+  // `leverError` of the true one, which the turn (at most pi) multiplies.
+  const double magnitude =
+      1 + std::fabs(ends[0][0]) + std::fabs(ends[0][1]) + std::fabs(ends[1][0]) + std::fabs(ends[1][1]) + reach_;
+  const double lever = std::max(std::hypot(contacts[0][0], contacts[0][1]), std::hypot(contacts[1][0], contacts[1][1]));
+  return ClearanceAnchor{{ends[0][0], ends[0][1], theta},
+                         error + 4 * leverError + 1e-12 * magnitude,
+                         std::min(reach_, lever * (1 + 1e-9) + leverError),
+                         {ends[1][0] - ends[0][0], ends[1][1] - ends[0][1]},
+                         contacts[0],
+                         {contacts[1][0] - contacts[0][0], contacts[1][1] - contacts[0][1]}};
+}
+
 double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const {
   const auto farthest = [&](int axis) {
     return std::max(std::fabs(anchor.at[axis] - box.low[axis]), std::fabs(anchor.at[axis] - box.high[axis]));
@@ -320,21 +391,38 @@ double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const Clear
   // A blocked anchor (upper < 0) bounds the slice at its angle by the signed
   // clearance's Lipschitz bound, but only down to 0: across angles only the free side
   // is Lipschitz (docs/design.md section 7).
-  const double inSlice = std::max(0.0, anchor.upper + std::hypot(farthest(0), farthest(1)) * (1 + 1e-12));
-  return inSlice + anchor.lever * (turn * (1 + 1e-12) + 1e-15) +
-         1e-13 * (1 + std::fabs(anchor.upper) + std::fabs(anchor.at[0]) + std::fabs(anchor.at[1]));
+  const double rounding = 1e-13 * (1 + std::fabs(anchor.upper) + std::fabs(anchor.at[0]) + std::fabs(anchor.at[1]) +
+                                   std::fabs(anchor.along[0]) + std::fabs(anchor.along[1]));
+  const double paddedTurn = turn * (1 + 1e-12) + 1e-15;
+  if (anchor.along[0] != 0 || anchor.along[1] != 0) {
+    // A contact's segment: clearance at most 0 but for its rounding, in `upper`.
+    return anchor.upper + segmentBound(anchor, box, paddedTurn, reach_) * (1 + 1e-12) + rounding;
+  }
+  const double apartX = farthest(0), apartY = farthest(1);
+  const double inSlice = std::max(0.0, anchor.upper + std::sqrt(apartX * apartX + apartY * apartY) * (1 + 1e-12));
+  return inSlice + anchor.lever * paddedTurn + rounding;
 }
 
-void ClearanceBoxes::bound(ClearanceBox& box, std::vector<ClearanceAnchor> candidates) const {
+void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates) const {
   constexpr std::size_t kAnchorsKept = 6;
-  std::vector<std::pair<double, std::size_t>> bounds;
+  std::vector<std::pair<double, std::uint32_t>> bounds;
   bounds.reserve(candidates.size());
-  for (std::size_t k = 0; k < candidates.size(); ++k) bounds.push_back({upperBoundFrom(candidates[k], box), k});
-  const auto kept = bounds.begin() + static_cast<std::ptrdiff_t>(std::min(kAnchorsKept, bounds.size()));
-  std::partial_sort(bounds.begin(), kept, bounds.end());
+  for (std::uint32_t k = 0; k < candidates.size(); ++k) bounds.push_back({upperBoundFrom(*candidates[k], box), k});
+  // The best distinct ones (halves share their parent's contact segments), sorted a
+  // few more at a time while equal ones fill the places.
+  const auto same = [](const ClearanceAnchor& a, const ClearanceAnchor& b) {
+    return a.at == b.at && a.along == b.along && a.upper == b.upper;
+  };
   box.anchors.clear();
-  for (std::size_t k = 0; k < std::min(kAnchorsKept, bounds.size()); ++k) {
-    box.anchors.push_back(candidates[bounds[k].second]);
+  for (std::size_t k = 0, sorted = 0; k < bounds.size() && box.anchors.size() < kAnchorsKept; ++k) {
+    if (k == sorted) {
+      sorted = std::min(bounds.size(), k + 2 * kAnchorsKept);
+      std::partial_sort(bounds.begin() + static_cast<std::ptrdiff_t>(k),
+                        bounds.begin() + static_cast<std::ptrdiff_t>(sorted), bounds.end());
+    }
+    const ClearanceAnchor& candidate = *candidates[bounds[k].second];
+    if (!box.anchors.empty() && same(box.anchors.back(), candidate)) continue;
+    box.anchors.push_back(candidate);
   }
   if (!bounds.empty()) box.upper = std::min(box.upper, bounds.front().first);
 }
@@ -509,13 +597,10 @@ void ClearanceBoxes::boundHalves(std::uint32_t index, const std::vector<std::uin
   const std::uint32_t first = box.firstChild, end = first + partCount(box.splitAxes);
   // Each half is bounded by the best of the box's anchors and the halves' and
   // neighbours' own.
-  std::vector<ClearanceAnchor> candidates = box.anchors;
-  for (std::uint32_t child = first; child < end; ++child) {
-    candidates.insert(candidates.end(), boxes_[child].own.begin(), boxes_[child].own.end());
-  }
-  for (std::uint32_t neighbour : neighbours) {
-    candidates.insert(candidates.end(), boxes_[neighbour].own.begin(), boxes_[neighbour].own.end());
-  }
+  std::vector<const ClearanceAnchor*> candidates;
+  addAnchors(box.anchors, candidates);
+  for (std::uint32_t child = first; child < end; ++child) addAnchors(boxes_[child].own, candidates);
+  for (std::uint32_t neighbour : neighbours) addAnchors(boxes_[neighbour].own, candidates);
   for (std::uint32_t child = first; child < end; ++child) {
     bound(boxes_[child], candidates);
     // The box's bound holds in its halves: bounds only fall (UpperSearch relies on it).
@@ -559,29 +644,33 @@ void ClearanceBoxes::dropOutside(std::uint32_t cell) {
 
 namespace {
 
-using BoxQueue = std::priority_queue<std::pair<double, std::uint32_t>>;
+/// A box reached: its chain's bottleneck, its own bound, its index.
+using BoxReached = std::tuple<double, double, std::uint32_t>;
+using BoxQueue = std::priority_queue<BoxReached>;
 
 /// Dijkstra's method with the bottleneck for length (breadth by `boundOf`, through the
 /// boxes `usable` accepts), from the boxes in `open` with their bottlenecks in
 /// `widest`, until `stop` says so of a box reached (with its bottleneck; boxes are
-/// reached widest first): each box's bottleneck and predecessor, final (and marked
+/// reached widest first, and of equal bottlenecks, widest themselves first: past the
+/// bottleneck, where every box ties, chains keep to the widest boxes instead of
+/// wandering along walls): each box's bottleneck and predecessor, final (and marked
 /// so) for the boxes reached before.
 template <typename BoundOf, typename Usable, typename Stop>
 void widestChains(const std::vector<ClearanceBox>& boxes, BoxQueue& open, BoundOf boundOf, Usable usable, Stop stop,
                   std::vector<double>& widest, std::vector<std::uint32_t>& previous, std::vector<char>& final) {
   while (!open.empty()) {
-    const auto [width, index] = open.top();
+    const auto [width, own, index] = open.top();
     open.pop();
     if (width < widest[index] || final[index]) continue;
     if (stop(index, width)) break;
     final[index] = 1;
     for (std::uint32_t neighbour : boxes[index].neighbours) {
       if (!usable(neighbour)) continue;
-      const double through = std::min(width, boundOf(neighbour));
+      const double bound = boundOf(neighbour), through = std::min(width, bound);
       if (through <= widest[neighbour]) continue;
       widest[neighbour] = through;
       previous[neighbour] = index;
-      open.push({through, neighbour});
+      open.push({through, bound, neighbour});
     }
   }
 }
@@ -598,7 +687,7 @@ ClearanceBoxes::Chain ClearanceBoxes::widestChain(std::uint32_t from, std::uint3
   std::vector<char> final(boxes_.size(), 0);
   widest[from] = boundOf(from);
   BoxQueue open;
-  open.push({widest[from], from});
+  open.push({widest[from], widest[from], from});
   widestChains(
       boxes_, open, boundOf,
       [&](std::uint32_t index) {
@@ -668,7 +757,7 @@ const std::vector<double>& ClearanceBoxes::widestUpperFrom(std::uint32_t from, s
   const auto usable = [&](std::uint32_t index) { return !boxes_[index].split && !boxes_[index].dropped; };
   // Boxes reset start from their kept final neighbours; kept boxes the last search
   // left below its level keep what its final boxes gave them (their best).
-  std::vector<std::pair<double, std::uint32_t>> seeds;
+  std::vector<BoxReached> seeds;
   for (std::uint32_t index = 0; index < boxes_.size(); ++index) {
     if (reset[index]) {
       widest[index] = index == from ? boxes_[index].upper : -HUGE_VAL;
@@ -685,9 +774,11 @@ const std::vector<double>& ClearanceBoxes::widestUpperFrom(std::uint32_t from, s
         }
       }
     }
-    if (!search.final[index] && widest[index] > -HUGE_VAL) seeds.push_back({widest[index], index});
+    if (!search.final[index] && widest[index] > -HUGE_VAL) {
+      seeds.push_back({widest[index], boxes_[index].upper, index});
+    }
   }
-  BoxQueue open(std::less<std::pair<double, std::uint32_t>>(), std::move(seeds));
+  BoxQueue open(std::less<BoxReached>(), std::move(seeds));
   // Stopped below the level (known once `to` is final).
   double level = search.final[to] ? ratio * std::min(cap, widest[to]) : -HUGE_VAL;
   widestChains(
@@ -698,6 +789,27 @@ const std::vector<double>& ClearanceBoxes::widestUpperFrom(std::uint32_t from, s
       },
       widest, search.previous, search.final);
   return widest;
+}
+
+std::vector<char> ClearanceBoxes::reachedAbove(std::uint32_t from, double level) const {
+  std::vector<char> reached(boxes_.size(), 0);
+  const auto passable = [&](std::uint32_t index) {
+    const ClearanceBox& box = boxes_[index];
+    return !box.split && !box.dropped && box.upper > level;
+  };
+  if (!passable(from)) return reached;
+  std::vector<std::uint32_t> open{from};
+  reached[from] = 1;
+  while (!open.empty()) {
+    const std::uint32_t index = open.back();
+    open.pop_back();
+    for (std::uint32_t neighbour : boxes_[index].neighbours) {
+      if (reached[neighbour] || !passable(neighbour)) continue;
+      reached[neighbour] = 1;
+      open.push_back(neighbour);
+    }
+  }
+  return reached;
 }
 
 ClearanceBoxes::Chain ClearanceBoxes::chainTo(const UpperSearch& search, std::uint32_t to) {

@@ -10,15 +10,21 @@
 
 namespace freespace {
 
-/// A configuration with a certified upper bound on its clearance: the clearance of any
-/// configuration is at most max(0, that + |dxy|) + lever |dtheta| (the lever is the
-/// robot's reach r, or for a contact, how far from the robot's axis its point in the
-/// contact lies: turning moves that point no faster; a negative bound, a blocked
-/// configuration's depth, bounds only its own slice: docs/design.md section 7).
+/// A configuration, or a segment of configurations at one angle (from `at` to `at` +
+/// `along` in (x, y)), with a certified upper bound on its clearance: the clearance of
+/// any configuration is at most max(0, that + |dxy|) + lever |dtheta|, dxy its offset
+/// from the nearest (the lever is the robot's reach r, or for a contact, how far from
+/// the robot's axis its point in the contact lies: turning moves that point no faster;
+/// a negative bound, a blocked configuration's depth, bounds only its own slice:
+/// docs/design.md section 7). A segment is a contact's whole patch at that angle:
+/// every configuration on it touches; at the fraction t along it, the robot's point in
+/// the contact lies at contactFrom + t contactAlong from the robot's axis (in the
+/// robot's frame), which bounds the lever there.
 struct ClearanceAnchor {
   std::array<double, 3> at;
   double upper;
   double lever;
+  std::array<double, 2> along{}, contactFrom{}, contactAlong{};
 };
 
 /// Angles counterclockwise from `from` to `to` (radians in [-pi, pi], padded), or
@@ -110,6 +116,11 @@ class ClearanceBoxes {
   const std::vector<double>& widestUpperFrom(std::uint32_t from, std::uint32_t to, double ratio, double cap,
                                              UpperSearch& search) const;
 
+  /// Marks (1) the boxes, neither split nor dropped, that a chain from `from` through
+  /// boxes whose upper bounds all exceed `level` reaches (the widest chains by upper
+  /// bounds from `from` to them are wider than `level`, without their values).
+  std::vector<char> reachedAbove(std::uint32_t from, double level) const;
+
   /// The widest chain by upper bounds a search (widestUpperFrom) found from its box to
   /// `to`, a box it reached at its level: along its tree of predecessors (empty when it
   /// did not reach `to`).
@@ -182,10 +193,13 @@ class ClearanceBoxes {
   /// The lever of the contact a clearance's witness reaches at angle `theta` (see
   /// ClearanceAnchor), its place `slack` from the true contact's at most.
   double contactLever(const Clearance& clearance, double theta, double slack) const;
+  /// The witness's patch at angle `theta` as an anchor (none when its ends are not
+  /// known to a few thousandths of the reach).
+  std::optional<ClearanceAnchor> contactSegment(const Clearance& clearance, double theta) const;
   /// The bound an anchor gives on the clearance in a box.
   double upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
   /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.
-  void bound(ClearanceBox& box, std::vector<ClearanceAnchor> candidates) const;
+  void bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates) const;
   bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
   /// Marks a box dropped (and logs it for the searches).
   void drop(std::uint32_t index);

@@ -239,6 +239,7 @@ Clearance FreeSpace::clearance(const Pose2& pose, double relativeWidth, double e
   const PatchGeometry& patch = impl_->arrangement.patches[found->face.patch];
   result.contact = patch.patch.contact;
   result.contactVertices = patch.line.vertices;
+  result.contactPatch = found->face.patch;
   return result;
 }
 
