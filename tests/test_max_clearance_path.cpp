@@ -101,8 +101,11 @@ TEST_P(SolvedProblems, PathsAreFreeAndKeepTheirCertifiedClearance) {
 }
 
 // The maze converges only once its chain by lower bounds is raised (its boxes' own
-// chain stays below 98% of c_hi after a minute).
-INSTANTIATE_TEST_SUITE_P(Bundled, SolvedProblems, ::testing::Values("flip_window", "random_polyhedra", "maze"),
+// chain stays below 98% of c_hi after a minute); keyhole_wide only once the walls of
+// its rooms are left whole (boxesToHalve: halving them too took over a million boxes
+// without converging).
+INSTANTIATE_TEST_SUITE_P(Bundled, SolvedProblems,
+                         ::testing::Values("flip_window", "random_polyhedra", "maze", "keyhole_wide"),
                          [](const auto& info) { return info.param; });
 
 /// A bundled problem and the seconds its query is given.

@@ -232,24 +232,41 @@ struct RoundLevels {
 /// on tetra_floorplan); those whose centre lies outside `cell` (blocked, or another
 /// cell's) that some chain at the target's level passes (reached from the start at it,
 /// `fromStart`: at a level at most c_hi, the boxes chains at it reach from the start
-/// are those they reach from the goal): their upper bound is about their size, and
+/// are those they reach from the goal; their upper bound is about their size, and
 /// chains of them along walls or around the cell's outside may be all that carries
-/// c_hi; and the worse half of the widest chain by lower bounds (docs/design.md
-/// section 7).
+/// c_hi), but not those at the edge of one end's basin alone (see below); and the
+/// worse half of the widest chain by lower bounds (docs/design.md section 7).
+///
+/// An end's basin is where chains from it wider than c_hi by more than the ratio's
+/// slack reach (the start's: `fromStart` above that; the goal's: `goalBasin`). A chain
+/// through a box next to one basin but not the other has its bottleneck past the box,
+/// so halving the box cannot lower c_hi; the walls around a wide room are such boxes,
+/// and halving them all took keyhole_wide past a million boxes without converging. A
+/// box next to both may join them; one next to neither lies in the narrow part between
+/// them; one whose bound is below c_hi may carry the next c_hi: those are halved.
 std::vector<std::uint32_t> boxesToHalve(const ClearanceBoxes& boxes, const ClearanceBoxes::Chain& upperChain,
-                                        const std::vector<double>& fromStart, const ClearanceBoxes::Chain& lowerChain,
-                                        const RoundLevels& levels, std::uint32_t cell) {
+                                        const std::vector<double>& fromStart, const std::vector<char>& goalBasin,
+                                        const ClearanceBoxes::Chain& lowerChain, const RoundLevels& levels,
+                                        std::uint32_t cell) {
   std::vector<std::uint32_t> uncertain;
   for (std::uint32_t box : upperChain.boxes) {
     const ClearanceBox& candidate = boxes.box(box);
     if (candidate.lower < levels.target && candidate.upper * levels.ratio <= levels.upper) uncertain.push_back(box);
   }
+  const double wide = levels.upper / levels.ratio;
+  const auto inStartBasin = [&](std::uint32_t box) { return fromStart[box] > wide; };
+  const auto inGoalBasin = [&](std::uint32_t box) { return goalBasin[box] != 0; };
   for (std::uint32_t box = 0; box < boxes.size(); ++box) {
     // (The search's values first: most boxes are not reached at the target.)
     if (fromStart[box] < levels.target) continue;
     const ClearanceBox& candidate = boxes.box(box);
-    if (candidate.split || candidate.dropped || candidate.lower >= levels.target) continue;
-    if (candidate.centreCell != cell) uncertain.push_back(box);
+    if (candidate.split || candidate.dropped || candidate.lower >= levels.target || candidate.centreCell == cell) {
+      continue;
+    }
+    const std::vector<std::uint32_t>& next = candidate.neighbours;
+    const bool nextToStartBasin = std::any_of(next.begin(), next.end(), inStartBasin);
+    const bool nextToGoalBasin = std::any_of(next.begin(), next.end(), inGoalBasin);
+    if (nextToStartBasin == nextToGoalBasin || candidate.upper < levels.upper) uncertain.push_back(box);
   }
   for (std::uint32_t box : lowerChain.boxes) {
     if (boxes.box(box).lower <= 0.5 * (lowerChain.bottleneck + levels.target)) uncertain.push_back(box);
@@ -364,7 +381,8 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     path.converged = std::max(lowerChain.bottleneck, bestLower) >= target;
     if (path.converged || secondsSince(began) > options.secondsLimit || boxes.size() > options.boxLimit) break;
     const std::vector<std::uint32_t> uncertain =
-        boxesToHalve(boxes, ClearanceBoxes::chainTo(startSearch, to), fromStart, lowerChain,
+        boxesToHalve(boxes, ClearanceBoxes::chainTo(startSearch, to), fromStart,
+                     boxes.reachedAbove(to, path.passage.upper / options.clearanceRatio), lowerChain,
                      {target, path.passage.upper, options.clearanceRatio}, path.startCell);
     if (uncertain.empty()) break;
     // The limit and cancellation are looked at between halvings too: a round can halve
