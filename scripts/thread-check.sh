@@ -4,9 +4,9 @@
 # threads at once (docs/design.md section 7, threads) and the path queries that halve
 # boxes and check motions on every core; exits non-zero at the first race reported
 # or test failed. Not part of scripts/test.sh: the instrumented build takes about
-# twenty minutes on two cores. The maze is left out: its test asks the bounds to
-# converge (in about 2 s here), which the instrumented query (tens of times slower) may
-# not do within its limit.
+# twenty minutes on two cores. The maze and keyhole_wide are left out: their tests ask
+# the bounds to converge (in 1.5 and 3 s here), which the instrumented query (tens of
+# times slower) may not do within its limit.
 #
 # Usage: scripts/thread-check.sh [BUILD_FOLDER]   (default build-tsan)
 set -euo pipefail
@@ -18,4 +18,4 @@ cmake -S . -B "$folder" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="-fs
   > /dev/null
 cmake --build "$folder" -j"$(nproc)" --target freespace_tests > "$folder/build.log"
 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" "$folder/bin/freespace_tests" \
-  --gtest_filter='*SeveralThreadsGetWhatOneGets*:*HalvingAtOnceMatchesHalvingInTurn*:*RoutedProblems*:*SolvedProblems*:*KeyholesSlotLiesBetweenTheBounds*-*SolvedProblems*/maze'
+  --gtest_filter='*SeveralThreadsGetWhatOneGets*:*HalvingAtOnceMatchesHalvingInTurn*:*RoutedProblems*:*SolvedProblems*:*KeyholesSlotLiesBetweenTheBounds*-*SolvedProblems*/maze:*SolvedProblems*/keyhole_wide'

@@ -139,11 +139,6 @@ void expectSameAnswers(const ThreadedAnswer& other, const ThreadedAnswer& alone,
   EXPECT_EQ(other.node.node, alone.node.node) << "configuration " << k;
 }
 
-// Queries share the free space's functions (and their memos, made on first use) and
-// borrow their own predicates: four threads asking at once, each in its own order, get
-// what one thread gets asking alone afterwards; so do twelve threads asking the space
-// read back from a file first (its exact coefficients decoded on first use; more
-// threads than the space keeps idle predicates for without a lock).
 // The witness names its patch: at the configuration's angle, the patch's segment (the
 // places where its two features touch, docs/design.md section 3) passes through the
 // contact reached, within the rounding of its place.
@@ -179,6 +174,11 @@ TEST_P(BundledClearance, TheWitnessLiesOnItsPatch) {
   EXPECT_GT(witnessed, 30);
 }
 
+// Queries share the free space's functions (and their memos, made on first use) and
+// borrow their own predicates: four threads asking at once, each in its own order, get
+// what one thread gets asking alone afterwards; so do twelve threads asking the space
+// read back from a file first (its exact coefficients decoded on first use; more
+// threads than the space keeps idle predicates for without a lock).
 TEST_P(BundledClearance, SeveralThreadsGetWhatOneGets) {
   const LoadedProblem problem = loadBundledProblem(GetParam());
   const FreeSpace space(problem.robot, problem.world);

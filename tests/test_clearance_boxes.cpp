@@ -121,6 +121,43 @@ TEST_P(BundledClearanceBoxes, BoundsHoldTheExactClearanceInside) {
   EXPECT_GT(unbroken.blocked, 10);
 }
 
+// A patch anchor's configurations touch, and so does each turned about the robot's
+// axis and slid back by its contact point's move: at the fraction t along the segment,
+// the robot's point in the contact is minus contactFrom + t contactAlong (docs/design.md
+// section 7), which touches the environment at s(t) plus that point turned by the
+// anchor's angle; at another angle, the configuration that puts the point there again
+// has clearance at most 0 (but for rounding). Ends paired with the wrong contact points,
+// or the points' sign or frame wrong, move it off the contact.
+TEST_P(BundledClearanceBoxes, PatchAnchorsTouchTurnedAboutTheirContactPoints) {
+  const LoadedProblem loaded = loadBundledProblem(GetParam());
+  const FreeSpace space(loaded.robot, loaded.world);
+  std::mt19937_64 random(20261206);
+  const ClearanceBoxes boxes = halvedBoxes(space, loaded, 100, random).boxes;
+  std::uniform_real_distribution<double> unit(0, 1), turn(-0.5, 0.5);
+  int checked = 0, moved = 0;
+  for (std::uint32_t index = 0; index < boxes.size() && checked < 300; index += 7) {
+    for (const ClearanceAnchor& anchor : boxes.box(index).own) {
+      if (anchor.along[0] == 0 && anchor.along[1] == 0) continue;
+      const double t = unit(random), theta = anchor.at[2], turned = theta + turn(random);
+      const double vx = anchor.contactFrom[0] + t * anchor.contactAlong[0];
+      const double vy = anchor.contactFrom[1] + t * anchor.contactAlong[1];
+      // Where the robot's point (-v, turned by the angle) touches: s(t) - R(theta) v.
+      const double touchX = anchor.at[0] + t * anchor.along[0] - (std::cos(theta) * vx - std::sin(theta) * vy);
+      const double touchY = anchor.at[1] + t * anchor.along[1] - (std::sin(theta) * vx + std::cos(theta) * vy);
+      const Pose2 back{touchX + std::cos(turned) * vx - std::sin(turned) * vy,
+                       touchY + std::sin(turned) * vx + std::cos(turned) * vy, turned};
+      const Clearance clearance = space.clearance(back);
+      EXPECT_LE(clearance.lower, 1e-9 * (1 + std::fabs(back.x) + std::fabs(back.y)))
+          << "box " << index << " t " << t << " at " << back.x << " " << back.y << " " << back.theta;
+      moved +=
+          std::hypot(back.x - anchor.at[0] - t * anchor.along[0], back.y - anchor.at[1] - t * anchor.along[1]) > 1e-3;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100);
+  EXPECT_GT(moved, checked / 2);
+}
+
 // Each box's centre is located as locate() places it: the halves of a free box whose
 // centre's clearance exceeds the move to theirs take its cell without a ray of their
 // own (ClearanceBoxes::certifiedLocation), the others are placed by their clearance's.
@@ -320,6 +357,8 @@ void expectSameBoxes(const ClearanceBoxes& a, const ClearanceBoxes& b) {
     for (std::size_t k = 0; k < x.anchors.size(); ++k) {
       EXPECT_EQ(x.anchors[k].at, y.anchors[k].at) << "box " << index;
       EXPECT_EQ(x.anchors[k].upper, y.anchors[k].upper) << "box " << index;
+      EXPECT_EQ(x.anchors[k].along, y.anchors[k].along) << "box " << index;
+      EXPECT_EQ(x.anchors[k].contactFrom, y.anchors[k].contactFrom) << "box " << index;
     }
   }
 }

@@ -63,7 +63,7 @@ void addAnchors(const std::vector<ClearanceAnchor>& anchors, std::vector<const C
 /// the lever's norm are of affine functions of (x, y) and the fraction along the
 /// segment), so its most over the rectangle lies at a corner (rounding left to the
 /// caller).
-double segmentBound(const ClearanceAnchor& anchor, const ClearanceBox& box, double turn, double reach) {
+double segmentBound(const ClearanceAnchor& anchor, const ClearanceBox& box, double turn) {
   const double length2 = anchor.along[0] * anchor.along[0] + anchor.along[1] * anchor.along[1];
   double most = 0;
   for (const double x : {box.low[0], box.high[0]}) {
@@ -74,7 +74,7 @@ double segmentBound(const ClearanceAnchor& anchor, const ClearanceBox& box, doub
       const double leverY = anchor.contactFrom[1] + t * anchor.contactAlong[1];
       const double apartX = dx - t * anchor.along[0], apartY = dy - t * anchor.along[1];
       most = std::max(most, std::sqrt(apartX * apartX + apartY * apartY) +
-                                std::min(reach, std::sqrt(leverX * leverX + leverY * leverY) * (1 + 1e-12)) * turn);
+                                std::sqrt(leverX * leverX + leverY * leverY) * (1 + 1e-12) * turn);
     }
   }
   return most;
@@ -298,6 +298,7 @@ ClearanceBox ClearanceBoxes::measured(const std::array<double, 3>& low, const st
   if (clearance.location.free) box.centreCell = clearance.location.cell;
   const double upper = clearance.upper;
   if (std::isfinite(upper)) {
+    box.own.reserve(3);
     box.own.push_back({{centre.x, centre.y, centre.theta}, upper, reach_});
     box.upper = upperBoundFrom(box.own.back(), box);
     if (clearance.contact) {
@@ -307,8 +308,7 @@ ClearanceBox ClearanceBoxes::measured(const std::array<double, 3>& low, const st
       box.own.push_back({{clearance.nearest[0], clearance.nearest[1], centre.theta},
                          rounding,
                          std::min(reach_, contactLever(clearance, centre.theta, rounding) * (1 + 1e-9) + rounding)});
-      // Its whole patch: farther in (x, y) along it, but with the lever of the patch's
-      // farther end.
+      // Its whole patch: it bounds the boxes along a wall however far they lie along it.
       if (const std::optional<ClearanceAnchor> segment = contactSegment(clearance, centre.theta)) {
         box.own.push_back(*segment);
       }
@@ -340,10 +340,11 @@ double ClearanceBoxes::contactLever(const Clearance& clearance, double theta, do
 }
 
 // A patch's segment at a fixed angle is where its two features touch (docs/design.md
-// section 3); the robot's point in the contact moves along the robot's feature in step
-// with the place along the segment, so it lies no farther from the axis than at one of
-// the segment's ends (each a vertex of one body on an edge of the other, a spiral
-// u + R v with |v| that distance).
+// section 3). Each end is a spiral u + R v (a vertex of one body on an edge of the
+// other), v minus the robot's point in the contact; between them the robot's point
+// moves along the robot's feature in step with the place along the segment (both
+// affine in the fraction along it), so at the fraction t it is minus
+// contactFrom + t contactAlong.
 std::optional<ClearanceAnchor> ClearanceBoxes::contactSegment(const Clearance& clearance, double theta) const {
   const PatchGeometry& patch = space_.arrangement().patches[clearance.contactPatch];
   const double scale = space_.meshes().scale;
@@ -362,7 +363,11 @@ std::optional<ClearanceAnchor> ClearanceBoxes::contactSegment(const Clearance& c
       leverError = std::max(leverError, (contact[axis].upper() - contact[axis].lower()) / scale);
     }
   }
-  if (!(error + leverError < HUGE_VAL) || error > 1e-3 * reach_) return std::nullopt;
+  // (A segment too short to tell its direction is left to the contact's point.)
+  const double alongX = ends[1][0] - ends[0][0], alongY = ends[1][1] - ends[0][1];
+  if (!(error + leverError < HUGE_VAL) || error > 1e-3 * reach_ || !(std::hypot(alongX, alongY) > 1e-9 * reach_)) {
+    return std::nullopt;
+  }
   // Every point of the segment between the rounded ends lies within `error` of the
   // patch's (each end within half of it along each axis), and every lever within
   // `leverError` of the true one, which the turn (at most pi) multiplies.
@@ -372,7 +377,7 @@ std::optional<ClearanceAnchor> ClearanceBoxes::contactSegment(const Clearance& c
   return ClearanceAnchor{{ends[0][0], ends[0][1], theta},
                          error + 4 * leverError + 1e-12 * magnitude,
                          std::min(reach_, lever * (1 + 1e-9) + leverError),
-                         {ends[1][0] - ends[0][0], ends[1][1] - ends[0][1]},
+                         {alongX, alongY},
                          contacts[0],
                          {contacts[1][0] - contacts[0][0], contacts[1][1] - contacts[0][1]}};
 }
@@ -396,7 +401,7 @@ double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const Clear
   const double paddedTurn = turn * (1 + 1e-12) + 1e-15;
   if (anchor.along[0] != 0 || anchor.along[1] != 0) {
     // A contact's segment: clearance at most 0 but for its rounding, in `upper`.
-    return anchor.upper + segmentBound(anchor, box, paddedTurn, reach_) * (1 + 1e-12) + rounding;
+    return anchor.upper + segmentBound(anchor, box, paddedTurn) * (1 + 1e-12) + rounding;
   }
   const double apartX = farthest(0), apartY = farthest(1);
   const double inSlice = std::max(0.0, anchor.upper + std::sqrt(apartX * apartX + apartY * apartY) * (1 + 1e-12));
@@ -516,6 +521,7 @@ std::uint32_t ClearanceBoxes::leafAt(const Pose2& pose) const {
 
 void ClearanceBoxes::split(std::uint32_t index, std::uint8_t axes) {
   boundHalves(index, attach(index, axes, halves(index, axes)));
+  forgetAnchors(index);
 }
 
 std::size_t ClearanceBoxes::splitEach(const std::vector<std::uint32_t>& boxes, const std::function<bool()>& keepGoing) {
@@ -535,6 +541,7 @@ std::size_t ClearanceBoxes::splitEach(const std::vector<std::uint32_t>& boxes, c
   for (std::size_t k = 0; k < done; ++k) neighbours[k] = attach(boxes[k], axes[k], std::move(halved[k]));
   const auto always = [] { return true; };
   onEveryCore(done, always, [&](std::size_t k) { boundHalves(boxes[k], neighbours[k]); });
+  for (std::size_t k = 0; k < done; ++k) forgetAnchors(boxes[k]);
   return done;
 }
 
@@ -606,6 +613,11 @@ void ClearanceBoxes::boundHalves(std::uint32_t index, const std::vector<std::uin
     // The box's bound holds in its halves: bounds only fall (UpperSearch relies on it).
     boxes_[child].upper = std::min(boxes_[child].upper, box.upper);
   }
+}
+
+void ClearanceBoxes::forgetAnchors(std::uint32_t index) {
+  std::vector<ClearanceAnchor>().swap(boxes_[index].own);
+  std::vector<ClearanceAnchor>().swap(boxes_[index].anchors);
 }
 
 std::uint8_t ClearanceBoxes::axesToSplit(std::uint32_t index) const {

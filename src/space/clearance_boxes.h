@@ -18,8 +18,8 @@ namespace freespace {
 /// a negative bound, a blocked configuration's depth, bounds only its own slice:
 /// docs/design.md section 7). A segment is a contact's whole patch at that angle:
 /// every configuration on it touches; at the fraction t along it, the robot's point in
-/// the contact lies at contactFrom + t contactAlong from the robot's axis (in the
-/// robot's frame), which bounds the lever there.
+/// the contact lies at minus contactFrom + t contactAlong from the robot's axis (in the
+/// robot's frame), whose length is the lever there.
 struct ClearanceAnchor {
   std::array<double, 3> at;
   double upper;
@@ -41,10 +41,10 @@ struct ClearanceBox {
   double lower = 0, upper = 0;
   /// The certified lower bound on its centre's clearance.
   double centreLower = -HUGE_VAL;
-  /// Its centre and the contact its clearance reaches there (the witness, clearance
-  /// 0), then the anchors that bound it best among its own, its siblings', its
-  /// parent's neighbours' (their own) and its parent's (upper is the least of their
-  /// bounds).
+  /// Its centre, the contact its clearance reaches there (the witness, clearance 0)
+  /// and that contact's whole patch at its angle, then the distinct anchors that bound
+  /// it best among its own, its siblings', its parent's neighbours' (their own) and its
+  /// parent's (upper is the least of their bounds); both forgotten once it is split.
   std::vector<ClearanceAnchor> own, anchors;
   /// Once split, its parts are boxes firstChild on: halved along the axes of
   /// `splitAxes` (bit k for axis k), 2 to the number of those axes of them, part i
@@ -68,8 +68,8 @@ struct ClearanceBox {
 /// box's centre, and is 1-Lipschitz in (x, y) and r-Lipschitz in theta, so it lies
 /// above the centre's lower bound minus |half diagonal in (x, y)| + r (half width in
 /// theta) everywhere in the box, and below the least, over configurations of known
-/// clearance nearby (centres, and the contacts their witnesses reach), of that
-/// clearance plus the distance to the box's farthest corner. Any continuous path
+/// clearance nearby (centres, the contacts their witnesses reach and those contacts'
+/// patches), of that clearance plus the distance to the box's farthest corner. Any continuous path
 /// passes through a chain of touching boxes, so the widest chain by upper bounds
 /// bounds every path's bottleneck from above, and a chain by lower bounds gives a path
 /// whose bottleneck is at least its value.
@@ -203,6 +203,8 @@ class ClearanceBoxes {
   bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
   /// Marks a box dropped (and logs it for the searches).
   void drop(std::uint32_t index);
+  /// Frees a split box's anchors: once its halves are bounded, nothing reads them.
+  void forgetAnchors(std::uint32_t index);
   /// Drops the boxes from `seen` on, neither split nor dropped, that `droppable`
   /// accepts; `seen` becomes the number of boxes (dropBelow, dropOutside).
   template <typename Droppable>

@@ -238,12 +238,14 @@ struct RoundLevels {
 /// worse half of the widest chain by lower bounds (docs/design.md section 7).
 ///
 /// An end's basin is where chains from it wider than c_hi by more than the ratio's
-/// slack reach (the start's: `fromStart` above that; the goal's: `goalBasin`). A chain
-/// through a box next to one basin but not the other has its bottleneck past the box,
-/// so halving the box cannot lower c_hi; the walls around a wide room are such boxes,
-/// and halving them all took keyhole_wide past a million boxes without converging. A
-/// box next to both may join them; one next to neither lies in the narrow part between
-/// them; one whose bound is below c_hi may carry the next c_hi: those are halved.
+/// slack reach (the start's: `fromStart` above that; the goal's: `goalBasin`). A box
+/// next to one basin but not the other and wider than c_hi does not limit any chain
+/// at c_hi: those chains narrow past it, between the basins. The walls around a wide
+/// room are such boxes, and halving them every round took keyhole_wide past two
+/// million boxes without converging; they are left whole (a choice of what to halve
+/// first: the bounds stay certified whatever is halved). A box next to both basins
+/// may join them, one next to neither lies between them, and one no wider than c_hi
+/// may limit a chain: those are halved.
 std::vector<std::uint32_t> boxesToHalve(const ClearanceBoxes& boxes, const ClearanceBoxes::Chain& upperChain,
                                         const std::vector<double>& fromStart, const std::vector<char>& goalBasin,
                                         const ClearanceBoxes::Chain& lowerChain, const RoundLevels& levels,
@@ -266,7 +268,7 @@ std::vector<std::uint32_t> boxesToHalve(const ClearanceBoxes& boxes, const Clear
     const std::vector<std::uint32_t>& next = candidate.neighbours;
     const bool nextToStartBasin = std::any_of(next.begin(), next.end(), inStartBasin);
     const bool nextToGoalBasin = std::any_of(next.begin(), next.end(), inGoalBasin);
-    if (nextToStartBasin == nextToGoalBasin || candidate.upper < levels.upper) uncertain.push_back(box);
+    if (nextToStartBasin == nextToGoalBasin || candidate.upper <= levels.upper) uncertain.push_back(box);
   }
   for (std::uint32_t box : lowerChain.boxes) {
     if (boxes.box(box).lower <= 0.5 * (lowerChain.bottleneck + levels.target)) uncertain.push_back(box);

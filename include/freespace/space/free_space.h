@@ -64,7 +64,7 @@ struct Clearance {
   /// the robot triangle's; EE the robot edge's two, then the environment edge's).
   std::optional<Contact> contact;
   std::array<std::uint32_t, 4> contactVertices{};
-  /// The witness's patch (its index in FreeSpace::arrangement().patches).
+  /// The witness's patch, with `contact` (its index in FreeSpace::arrangement().patches).
   std::uint32_t contactPatch = 0;
   std::array<double, 2> direction{};
   std::array<double, 2> nearest{};
