@@ -157,6 +157,12 @@ TEST(MeshFileChecks, HostileColladaIsRefusedNamingTheDefect) {
   EXPECT_EQ(problemOf(dir, "loop.dae", edited("</visual_scene>", "<node id=\"a\"><node id=\"b\"><instance_node url=\"#a\"/>"
                                                                   "</node></node></visual_scene>")),
             "COLLADA <node id=\"a\">: instances itself (through <instance_node>)");
+  // A second source of the same id, without an array (the import library crashed).
+  const std::size_t source = content.find("<source id=\"");
+  ASSERT_NE(source, std::string::npos);
+  const std::string sourceId = content.substr(source + 12, content.find('"', source + 12) - source - 12);
+  EXPECT_EQ(problemOf(dir, "twice.dae", edited("</mesh>", "<source id=\"" + sourceId + "\"/></mesh>")),
+            "COLLADA <source id=\"" + sourceId + "\">: its id names other data too (ids must be unique)");
   const std::size_t count = content.find("count=\"", content.find("<float_array"));
   ASSERT_NE(count, std::string::npos);
   const std::string huge = content.substr(0, count) + "count=\"1000000000" + content.substr(content.find('"', count + 7));

@@ -112,6 +112,23 @@ void requireNoInstanceCycle(const std::string& path, const pugi::xml_document& d
   });
 }
 
+// Every id of the geometry's data (sources, vertices and arrays, which primitives'
+// inputs and accessors reference by `#id`) names one of them: the import library,
+// given two sources of one id (the second without an array), read through a null
+// array and crashed (found by fuzzing). Exporters give a geometry and its scene node
+// one id, which the library resolves apart: that is kept.
+void requireUniqueDataIds(const std::string& path, const pugi::xml_document& document) {
+  std::map<std::string, int> seen;
+  forEachElement(document, [&](const pugi::xml_node& element, int) {
+    const std::string name = element.name();
+    const bool data = name == "source" || name == "vertices" || name == "float_array" || name == "int_array";
+    const pugi::xml_attribute id = element.attribute("id");
+    if (data && id && ++seen[id.value()] == 2) {
+      throw InputError(path, elementDefect(element, "its id names other data too (ids must be unique)"));
+    }
+  });
+}
+
 // Whole numbers in [0, limit) only; false at the first other word.
 bool indicesBelow(const char* text, long double limit) {
   std::istringstream words(text);
@@ -243,6 +260,7 @@ void checkColladaFile(const std::string& path, const std::string& content) {
                                  printable(element.name()) + ">)");
     }
   });
+  requireUniqueDataIds(path, document);
   requireNoInstanceCycle(path, document);
   requireConsistentArrays(path, document);
   requireCompletePrimitives(path, document);
