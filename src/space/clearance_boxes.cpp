@@ -687,6 +687,18 @@ void widestChains(const std::vector<ClearanceBox>& boxes, BoxQueue& open, BoundO
   }
 }
 
+/// The chain a search's tree of predecessors gives from its box to `to`, with `to`'s
+/// bottleneck (empty when the search did not reach `to`).
+ClearanceBoxes::Chain chainAlong(const std::vector<double>& widest, const std::vector<std::uint32_t>& previous,
+                                 std::uint32_t to) {
+  ClearanceBoxes::Chain chain;
+  if (widest[to] == -HUGE_VAL) return chain;
+  chain.bottleneck = widest[to];
+  for (std::uint32_t index = to; index != UINT32_MAX; index = previous[index]) chain.boxes.push_back(index);
+  std::reverse(chain.boxes.begin(), chain.boxes.end());
+  return chain;
+}
+
 }  // namespace
 
 ClearanceBoxes::Chain ClearanceBoxes::widestChain(std::uint32_t from, std::uint32_t to, Bound bound,
@@ -707,12 +719,7 @@ ClearanceBoxes::Chain ClearanceBoxes::widestChain(std::uint32_t from, std::uint3
         return !box.split && !box.dropped && box.upper >= upperAtLeast && (!centreCell || box.centreCell == centreCell);
       },
       [&](std::uint32_t index, double) { return index == to; }, widest, previous, final);
-  Chain chain;
-  if (widest[to] == -HUGE_VAL) return chain;
-  chain.bottleneck = widest[to];
-  for (std::uint32_t index = to; index != UINT32_MAX; index = previous[index]) chain.boxes.push_back(index);
-  std::reverse(chain.boxes.begin(), chain.boxes.end());
-  return chain;
+  return chainAlong(widest, previous, to);
 }
 
 std::vector<double> ClearanceBoxes::widestUpperFrom(std::uint32_t from, std::uint32_t to, double ratio,
@@ -825,12 +832,7 @@ std::vector<char> ClearanceBoxes::reachedAbove(std::uint32_t from, double level)
 }
 
 ClearanceBoxes::Chain ClearanceBoxes::chainTo(const UpperSearch& search, std::uint32_t to) {
-  Chain chain;
-  if (search.widest[to] == -HUGE_VAL) return chain;
-  chain.bottleneck = search.widest[to];
-  for (std::uint32_t index = to; index != UINT32_MAX; index = search.previous[index]) chain.boxes.push_back(index);
-  std::reverse(chain.boxes.begin(), chain.boxes.end());
-  return chain;
+  return chainAlong(search.widest, search.previous, to);
 }
 
 Pose2 ClearanceBoxes::meeting(std::uint32_t index, std::uint32_t nextIndex) const {
