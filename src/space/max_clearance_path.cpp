@@ -225,11 +225,48 @@ struct RoundLevels {
   double target, upper, ratio;
 };
 
-/// The boxes a round halves, distinct and in order: those not certain at the ratio
-/// (lower bound below the target) of the widest chain by upper bounds (`upperChain`)
-/// whose bound lies within the ratio's slack of c_hi (those that limit it and those
-/// that would next: halving all that tie with them along other chains took 40% longer
-/// on tetra_floorplan); those whose centre lies outside `cell` (blocked, or another
+/// How far from the widest chain by upper bounds the boxes that limit c_hi are looked
+/// for: in a passage of even width, the chain's limiting boxes have neighbours as
+/// narrow, through which the next round's chain would pass (docs/design.md section 7).
+constexpr int kLimitingHops = 2;
+
+/// The boxes of the widest chain by upper bounds (`upperChain`) not certain at the
+/// ratio (lower bound below the target) whose bound lies within the ratio's slack of
+/// c_hi (those that limit it and those that would next: halving all that tie with them
+/// along other chains took 40% longer on tetra_floorplan), and such boxes within
+/// kLimitingHops of them that chains at the target's level reach (`fromStart`).
+std::vector<std::uint32_t> limitingBoxes(const ClearanceBoxes& boxes, const ClearanceBoxes::Chain& upperChain,
+                                         const std::vector<double>& fromStart, const RoundLevels& levels) {
+  std::vector<char> seen(boxes.size(), 0);
+  const auto limits = [&](std::uint32_t index) {
+    const ClearanceBox& box = boxes.box(index);
+    return !seen[index] && !box.split && !box.dropped && box.lower < levels.target &&
+           box.upper * levels.ratio <= levels.upper;
+  };
+  std::vector<std::uint32_t> limiting, reached;
+  const auto reach = [&](std::uint32_t box, std::vector<std::uint32_t>& into) {
+    seen[box] = 1;
+    into.push_back(box);
+  };
+  for (std::uint32_t box : upperChain.boxes) {
+    if (limits(box)) reach(box, reached);
+  }
+  for (int hop = 0; !reached.empty(); ++hop) {
+    limiting.insert(limiting.end(), reached.begin(), reached.end());
+    if (hop == kLimitingHops) break;
+    std::vector<std::uint32_t> next;
+    for (std::uint32_t box : reached) {
+      for (std::uint32_t neighbour : boxes.box(box).neighbours) {
+        if (fromStart[neighbour] >= levels.target && limits(neighbour)) reach(neighbour, next);
+      }
+    }
+    reached = std::move(next);
+  }
+  return limiting;
+}
+
+/// The boxes a round halves, distinct and in order: those that limit c_hi
+/// (limitingBoxes); those whose centre lies outside `cell` (blocked, or another
 /// cell's) that some chain at the target's level passes (reached from the start at it,
 /// `fromStart`: at a level at most c_hi, the boxes chains at it reach from the start
 /// are those they reach from the goal; their upper bound is about their size, and
@@ -250,11 +287,7 @@ std::vector<std::uint32_t> boxesToHalve(const ClearanceBoxes& boxes, const Clear
                                         const std::vector<double>& fromStart, const std::vector<char>& goalBasin,
                                         const ClearanceBoxes::Chain& lowerChain, const RoundLevels& levels,
                                         std::uint32_t cell) {
-  std::vector<std::uint32_t> uncertain;
-  for (std::uint32_t box : upperChain.boxes) {
-    const ClearanceBox& candidate = boxes.box(box);
-    if (candidate.lower < levels.target && candidate.upper * levels.ratio <= levels.upper) uncertain.push_back(box);
-  }
+  std::vector<std::uint32_t> uncertain = limitingBoxes(boxes, upperChain, fromStart, levels);
   const double wide = levels.upper / levels.ratio;
   const auto inStartBasin = [&](std::uint32_t box) { return fromStart[box] > wide; };
   const auto inGoalBasin = [&](std::uint32_t box) { return goalBasin[box] != 0; };
