@@ -365,7 +365,7 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   if (best) {
     path.secondsToFirstPath = secondsSince(began);
     if (!best->motionClearance.empty()) {
-      tightenBounds(checker, *best, 0.02, deadline, rate, options.cancellation);
+      tightenBounds(space, checker, *best, 0.02, deadline, rate, options.cancellation);
       // The route keeps to the middle of the faces' triangles, not of the passages:
       // pushed to their middle, its least clearance rises (within a share of the time).
       std::optional<Passage> raised =

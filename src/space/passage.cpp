@@ -7,12 +7,31 @@
 
 namespace freespace {
 
-void tightenBounds(const MotionChecker& checker, Passage& passage, double slack,
+namespace {
+
+/// The least clearance at the waypoints (certified upper bounds, on every core).
+double leastAtWaypoints(const FreeSpace& space, const std::vector<Pose2>& waypoints,
+                        const Cancellation& cancellation) {
+  std::vector<double> upper(waypoints.size());
+  onEveryCore(waypoints.size(), [] { return true; }, [&](std::size_t k) {
+    cancellation.check();
+    upper[k] = space.clearance(waypoints[k], MotionChecker::kClearanceWidth).upper;
+  });
+  return *std::min_element(upper.begin(), upper.end());
+}
+
+}  // namespace
+
+void tightenBounds(const FreeSpace& space, const MotionChecker& checker, Passage& passage, double slack,
                    std::chrono::steady_clock::time_point deadline, QueryRate& rate, const Cancellation& cancellation) {
   const std::chrono::steady_clock::time_point began = std::chrono::steady_clock::now();
   const double seconds = 0.25 * std::max(0.0, std::chrono::duration<double>(deadline - began).count());
-  std::vector<std::size_t> order(passage.motionClearance.size());
-  for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+  const double ceiling = leastAtWaypoints(space, passage.waypoints, cancellation);
+  std::vector<std::size_t> order;
+  for (std::size_t k = 0; k < passage.motionClearance.size(); ++k) {
+    if (passage.motionClearance[k] < ceiling) order.push_back(k);
+  }
+
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return passage.motionClearance[a] < passage.motionClearance[b]; });
   // Twice: the motions not finished at first get another try at the rate measured

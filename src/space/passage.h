@@ -31,8 +31,10 @@ struct Passage {
 /// until each part's bound is within `slack` of its ends' clearance: freedom alone
 /// needs far fewer), the tightest motions first (on every core), within a quarter of
 /// the time left (each may take half of what is left of that); a motion whose tighter
-/// check does not finish keeps its bound.
-void tightenBounds(const MotionChecker& checker, Passage& passage, double slack,
+/// check does not finish keeps its bound. Motions whose bound is already at least the
+/// least clearance at the waypoints are left alone: the passage's clearance cannot
+/// exceed that, so tightened they would limit nothing.
+void tightenBounds(const FreeSpace& space, const MotionChecker& checker, Passage& passage, double slack,
                    std::chrono::steady_clock::time_point deadline, QueryRate& rate,
                    const Cancellation& cancellation = {});
 

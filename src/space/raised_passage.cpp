@@ -257,7 +257,7 @@ std::optional<Passage> raisedPassage(const FreeSpace& space, const MotionChecker
     if (!cutMotions(space, partsOf, waypoints)) break;
   }
   // Its tightest motions' bounds within 0.3% of their ends' clearance.
-  if (raised) tightenBounds(checker, *raised, 0.003, deadline, rate, cancellation);
+  if (raised) tightenBounds(space, checker, *raised, 0.003, deadline, rate, cancellation);
   return raised;
 }
 
