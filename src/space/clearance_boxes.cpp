@@ -248,11 +248,13 @@ ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 
       }
     }
   }
+  std::vector<const ClearanceAnchor*> candidates;
+  std::vector<std::pair<double, std::uint32_t>> bounds;
   for (ClearanceBox& box : boxes_) {
-    std::vector<const ClearanceAnchor*> candidates;
+    candidates.clear();
     addAnchors(box.own, candidates);
     for (std::uint32_t neighbour : box.neighbours) addAnchors(boxes_[neighbour].own, candidates);
-    bound(box, candidates);
+    bound(box, candidates, bounds);
   }
 }
 
@@ -408,10 +410,10 @@ double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const Clear
   return inSlice + anchor.lever * paddedTurn + rounding;
 }
 
-void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates) const {
+void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates,
+                           std::vector<std::pair<double, std::uint32_t>>& bounds) const {
   constexpr std::size_t kAnchorsKept = 6;
-  std::vector<std::pair<double, std::uint32_t>> bounds;
-  bounds.reserve(candidates.size());
+  bounds.clear();
   for (std::uint32_t k = 0; k < candidates.size(); ++k) bounds.push_back({upperBoundFrom(*candidates[k], box), k});
   // The best distinct ones (halves share their parent's contact segments), sorted a
   // few more at a time while equal ones fill the places.
@@ -419,6 +421,7 @@ void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceA
     return a.at == b.at && a.along == b.along && a.upper == b.upper;
   };
   box.anchors.clear();
+  box.anchors.reserve(std::min(kAnchorsKept, bounds.size()));
   for (std::size_t k = 0, sorted = 0; k < bounds.size() && box.anchors.size() < kAnchorsKept; ++k) {
     if (k == sorted) {
       sorted = std::min(bounds.size(), k + 2 * kAnchorsKept);
@@ -608,8 +611,10 @@ void ClearanceBoxes::boundHalves(std::uint32_t index, const std::vector<std::uin
   addAnchors(box.anchors, candidates);
   for (std::uint32_t child = first; child < end; ++child) addAnchors(boxes_[child].own, candidates);
   for (std::uint32_t neighbour : neighbours) addAnchors(boxes_[neighbour].own, candidates);
+  std::vector<std::pair<double, std::uint32_t>> bounds;
+  bounds.reserve(candidates.size());
   for (std::uint32_t child = first; child < end; ++child) {
-    bound(boxes_[child], candidates);
+    bound(boxes_[child], candidates, bounds);
     // The box's bound holds in its halves: bounds only fall (UpperSearch relies on it).
     boxes_[child].upper = std::min(boxes_[child].upper, box.upper);
   }

@@ -198,8 +198,10 @@ class ClearanceBoxes {
   std::optional<ClearanceAnchor> contactSegment(const Clearance& clearance, double theta) const;
   /// The bound an anchor gives on the clearance in a box.
   double upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
-  /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.
-  void bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates) const;
+  /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound
+  /// (`bounds`: room for the candidates' bounds, kept between calls).
+  void bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates,
+             std::vector<std::pair<double, std::uint32_t>>& bounds) const;
   bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
   /// Marks a box dropped (and logs it for the searches).
   void drop(std::uint32_t index);
