@@ -162,6 +162,26 @@ bool arcMeets(const AngleArc& arc, double low, double high) {
   return high >= arc.from || low <= arc.to;
 }
 
+/// The parts of [low, high] (a range of [-pi, pi]) an arc holds: none, one, or two
+/// (an arc across theta = pi).
+std::vector<std::array<double, 2>> partsWithin(const AngleArc& arc, double low, double high) {
+  std::vector<std::array<double, 2>> parts;
+  const auto add = [&](double from, double to) {
+    from = std::max(from, low);
+    to = std::min(to, high);
+    if (from <= to) parts.push_back({from, to});
+  };
+  if (arc.whole) {
+    add(low, high);
+  } else if (arc.from <= arc.to) {
+    add(arc.from, arc.to);
+  } else {
+    add(-HUGE_VAL, arc.to);
+    add(arc.from, HUGE_VAL);
+  }
+  return parts;
+}
+
 /// Cosines and sines enclosing those of every angle of [low, high] (a range of
 /// [-pi, pi]; inside a RoundingScope).
 slices::SliceIn<Interval> sliceOver(double low, double high) {
@@ -316,8 +336,11 @@ ClearanceBox ClearanceBoxes::measured(const std::array<double, 3>& low, const st
       }
     }
   }
-  // Free throughout at a positive clearance, no boundary meets it.
-  box.unbroken = box.lower > 0 || !meetsFreeBoundary(box);
+  // Free throughout at a positive clearance, no boundary meets it. A blocked box is
+  // looked at now (unbroken, its upper bound falls to 0); one free at its centre only
+  // when another cell is asked of it (dropOutside): in the cell of a query, whether a
+  // boundary meets it changes nothing.
+  box.unbroken = box.lower > 0 || (!clearance.location.free && !meetsFreeBoundary(box));
   // Blocked throughout: no clearance above 0 anywhere in it (the Lipschitz bound
   // across angles leaves room for pockets that no boundary here could enclose).
   if (box.unbroken && !clearance.location.free) box.upper = std::min(box.upper, 0.0);
@@ -449,50 +472,56 @@ bool ClearanceBoxes::meetsFreeBoundary(const ClearanceBox& box) const {
     query.low[axis] = (box.low[axis] - pad) * factor;
     query.high[axis] = (box.high[axis] + pad) * factor;
   }
-  // The slice at the rational angle nearest the box's middle (within about 1e-16 rad
-  // of it): the turn to the box's farther end, padded by far more than that.
-  const double middle = 0.5 * (box.low[2] + box.high[2]);
-  const double turn = 0.5 * (box.high[2] - box.low[2]) + 1e-12;
   const Arrangement& arrangement = space_.arrangement();
-  const std::vector<std::uint32_t> patches = arrangement.boxIndex->meeting(query);
   const RoundingScope rounding;
-  slices::SliceIn<Interval> slice;
-  HalfAngle::fromRadians(middle).cosSin(slice.cosine, slice.sine);
-  const slices::SliceIn<Interval> range = sliceOver(box.low[2], box.high[2]);
-  for (std::uint32_t patch : patches) {
-    const PatchGeometry& geometry = arrangement.patches[patch];
-    const std::vector<FreeSlab>& freeSlabs = freeSlabs_[patch];
-    const auto atTheBoxsAngles = [&](const FreeSlab& free) { return arcMeets(free.arc, box.low[2], box.high[2]); };
-    if (std::none_of(freeSlabs.begin(), freeSlabs.end(), atTheBoxsAngles) ||
-        !segmentMayMeet(geometry, slice, turn, query, {0, 1})) {
-      continue;
-    }
-    // Along the segment, the sub-faces that bound a free cell lie between the
-    // crossings of their slabs' curves, which over the box's angles lie in the
-    // intervals found with the angles' cosines and sines in intervals.
-    const auto crossing = [&](std::uint32_t curve) {
-      return range.crossingLambda(geometry, arrangement.patches[arrangement.curves[curve].other(patch)]);
-    };
-    double lambdaLow = HUGE_VAL, lambdaHigh = -HUGE_VAL;
-    for (const FreeSlab& free : freeSlabs) {
-      if (!atTheBoxsAngles(free)) continue;
-      const PatchSlab& slab = arrangement.subdivisions[patch].slabs[free.slab];
-      double low = 0, high = 1;
-      if (free.firstGap > 0) {
-        const std::optional<Interval> below = crossing(slab.curves[free.firstGap - 1]);
-        if (below && below->lower() > 0) low = below->lower();
+  for (std::uint32_t patch : arrangement.boxIndex->meeting(query)) {
+    // Each slab with such sub-faces over its own part of the box's angles (their
+    // union over the slabs is often the whole segment where each slab's is a piece).
+    for (const FreeSlab& free : freeSlabs_[patch]) {
+      for (const std::array<double, 2>& angles : partsWithin(free.arc, box.low[2], box.high[2])) {
+        if (slabMayMeet(patch, free, angles, query, kAngleHalvings)) return true;
       }
-      if (free.lastGap < slab.curves.size()) {
-        const std::optional<Interval> above = crossing(slab.curves[free.lastGap]);
-        if (above && above->upper() < 1) high = above->upper();
-      }
-      lambdaLow = std::min(lambdaLow, low);
-      lambdaHigh = std::max(lambdaHigh, high);
-      if (lambdaLow == 0 && lambdaHigh == 1) break;
     }
-    if (lambdaLow <= lambdaHigh && segmentMayMeet(geometry, slice, turn, query, {lambdaLow, lambdaHigh})) return true;
   }
   return false;
+}
+
+bool ClearanceBoxes::slabMayMeet(std::uint32_t patch, const FreeSlab& free, const std::array<double, 2>& angles,
+                                 const PatchBox& query, int halvings) const {
+  const Arrangement& arrangement = space_.arrangement();
+  const PatchGeometry& geometry = arrangement.patches[patch];
+  // The slice at the rational angle nearest the middle of the angles (within about
+  // 1e-16 rad of it): the turn to their farther end, padded by far more than that.
+  slices::SliceIn<Interval> slice;
+  HalfAngle::fromRadians(0.5 * (angles[0] + angles[1])).cosSin(slice.cosine, slice.sine);
+  const double turn = 0.5 * (angles[1] - angles[0]) + 1e-12;
+  if (!segmentMayMeet(geometry, slice, turn, query, {0, 1})) return false;
+  // Along the segment, the sub-faces that bound a free cell lie between the crossings
+  // of the slab's curves, which over the angles lie in the intervals found with the
+  // angles' cosines and sines in intervals.
+  const slices::SliceIn<Interval> range = sliceOver(angles[0], angles[1]);
+  const PatchSlab& slab = arrangement.subdivisions[patch].slabs[free.slab];
+  const auto crossing = [&](std::uint32_t curve) {
+    return range.crossingLambda(geometry, arrangement.patches[arrangement.curves[curve].other(patch)]);
+  };
+  double low = 0, high = 1;
+  bool wide = false;  // a crossing known too loosely to place the piece
+  if (free.firstGap > 0) {
+    const std::optional<Interval> below = crossing(slab.curves[free.firstGap - 1]);
+    if (below && below->lower() > 0) low = below->lower();
+    wide = !below || below->upper() - below->lower() > kLooseCrossing;
+  }
+  if (free.lastGap < slab.curves.size()) {
+    const std::optional<Interval> above = crossing(slab.curves[free.lastGap]);
+    if (above && above->upper() < 1) high = above->upper();
+    wide = wide || !above || above->upper() - above->lower() > kLooseCrossing;
+  }
+  if (low > high || !segmentMayMeet(geometry, slice, turn, query, {low, high})) return false;
+  if (!wide || halvings == 0 || angles[0] == angles[1]) return true;
+  // Over half the angles each, the crossings move less.
+  const double middle = 0.5 * (angles[0] + angles[1]);
+  return slabMayMeet(patch, free, {angles[0], middle}, query, halvings - 1) ||
+         slabMayMeet(patch, free, {middle, angles[1]}, query, halvings - 1);
 }
 
 bool ClearanceBoxes::touch(const ClearanceBox& a, const ClearanceBox& b) const {
@@ -640,7 +669,7 @@ void ClearanceBoxes::drop(std::uint32_t index) {
 template <typename Droppable>
 void ClearanceBoxes::dropLiveFrom(std::size_t& seen, Droppable droppable) {
   for (std::size_t index = std::exchange(seen, boxes_.size()); index < boxes_.size(); ++index) {
-    const ClearanceBox& box = boxes_[index];
+    ClearanceBox& box = boxes_[index];
     if (!box.split && !box.dropped && droppable(box)) drop(static_cast<std::uint32_t>(index));
   }
 }
@@ -655,8 +684,11 @@ void ClearanceBoxes::dropBelow(double level) {
 void ClearanceBoxes::dropOutside(std::uint32_t cell) {
   if (droppedOutside_ != cell) seenByDropOutside_ = 0;
   droppedOutside_ = cell;
-  dropLiveFrom(seenByDropOutside_,
-               [&](const ClearanceBox& box) { return box.unbroken && box.centreCell && *box.centreCell != cell; });
+  dropLiveFrom(seenByDropOutside_, [&](ClearanceBox& box) {
+    if (!box.centreCell || *box.centreCell == cell) return false;
+    box.unbroken = box.unbroken || !meetsFreeBoundary(box);
+    return box.unbroken;
+  });
 }
 
 namespace {

@@ -220,6 +220,16 @@ class ClearanceBoxes {
   /// segment between the curves around such sub-faces in its slabs at the box's
   /// angles (the curves' crossings bounded over all those angles at once).
   bool meetsFreeBoundary(const ClearanceBox& box) const;
+  struct FreeSlab;
+  /// Whether a sub-face of a patch's slab (`free`) that bounds a free cell may meet the
+  /// query box at the angles given; where a crossing is known too loosely to say, asks
+  /// again of each half of the angles, `halvings` times at most.
+  bool slabMayMeet(std::uint32_t patch, const FreeSlab& free, const std::array<double, 2>& angles,
+                   const PatchBox& query, int halvings) const;
+  /// How many times meetsFreeBoundary halves a slab's angles at most, and how wide a
+  /// crossing's interval (in the segment's parameter) counts as too loose.
+  static constexpr int kAngleHalvings = 4;
+  static constexpr double kLooseCrossing = 0.05;
 
   const FreeSpace& space_;
   double reach_;
