@@ -498,6 +498,28 @@ TEST_P(BundledClearanceBoxes, FreeCellBoundaryMeetsNoUnbrokenBox) {
   EXPECT_GT(checked, 1000);
 }
 
+// The keyhole's bar passes its slot turned a quarter turn, 0.125 from either side. A
+// box across the slot's middle (the domain is shifted so that no box's edge lies
+// there), wide in (x, y) but a thousandth of a radian in theta, is bounded by about
+// that (the mix of the two sides' anchors): one side's anchor alone bounds it by 0.125
+// plus the width of its part on the other side.
+TEST(KeyholeClearanceBoxes, BoxesAcrossASlotAreBoundedByItsClearance) {
+  const LoadedProblem keyhole = loadBundledProblem("keyhole");
+  const FreeSpace space(keyhole.robot, keyhole.world);
+  // The volume shifted by half the width the boxes will have (9.5 / 16 / 8).
+  constexpr double kShift = 9.5 / 16 / 16;
+  ClearanceBoxes boxes(space, {-4.75 - kShift, -4.75}, {4.75 - kShift, 4.75}, MotionChecker(space).reach());
+  const Pose2 middle{0, 0, M_PI / 2};
+  const auto leaf = [&] { return boxes.box(boxes.leafAt(middle)); };
+  while (leaf().high[0] - leaf().low[0] > 0.12) boxes.split(boxes.leafAt(middle));
+  while (leaf().high[2] - leaf().low[2] > 1e-3) boxes.split(boxes.leafAt(middle), ClearanceBoxes::kThetaAxis);
+  const ClearanceBox& box = leaf();
+  ASSERT_GT(box.high[0] - box.low[0], 0.05);
+  ASSERT_GT(std::min(-box.low[0], box.high[0]), 0.03);
+  EXPECT_GE(box.upper, space.clearance(middle).upper);
+  EXPECT_LT(box.upper, 0.125 * 1.03);
+}
+
 // The keyhole scaled down by 1e-5 is built in coordinates scaled back up by a power of
 // two (docs/design.md section 5): the boxes' test against the patches' boxes and
 // segments works in those, and unbroken boxes still hold only configurations located

@@ -196,6 +196,10 @@ class ClearanceBoxes {
   /// The witness's patch at angle `theta` as an anchor (none when its ends are not
   /// known to a few thousandths of the reach).
   std::optional<ClearanceAnchor> contactSegment(const Clearance& clearance, double theta) const;
+  /// The bound an anchor gives on the clearance in a box, at each of its (x, y)
+  /// corners (low, low), (low, high), (high, low), (high, high), over all its angles:
+  /// convex in (x, y), so the most of them bounds all of the box.
+  std::array<double, 4> cornerBounds(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
   /// The bound an anchor gives on the clearance in a box.
   double upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
   /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound
