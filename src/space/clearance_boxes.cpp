@@ -297,12 +297,12 @@ ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 
     }
   }
   std::vector<const ClearanceAnchor*> candidates;
-  std::vector<std::pair<double, std::uint32_t>> bounds;
+  BoundScratch scratch;
   for (ClearanceBox& box : boxes_) {
     candidates.clear();
     addAnchors(box.own, candidates);
     for (std::uint32_t neighbour : box.neighbours) addAnchors(boxes_[neighbour].own, candidates);
-    bound(box, candidates, bounds);
+    bound(box, candidates, scratch);
   }
 }
 
@@ -459,7 +459,8 @@ CornerValues ClearanceBoxes::cornerBounds(const ClearanceAnchor& anchor, const C
   int corner = 0;
   for (const double x : {box.low[0], box.high[0]}) {
     for (const double y : {box.low[1], box.high[1]}) {
-      const double inSlice = std::max(0.0, anchor.upper + std::hypot(x - anchor.at[0], y - anchor.at[1]) * (1 + 1e-12));
+      const double dx = x - anchor.at[0], dy = y - anchor.at[1];
+      const double inSlice = std::max(0.0, anchor.upper + std::sqrt(dx * dx + dy * dy) * (1 + 1e-12));
       values[corner++] = inSlice + anchor.lever * paddedTurn + rounding;
     }
   }
@@ -472,10 +473,16 @@ double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const Clear
 }
 
 void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates,
-                           std::vector<std::pair<double, std::uint32_t>>& bounds) const {
+                           BoundScratch& scratch) const {
   constexpr std::size_t kAnchorsKept = 6;
+  std::vector<CornerValues>& corners = scratch.corners;
+  std::vector<std::pair<double, std::uint32_t>>& bounds = scratch.bounds;
+  corners.clear();
   bounds.clear();
-  for (std::uint32_t k = 0; k < candidates.size(); ++k) bounds.push_back({upperBoundFrom(*candidates[k], box), k});
+  for (std::uint32_t k = 0; k < candidates.size(); ++k) {
+    corners.push_back(cornerBounds(*candidates[k], box));
+    bounds.push_back({*std::max_element(corners.back().begin(), corners.back().end()), k});
+  }
   // The best distinct ones (halves share their parent's contact segments), sorted a
   // few more at a time while equal ones fill the places.
   const auto same = [](const ClearanceAnchor& a, const ClearanceAnchor& b) {
@@ -483,6 +490,7 @@ void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceA
   };
   box.anchors.clear();
   box.anchors.reserve(std::min(kAnchorsKept, bounds.size()));
+  std::array<std::uint32_t, kAnchorsKept> kept{};
   for (std::size_t k = 0, sorted = 0; k < bounds.size() && box.anchors.size() < kAnchorsKept; ++k) {
     if (k == sorted) {
       sorted = std::min(bounds.size(), k + 2 * kAnchorsKept);
@@ -491,16 +499,16 @@ void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceA
     }
     const ClearanceAnchor& candidate = *candidates[bounds[k].second];
     if (!box.anchors.empty() && same(box.anchors.back(), candidate)) continue;
+    kept[box.anchors.size()] = bounds[k].second;
     box.anchors.push_back(candidate);
   }
-  if (!bounds.empty()) box.upper = std::min(box.upper, bounds.front().first);
+  if (bounds.empty()) return;
+  box.upper = std::min(box.upper, bounds.front().first);
   // Two anchors at once, the best with each other kept: across a passage between two
   // walls, their mix bounds the box by about the passage's clearance however wide it
   // is in (x, y) (mixing every pair took the maze 1.6 s instead of 1.3).
-  if (box.anchors.empty()) return;
-  const CornerValues best = cornerBounds(box.anchors.front(), box);
   for (std::size_t k = 1; k < box.anchors.size(); ++k) {
-    box.upper = std::min(box.upper, mixedBound(best, cornerBounds(box.anchors[k], box)));
+    box.upper = std::min(box.upper, mixedBound(corners[kept[0]], corners[kept[k]]));
   }
 }
 
@@ -686,10 +694,9 @@ void ClearanceBoxes::boundHalves(std::uint32_t index, const std::vector<std::uin
   addAnchors(box.anchors, candidates);
   for (std::uint32_t child = first; child < end; ++child) addAnchors(boxes_[child].own, candidates);
   for (std::uint32_t neighbour : neighbours) addAnchors(boxes_[neighbour].own, candidates);
-  std::vector<std::pair<double, std::uint32_t>> bounds;
-  bounds.reserve(candidates.size());
+  BoundScratch scratch;
   for (std::uint32_t child = first; child < end; ++child) {
-    bound(boxes_[child], candidates, bounds);
+    bound(boxes_[child], candidates, scratch);
     // The box's bound holds in its halves: bounds only fall (UpperSearch relies on it).
     boxes_[child].upper = std::min(boxes_[child].upper, box.upper);
   }

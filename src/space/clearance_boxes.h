@@ -202,10 +202,14 @@ class ClearanceBoxes {
   std::array<double, 4> cornerBounds(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
   /// The bound an anchor gives on the clearance in a box.
   double upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
-  /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound
-  /// (`bounds`: room for the candidates' bounds, kept between calls).
-  void bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates,
-             std::vector<std::pair<double, std::uint32_t>>& bounds) const;
+  /// Room bound() reuses between calls: the candidates' bounds at a box's corners, and
+  /// the most of each with its candidate.
+  struct BoundScratch {
+    std::vector<std::array<double, 4>> corners;
+    std::vector<std::pair<double, std::uint32_t>> bounds;
+  };
+  /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.
+  void bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates, BoundScratch& scratch) const;
   bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
   /// Marks a box dropped (and logs it for the searches).
   void drop(std::uint32_t index);
