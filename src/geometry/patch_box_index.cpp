@@ -1,23 +1,11 @@
 #include "freespace/geometry/patch_box_index.h"
 
 #include <algorithm>
-#include <boost/geometry.hpp>
-#include <boost/geometry/index/rtree.hpp>
 #include <cmath>
 
 namespace freespace {
 
 namespace {
-
-namespace bg = boost::geometry;
-namespace bgi = boost::geometry::index;
-using BoxPoint = bg::model::point<double, 3, bg::cs::cartesian>;
-using Box = bg::model::box<BoxPoint>;
-using BoxEntry = std::pair<Box, std::uint32_t>;
-
-Box toBox(const PatchBox& box) {
-  return {BoxPoint(box.low[0], box.low[1], box.low[2]), BoxPoint(box.high[0], box.high[1], box.high[2])};
-}
 
 bool meet(const PatchBox& a, const PatchBox& b) {
   // Theta first: pieces of two patches that meet at all are mostly apart in it.
@@ -49,6 +37,8 @@ class BoxGrid {
   static std::uint64_t key(std::uint64_t column, std::uint64_t row) {
     return column * (static_cast<std::uint64_t>(kMaxCells) + 1) + row;
   }
+  static std::uint64_t columnOf(std::uint64_t key) { return key / (static_cast<std::uint64_t>(kMaxCells) + 1); }
+  static std::uint64_t rowOf(std::uint64_t key) { return key % (static_cast<std::uint64_t>(kMaxCells) + 1); }
   /// Calls `visit(key)` for each cell the box covers.
   template <class Visit>
   void forEachCell(const PatchBox& box, const Visit& visit) const {
@@ -76,6 +66,16 @@ class BoxGrid {
   double cellWidth_;
 };
 
+/// A cell a box covers; sorted by cell, then by the box's lowest angle.
+struct CellEntry {
+  std::uint64_t cell;
+  double lowestAngle;
+  std::uint32_t box;
+  bool operator<(const CellEntry& other) const {
+    return cell != other.cell ? cell < other.cell : lowestAngle < other.lowestAngle;
+  }
+};
+
 bool lowerInAngle(const PatchBox& a, const PatchBox& b) { return a.low[2] < b.low[2]; }
 
 PatchBoxIndex::Scales scalesOf(const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes) {
@@ -94,43 +94,103 @@ PatchBoxIndex::Scales scalesOf(const std::vector<std::pair<PatchBox, std::uint32
 
 }  // namespace
 
-struct PatchBoxIndex::Tree {
-  bgi::rtree<BoxEntry, bgi::rstar<16>> rtree;
+/// The pieces' boxes on a uniform (x, y) grid (BoxGrid), for queries: each non-empty
+/// cell lists the pieces that cover it, sorted by their lowest angle, so that a query
+/// looks at the pieces of the cells it covers whose angles may reach its own.
+struct PatchBoxIndex::Grid {
+  BoxGrid cells;
+  /// The non-empty cells' keys in order; cell k's pieces are entries[first[k]] to
+  /// entries[first[k + 1]].
+  std::vector<std::uint64_t> keys;
+  std::vector<std::size_t> first;
+  std::vector<std::pair<PatchBox, std::uint32_t>> entries;
+  /// The columns and rows any piece covers.
+  std::uint64_t lowColumn = 0, highColumn = 0, lowRow = 0, highRow = 0;
+
+  explicit Grid(const std::vector<std::pair<PatchBox, std::uint32_t>>& pieces)
+      : cells(pieces, scalesOf(pieces)) {
+    std::vector<CellEntry> covered;
+    for (std::uint32_t p = 0; p < pieces.size(); ++p) {
+      cells.forEachCell(pieces[p].first, [&](std::uint64_t cell) { covered.push_back({cell, pieces[p].first.low[2], p}); });
+    }
+    std::sort(covered.begin(), covered.end());
+    lowColumn = lowRow = UINT64_MAX;
+    for (const CellEntry& entry : covered) {
+      if (keys.empty() || keys.back() != entry.cell) {
+        keys.push_back(entry.cell);
+        first.push_back(entries.size());
+        const std::uint64_t column = BoxGrid::columnOf(entry.cell), row = BoxGrid::rowOf(entry.cell);
+        lowColumn = std::min(lowColumn, column);
+        highColumn = std::max(highColumn, column);
+        lowRow = std::min(lowRow, row);
+        highRow = std::max(highRow, row);
+      }
+      entries.push_back(pieces[entry.box]);
+    }
+    first.push_back(entries.size());
+  }
+
+  /// Calls `visit(patch)` for each piece that meets the query (a patch may come more
+  /// than once), given the widest piece's angles.
+  template <class Visit>
+  void forEachMeeting(const PatchBox& query, double widestPiece, const Visit& visit) const {
+    if (keys.empty()) return;
+    const auto visitCell = [&](std::size_t k) {
+      const auto begin = entries.begin() + static_cast<std::ptrdiff_t>(first[k]);
+      const auto end = entries.begin() + static_cast<std::ptrdiff_t>(first[k + 1]);
+      // Sorted by lowest angle, each at most widestPiece wide.
+      const double from = query.low[2] - widestPiece;
+      auto piece = std::partition_point(begin, end, [&](const auto& entry) { return entry.first.low[2] < from; });
+      for (; piece != end && piece->first.low[2] <= query.high[2]; ++piece) {
+        if (meet(piece->first, query)) visit(piece->second);
+      }
+    };
+    const std::uint64_t fromColumn = std::max(lowColumn, cells.cellOf(query.low[0]));
+    const std::uint64_t toColumn = std::min(highColumn, cells.cellOf(query.high[0]));
+    const std::uint64_t fromRow = std::max(lowRow, cells.cellOf(query.low[1]));
+    const std::uint64_t toRow = std::min(highRow, cells.cellOf(query.high[1]));
+    if (fromColumn > toColumn || fromRow > toRow) return;
+    // A query wider than the cells there are: each cell once.
+    if ((toColumn - fromColumn + 1) * (toRow - fromRow + 1) > keys.size()) {
+      for (std::size_t k = 0; k < keys.size(); ++k) visitCell(k);
+      return;
+    }
+    for (std::uint64_t column = fromColumn; column <= toColumn; ++column) {
+      for (std::uint64_t row = fromRow; row <= toRow; ++row) {
+        const auto key = std::lower_bound(keys.begin(), keys.end(), BoxGrid::key(column, row));
+        if (key != keys.end() && *key == BoxGrid::key(column, row)) visitCell(static_cast<std::size_t>(key - keys.begin()));
+      }
+    }
+  }
 };
 
-PatchBoxIndex::PatchBoxIndex(const std::vector<PatchGeometry>& patches, const Cancellation& cancellation)
-    : tree_(std::make_unique<Tree>()) {
-  std::vector<BoxEntry> entries;
+PatchBoxIndex::PatchBoxIndex(const std::vector<PatchGeometry>& patches, const Cancellation& cancellation) {
+  std::vector<std::pair<PatchBox, std::uint32_t>> pieceEntries;
   for (std::uint32_t i = 0; i < patches.size(); ++i) {
     cancellation.check();
-    for (const PatchBox& box : patchBoxes(patches[i])) {
-      boxes_.emplace_back(box, i);
-      entries.emplace_back(toBox(box), i);
-    }
+    for (const PatchBox& box : patchBoxes(patches[i])) boxes_.emplace_back(box, i);
     firstPiece_.push_back(pieces_.size());
     std::vector<PatchBox> pieces = patchBoxes(patches[i], kPieceWidth);
     std::sort(pieces.begin(), pieces.end(), lowerInAngle);
     // With a margin over the rounding of the differences.
-    for (const PatchBox& piece : pieces) widestPiece_ = std::max(widestPiece_, piece.high[2] - piece.low[2] + 1e-9);
+    for (const PatchBox& piece : pieces) {
+      widestPiece_ = std::max(widestPiece_, piece.high[2] - piece.low[2] + 1e-9);
+      pieceEntries.emplace_back(piece, i);
+    }
     pieces_.insert(pieces_.end(), pieces.begin(), pieces.end());
   }
   firstPiece_.push_back(pieces_.size());
   scales_ = scalesOf(boxes_);
-  tree_->rtree = bgi::rtree<BoxEntry, bgi::rstar<16>>(entries.begin(), entries.end());
+  grid_ = std::make_unique<Grid>(pieceEntries);
 }
 
 PatchBoxIndex::~PatchBoxIndex() = default;
 
 std::vector<std::uint32_t> PatchBoxIndex::meeting(const PatchBox& query) const {
-  std::vector<BoxEntry> found;
-  tree_->rtree.query(bgi::intersects(toBox(query)), std::back_inserter(found));
   std::vector<std::uint32_t> patches;
-  for (const BoxEntry& entry : found) patches.push_back(entry.second);
+  grid_->forEachMeeting(query, widestPiece_, [&](std::uint32_t patch) { patches.push_back(patch); });
   std::sort(patches.begin(), patches.end());
   patches.erase(std::unique(patches.begin(), patches.end()), patches.end());
-  patches.erase(std::remove_if(patches.begin(), patches.end(),
-                               [&](std::uint32_t patch) { return !pieceMeets(patch, query); }),
-                patches.end());
   return patches;
 }
 
@@ -154,15 +214,6 @@ std::vector<std::uint32_t> PatchBoxIndex::meetingAt(double theta, const std::arr
 
 namespace {
 
-/// A cell a box covers; sorted by cell, then by the box's lowest angle.
-struct CellEntry {
-  std::uint64_t cell;
-  double lowestAngle;
-  std::uint32_t box;
-  bool operator<(const CellEntry& other) const {
-    return cell != other.cell ? cell < other.cell : lowestAngle < other.lowestAngle;
-  }
-};
 
 /// A pair of patches as one number, the smaller in the high half (sorted faster).
 std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) { return std::uint64_t{std::min(a, b)} << 32 | std::max(a, b); }

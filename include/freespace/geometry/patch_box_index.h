@@ -11,10 +11,10 @@
 
 namespace freespace {
 
-/// The patches' (x, y, theta) boxes (patchBoxes), one per arc of a patch's range, in
-/// an R-tree (Boost.Geometry) for queries and on a uniform (x, y) grid for the pairs
-/// that meet; answers are refined by each patch's boxes over pieces of at most
-/// kPieceWidth radians, which follow the segment more closely.
+/// The patches' (x, y, theta) boxes (patchBoxes), one per arc of a patch's range, on a
+/// uniform (x, y) grid for the pairs that meet, and their boxes over pieces of at most
+/// kPieceWidth radians, which follow the segment more closely, on another for queries
+/// (and to refine the pairs).
 class PatchBoxIndex {
  public:
   explicit PatchBoxIndex(const std::vector<PatchGeometry>& patches, const Cancellation& cancellation = {});
@@ -47,7 +47,7 @@ class PatchBoxIndex {
   const Scales& scales() const { return scales_; }
 
  private:
-  struct Tree;
+  struct Grid;
   /// Whether a box over a piece of the patch meets the query box.
   bool pieceMeets(std::uint32_t patch, const PatchBox& query) const;
   /// Whether boxes over pieces of the two patches meet.
@@ -61,7 +61,7 @@ class PatchBoxIndex {
   std::vector<std::size_t> firstPiece_;
   /// The largest difference of angles over a piece (a little more).
   double widestPiece_ = 0;
-  std::unique_ptr<Tree> tree_;
+  std::unique_ptr<Grid> grid_;
 };
 
 }  // namespace freespace

@@ -19,7 +19,7 @@ namespace freespace {
 /// across curves, spirals and horizontal edges, and the shells they form.
 struct Arrangement {
   std::vector<PatchGeometry> patches;
-  /// The patches' boxes in an R-tree: built once, for the candidate pairs of curves
+  /// The patches' boxes on grids: built once, for the candidate pairs of curves
   /// and overlaps and for the rays cast at fixed angles (SliceRays).
   std::shared_ptr<const PatchBoxIndex> boxIndex;
   std::vector<PatchCurve> curves;

@@ -33,7 +33,7 @@ struct BoundaryDistance {
 
 /// Distances from points of the slices of an arrangement at rational angles to the
 /// boundary of its free space there: the pieces of segments whose sub-faces bound a
-/// free cell. Candidates come from the R-tree of the patches' boxes, looked up near
+/// free cell. Candidates come from the index of the patches' boxes, looked up near
 /// the point first, then farther; each piece's distance is bounded in double
 /// intervals, and found exactly (rationals, then a square root in intervals) for the
 /// pieces that may be nearest when the intervals leave the answer wider than asked.

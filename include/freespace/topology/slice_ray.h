@@ -38,7 +38,7 @@ struct RayHit {
 };
 
 /// Rays in the slices of an arrangement at rational angles, decided exactly: the
-/// candidate patches come from an R-tree of their (x, y, theta) boxes, then every
+/// candidate patches come from the index of their (x, y, theta) boxes, then every
 /// test is on the exact slice (rational cosine and sine, rational points).
 class SliceRays {
  public:
