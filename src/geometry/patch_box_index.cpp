@@ -107,11 +107,12 @@ struct PatchBoxIndex::Grid {
   /// The columns and rows any piece covers.
   std::uint64_t lowColumn = 0, highColumn = 0, lowRow = 0, highRow = 0;
 
-  explicit Grid(const std::vector<std::pair<PatchBox, std::uint32_t>>& pieces)
-      : cells(pieces, scalesOf(pieces)) {
+  explicit Grid(const std::vector<std::pair<PatchBox, std::uint32_t>>& pieces) : cells(pieces, scalesOf(pieces)) {
     std::vector<CellEntry> covered;
     for (std::uint32_t p = 0; p < pieces.size(); ++p) {
-      cells.forEachCell(pieces[p].first, [&](std::uint64_t cell) { covered.push_back({cell, pieces[p].first.low[2], p}); });
+      cells.forEachCell(pieces[p].first, [&](std::uint64_t cell) {
+        covered.push_back({cell, pieces[p].first.low[2], p});
+      });
     }
     std::sort(covered.begin(), covered.end());
     lowColumn = lowRow = UINT64_MAX;
@@ -158,7 +159,8 @@ struct PatchBoxIndex::Grid {
     for (std::uint64_t column = fromColumn; column <= toColumn; ++column) {
       for (std::uint64_t row = fromRow; row <= toRow; ++row) {
         const auto key = std::lower_bound(keys.begin(), keys.end(), BoxGrid::key(column, row));
-        if (key != keys.end() && *key == BoxGrid::key(column, row)) visitCell(static_cast<std::size_t>(key - keys.begin()));
+        if (key != keys.end() && *key == BoxGrid::key(column, row))
+          visitCell(static_cast<std::size_t>(key - keys.begin()));
       }
     }
   }
@@ -195,7 +197,7 @@ std::vector<std::uint32_t> PatchBoxIndex::meeting(const PatchBox& query) const {
 }
 
 std::vector<std::uint32_t> PatchBoxIndex::meetingAt(double theta, const std::array<double, 2>& low,
-                                                   const std::array<double, 2>& high) const {
+                                                    const std::array<double, 2>& high) const {
   constexpr double kAnglePad = 1e-9;
   const double reduced = std::remainder(theta, 2 * M_PI);
   PatchBox query{{low[0], low[1], 0}, {high[0], high[1], 0}};
@@ -213,7 +215,6 @@ std::vector<std::uint32_t> PatchBoxIndex::meetingAt(double theta, const std::arr
 }
 
 namespace {
-
 
 /// A pair of patches as one number, the smaller in the high half (sorted faster).
 std::uint64_t pairKey(std::uint32_t a, std::uint32_t b) { return std::uint64_t{std::min(a, b)} << 32 | std::max(a, b); }
@@ -238,7 +239,8 @@ void addPairsInCell(const BoxGrid& grid, const std::vector<std::pair<PatchBox, s
 
 }  // namespace
 
-std::vector<std::pair<std::uint32_t, std::uint32_t>> PatchBoxIndex::meetingPairs(const Cancellation& cancellation) const {
+std::vector<std::pair<std::uint32_t, std::uint32_t>> PatchBoxIndex::meetingPairs(
+    const Cancellation& cancellation) const {
   const BoxGrid grid(boxes_, scales_);
   std::vector<CellEntry> entries;
   for (std::uint32_t b = 0; b < boxes_.size(); ++b) {
