@@ -5,45 +5,38 @@
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <exception>
 #include <functional>
-#include <future>
-#include <system_error>
-#include <thread>
-#include <vector>
 
 namespace freespace {
 
 /// The machine's cores (at least 1), asked of the system once (it reads a file each
 /// time).
-inline unsigned coreCount() {
-  static const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  return cores;
-}
+unsigned coreCount();
 
-/// Runs work(k) for k = 0 to count - 1 on every core (a thread each, the caller's
-/// among them), k handed out in order, each while keepGoing() says so; an exception
-/// thrown by work stops them all and is thrown again here.
+/// Runs `run` on each of the process's helper threads (one fewer than the cores,
+/// started on the first call and kept: a query calls this hundreds of times, and a new
+/// thread each time cost its start and a fresh memory heap) and on the caller's, and
+/// returns once all have returned; the first exception any threw is thrown again
+/// here. Called from a helper, or while another call runs, `run` runs on the caller's
+/// thread alone.
+void onEveryThread(const std::function<void()>& run);
+
+/// Runs work(k) for k = 0 to count - 1 on every core (the caller's among them), k
+/// handed out in order, each while keepGoing() says so; an exception thrown by work
+/// stops them all and is thrown again here.
 template <class Work>
 void onEveryCore(std::size_t count, const std::function<bool()>& keepGoing, const Work& work) {
   std::atomic<std::size_t> next{0};
   std::atomic<bool> failed{false};
-  const auto run = [&] {
+  onEveryThread([&] {
     try {
       for (std::size_t k = next++; k < count && !failed && keepGoing(); k = next++) work(k);
     } catch (...) {
       failed = true;
       throw;
     }
-  };
-  std::vector<std::future<void>> helpers;
-  const std::size_t threads = std::min<std::size_t>(count, coreCount());
-  try {
-    for (std::size_t helper = 1; helper < threads; ++helper) helpers.push_back(std::async(std::launch::async, run));
-  } catch (const std::system_error&) {
-    // No more threads to be had: those started and this one do it all.
-  }
-  run();
-  for (std::future<void>& helper : helpers) helper.get();
+  });
 }
 
 }  // namespace freespace
