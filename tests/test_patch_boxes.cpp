@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "bundled_scene.h"
 #include "exact_geometry.h"
@@ -98,16 +100,32 @@ void expectPairsOfMeetingBoxes(const std::vector<PatchGeometry>& geometries) {
   EXPECT_GT(expected.size(), geometries.size());
   const PatchBoxIndex index(geometries);
   EXPECT_EQ(index.meetingPairs(), expected);
-  // Queries: the arc boxes of every third patch.
+  const auto expectMeeting = [&](const PatchBox& box) {
+    std::vector<std::uint32_t> meeting;
+    for (std::uint32_t patch = 0; patch < arcs.size(); ++patch) {
+      if (anyMeet(arcs[patch], {box}) && anyMeet(pieces[patch], {box})) meeting.push_back(patch);
+    }
+    EXPECT_EQ(index.meeting(box), meeting)
+        << box.low[0] << " " << box.high[0] << " " << box.low[1] << " " << box.high[1] << " " << box.low[2] << " "
+        << box.high[2];
+  };
+  // Queries: the arc boxes of every third patch; small boxes about points of pieces
+  // at one angle (as clearances ask), near theta = +-pi too; boxes reaching past the
+  // index's square, or without bounds.
   for (std::size_t query = 0; query < arcs.size(); query += 3) {
-    for (const PatchBox& box : arcs[query]) {
-      std::vector<std::uint32_t> meeting;
-      for (std::uint32_t patch = 0; patch < arcs.size(); ++patch) {
-        if (anyMeet(arcs[patch], {box}) && anyMeet(pieces[patch], {box})) meeting.push_back(patch);
-      }
-      EXPECT_EQ(index.meeting(box), meeting);
+    for (const PatchBox& box : arcs[query]) expectMeeting(box);
+    const PatchBox& piece = pieces[query].front();
+    for (const double theta : {0.5 * (piece.low[2] + piece.high[2]), M_PI - 1e-9, -M_PI + 1e-9}) {
+      const double x = 0.5 * (piece.low[0] + piece.high[0]), y = 0.5 * (piece.low[1] + piece.high[1]);
+      expectMeeting({{x - 0.01, y - 0.01, theta - 1e-9}, {x + 0.01, y + 0.01, theta + 1e-9}});
     }
   }
+  const PatchBoxIndex::Scales& scales = index.scales();
+  expectMeeting({{scales.low - scales.side, scales.low - scales.side, -M_PI},
+                 {scales.low + 0.5 * scales.side, scales.low + 2 * scales.side, 0}});
+  expectMeeting({{scales.low + 2 * scales.side, scales.low, -M_PI}, {scales.low + 3 * scales.side, scales.low, M_PI}});
+  const double most = std::numeric_limits<double>::max();
+  expectMeeting({{-most, -most, -1}, {most, most, 1}});
 }
 
 }  // namespace
@@ -159,6 +177,13 @@ INSTANTIATE_TEST_SUITE_P(Scenes, BundledScenePatchBoxes, ::testing::Values("maze
 // Boxes of very different sizes: a bar 4,000 long beside small blocks, so that the
 // contacts along the bar's long edges have boxes hundreds of times as long as the
 // others (the grid of the pairs takes wider cells then).
+TEST(PatchBoxIndex, AnIndexOfNoPatchesMeetsNothing) {
+  const PatchBoxIndex index({});
+  EXPECT_TRUE(index.meeting({{-1, -1, -1}, {1, 1, 1}}).empty());
+  EXPECT_TRUE(index.meetingAt(0, {-1, -1}, {1, 1}).empty());
+  EXPECT_TRUE(index.meetingPairs().empty());
+}
+
 TEST(PatchBoxIndex, MeetingPairsAmongLongAndSmallBoxes) {
   std::vector<TriangleSoup> parts{boxSoup({10, -2000, 0.45}, {12, 2000, 0.5})};
   for (int i = 0; i < 4; ++i) {

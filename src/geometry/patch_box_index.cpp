@@ -15,10 +15,10 @@ bool meet(const PatchBox& a, const PatchBox& b) {
   return true;
 }
 
-/// A uniform grid over the boxes' (x, y) square (PatchBoxIndex::Scales), for finding
-/// the pairs of boxes that meet: each pair of boxes in one cell is tested, and a
+/// A uniform grid over the boxes' (x, y) square (PatchBoxIndex::Scales): for finding
+/// the pairs of boxes that meet, each pair of boxes in one cell is tested, and a
 /// meeting pair is reported only by the cell that holds the low corner of the two
-/// boxes' common (x, y) part, so once. Cells twice as wide as a typical box, so that
+/// boxes' common (x, y) part, so once; for queries, the cells a query covers. Cells twice as wide as a typical box, so that
 /// a box covers a few cells and a cell holds the boxes near it; wider when large
 /// boxes would cover too many.
 class BoxGrid {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <queue>
 #include <tuple>
@@ -104,8 +105,10 @@ double mixedBound(const CornerValues& a, const CornerValues& b) {
       if (lambda > 0 && lambda < 1) least = std::min(least, most(lambda));
     }
   }
-  // Rounded up: the values are at least 0, and the mix's rounding is a few ulps.
-  return least * (1 + 1e-12);
+  // Rounded up: the mix's rounding is a few ulps of the largest value mixed.
+  double largest = 0;
+  for (int corner = 0; corner < 4; ++corner) largest = std::max({largest, std::fabs(a[corner]), std::fabs(b[corner])});
+  return least * (1 + 1e-12) + 8 * std::numeric_limits<double>::epsilon() * largest;
 }
 
 /// Whether the segment from `from` to `to` meets the rectangle [low, high] (clipped

@@ -44,7 +44,8 @@ struct ClearanceBox {
   /// Its centre, the contact its clearance reaches there (the witness, clearance 0)
   /// and that contact's whole patch at its angle, then the distinct anchors that bound
   /// it best among its own, its siblings', its parent's neighbours' (their own) and its
-  /// parent's (upper is the least of their bounds); both forgotten once it is split.
+  /// parent's (upper is the least of their bounds and of the best one's mixes with
+  /// each other: ClearanceBoxes::bound); both forgotten once it is split.
   std::vector<ClearanceAnchor> own, anchors;
   /// Once split, its parts are boxes firstChild on: halved along the axes of
   /// `splitAxes` (bit k for axis k), 2 to the number of those axes of them, part i
@@ -57,7 +58,9 @@ struct ClearanceBox {
   /// The free cell holding the box's centre (none when it is blocked).
   std::optional<std::uint32_t> centreCell;
   /// No patch of the free space's boundary meets the box (as when its lower bound is
-  /// above 0): all of it lies where its centre does (blocked, or in centreCell).
+  /// above 0): all of it lies where its centre does (blocked, or in centreCell). Known
+  /// once measured for a box blocked at its centre; for one free there, false until
+  /// dropOutside asks it of another cell than the box's.
   bool unbroken = false;
   /// Boxes it touches (closed boxes, theta wrapping around); some may be split since.
   std::vector<std::uint32_t> neighbours;
@@ -143,9 +146,9 @@ class ClearanceBoxes {
   /// the obstacle than its half diagonal in (x, y) (its upper bound then comes from
   /// its theta width alone, docs/design.md section 7), else every axis.
   std::uint8_t axesToSplit(std::uint32_t box) const;
-  /// Drops every box whose upper bound is below `level`. A box's bounds, cell and
-  /// unbrokenness never change once bounded, so a call looks only at the boxes added
-  /// since the last one (at every box when the level rose).
+  /// Drops every box whose upper bound is below `level`. A box's bounds and cell never
+  /// change once bounded, so a call looks only at the boxes added since the last one
+  /// (at every box when the level rose).
   void dropBelow(double level);
   /// Drops every box that lies in another free cell than `cell`: unbroken (free
   /// throughout or not, all of it in its centre's cell), its centre in another (at the

@@ -15,8 +15,9 @@ namespace freespace {
 unsigned coreCount();
 
 /// Runs `run` on each of the process's helper threads (one fewer than the cores,
-/// started on the first call and kept: a query calls this hundreds of times, and a new
-/// thread each time cost its start and a fresh memory heap) and on the caller's, and
+/// started on the first call and kept until the process ends: a query calls this
+/// hundreds of times, and a new thread each time cost its start and a fresh memory
+/// heap; a forked child runs on its own thread) and on the caller's, and
 /// returns once all have returned; the first exception any threw is thrown again
 /// here. Called from a helper, or while another call runs, `run` runs on the caller's
 /// thread alone.

@@ -1,6 +1,7 @@
 #include "passage.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "every_core.h"
 #include "freespace/geometry/stage_clock.h"
@@ -17,7 +18,7 @@ double leastAtWaypoints(const FreeSpace& space, const std::vector<Pose2>& waypoi
     cancellation.check();
     upper[k] = space.clearance(waypoints[k], MotionChecker::kClearanceWidth).upper;
   });
-  return *std::min_element(upper.begin(), upper.end());
+  return upper.empty() ? HUGE_VAL : *std::min_element(upper.begin(), upper.end());
 }
 
 }  // namespace

@@ -14,7 +14,7 @@ namespace freespace {
 /// The patches' (x, y, theta) boxes (patchBoxes), one per arc of a patch's range, on a
 /// uniform (x, y) grid for the pairs that meet, and their boxes over pieces of at most
 /// kPieceWidth radians, which follow the segment more closely, on another for queries
-/// (and to refine the pairs).
+/// (the pieces also refine the pairs).
 class PatchBoxIndex {
  public:
   explicit PatchBoxIndex(const std::vector<PatchGeometry>& patches, const Cancellation& cancellation = {});
