@@ -316,7 +316,7 @@ std::vector<std::uint32_t> boxesToHalve(const ClearanceBoxes& boxes, const Clear
     // any more: the widest path lies along that chain, whose uncertain boxes the
     // chain by lower bounds may not reach for many rounds (it passes narrower routes
     // first, each halved a few boxes a round; RandomPolygons converged in 3.2 s
-    // instead of 0.67).
+    // instead of 0.6-0.7).
     for (std::uint32_t box : upperChain.boxes) {
       if (boxes.box(box).lower < levels.target) uncertain.push_back(box);
     }
