@@ -18,9 +18,9 @@ bool meet(const PatchBox& a, const PatchBox& b) {
 /// A uniform grid over the boxes' (x, y) square (PatchBoxIndex::Scales): for finding
 /// the pairs of boxes that meet, each pair of boxes in one cell is tested, and a
 /// meeting pair is reported only by the cell that holds the low corner of the two
-/// boxes' common (x, y) part, so once; for queries, the cells a query covers. Cells twice as wide as a typical box, so that
-/// a box covers a few cells and a cell holds the boxes near it; wider when large
-/// boxes would cover too many.
+/// boxes' common (x, y) part, so once; for queries, the cells a query covers. Cells
+/// twice as wide as a typical box, so that a box covers a few cells and a cell holds
+/// the boxes near it; wider when large boxes would cover too many.
 class BoxGrid {
  public:
   BoxGrid(const std::vector<std::pair<PatchBox, std::uint32_t>>& boxes, const PatchBoxIndex::Scales& scales)
@@ -159,8 +159,9 @@ struct PatchBoxIndex::Grid {
     for (std::uint64_t column = fromColumn; column <= toColumn; ++column) {
       for (std::uint64_t row = fromRow; row <= toRow; ++row) {
         const auto key = std::lower_bound(keys.begin(), keys.end(), BoxGrid::key(column, row));
-        if (key != keys.end() && *key == BoxGrid::key(column, row))
+        if (key != keys.end() && *key == BoxGrid::key(column, row)) {
           visitCell(static_cast<std::size_t>(key - keys.begin()));
+        }
       }
     }
   }

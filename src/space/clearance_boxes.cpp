@@ -185,14 +185,6 @@ AngleArc arcOf(const PatchSlab& slab, AngleAlgebra& algebra) {
   return {from - kPad, to + kPad, false};
 }
 
-/// Whether an arc holds an angle of [low, high] (a range of [-pi, pi]).
-bool arcMeets(const AngleArc& arc, double low, double high) {
-  if (arc.whole) return true;
-  if (arc.from <= arc.to) return closedOverlap(arc.from, arc.to, low, high);
-  // Across theta = pi: [from, pi] and [-pi, to].
-  return high >= arc.from || low <= arc.to;
-}
-
 /// The parts of [low, high] (a range of [-pi, pi]) an arc holds: none, one, or two
 /// (an arc across theta = pi).
 std::vector<std::array<double, 2>> partsWithin(const AngleArc& arc, double low, double high) {

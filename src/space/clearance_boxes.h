@@ -227,9 +227,8 @@ class ClearanceBoxes {
   /// boxes added since; all for a new one.
   std::vector<char> toReset(const UpperSearch& search) const;
   /// Whether a sub-face that bounds a free cell may meet the box: the patches whose
-  /// boxes meet it (their boxes hold their segments), and of each, the part of its
-  /// segment between the curves around such sub-faces in its slabs at the box's
-  /// angles (the curves' crossings bounded over all those angles at once).
+  /// boxes meet it (their boxes hold their segments), and of each, its slabs with such
+  /// sub-faces, each over its own part of the box's angles (slabMayMeet).
   bool meetsFreeBoundary(const ClearanceBox& box) const;
   struct FreeSlab;
   /// Whether a sub-face of a patch's slab (`free`) that bounds a free cell may meet the

@@ -32,7 +32,6 @@ void tightenBounds(const FreeSpace& space, const MotionChecker& checker, Passage
   for (std::size_t k = 0; k < passage.motionClearance.size(); ++k) {
     if (passage.motionClearance[k] < ceiling) order.push_back(k);
   }
-
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return passage.motionClearance[a] < passage.motionClearance[b]; });
   // Twice: the motions not finished at first get another try at the rate measured
