@@ -18,4 +18,4 @@ cmake -S . -B "$folder" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="-fs
   > /dev/null
 cmake --build "$folder" -j"$(nproc)" --target freespace_tests > "$folder/build.log"
 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" "$folder/bin/freespace_tests" \
-  --gtest_filter='EveryCore.*:*SeveralThreadsGetWhatOneGets*:*HalvingAtOnceMatchesHalvingInTurn*:*RoutedProblems*:*SolvedProblems*:*KeyholesSlotLiesBetweenTheBounds*-*SolvedProblems*/maze:*SolvedProblems*/keyhole_wide'
+  --gtest_filter='EveryCore.*:RoutePath.*:*SeveralThreadsGetWhatOneGets*:*HalvingAtOnceMatchesHalvingInTurn*:*RoutedProblems*:*SolvedProblems*:*KeyholesSlotLiesBetweenTheBounds*-*SolvedProblems*/maze:*SolvedProblems*/keyhole_wide'

@@ -8,6 +8,7 @@
 // exact clearance but for the corners' rounding (small).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <map>
@@ -158,6 +159,60 @@ TEST_P(BundledFacePaths, LoopsCertifyTranslationsInsideTheFaceBelowTheExactClear
   EXPECT_EQ(wrong, 0);
   EXPECT_EQ(loose, 0);
   EXPECT_LT(widestRounding, 1e-6);
+}
+
+/// A face bounded by a jagged ring of `corners` corners (radii 8 to 10) around a
+/// square hole of side 2.
+SliceFace jaggedFace(int corners, std::mt19937& random) {
+  std::uniform_real_distribution<double> radius(8, 10);
+  SliceFace face;
+  SliceLoop outer;
+  for (int k = 0; k < corners; ++k) {
+    const double angle = 2 * M_PI * k / corners, r = radius(random);
+    outer.corners.push_back({r * std::cos(angle), r * std::sin(angle)});
+  }
+  face.loops.push_back(outer);
+  face.loops.push_back(SliceLoop{{{-1, -1}, {-1, 1}, {1, 1}, {1, -1}}});
+  return face;
+}
+
+/// The distance from p to the segment from a to b, in long double.
+long double segmentDistance(const std::array<double, 2>& p, const std::array<double, 2>& a,
+                            const std::array<double, 2>& b) {
+  const long double ux = (long double)b[0] - a[0], uy = (long double)b[1] - a[1];
+  const long double wx = (long double)p[0] - a[0], wy = (long double)p[1] - a[1];
+  const long double t = std::clamp((wx * ux + wy * uy) / (ux * ux + uy * uy), 0.0L, 1.0L);
+  return std::hypot(wx - t * ux, wy - t * uy);
+}
+
+// BoundaryDistances (an R-tree of the edges for faces of many, each edge in turn for
+// the others) against the least distance to every edge in long double, at random
+// points inside and around the face: the same distance (to 1e-12 relative), to a
+// point of the boundary at that distance.
+TEST(BoundaryDistances, FindTheNearestPointOfTheLoops) {
+  std::mt19937 random(20261207);
+  for (const int corners : {12, 100, 700}) {
+    const SliceFace face = jaggedFace(corners, random);
+    const BoundaryDistances distances(face);
+    std::uniform_real_distribution<double> coordinate(-12, 12);
+    for (int sample = 0; sample < 2000; ++sample) {
+      const std::array<double, 2> point{coordinate(random), coordinate(random)};
+      long double least = HUGE_VALL, footOnBoundary = HUGE_VALL;
+      const BoundaryPoint nearest = distances.nearest(point);
+      for (const SliceLoop& loop : face.loops) {
+        for (std::size_t k = 0; k < loop.corners.size(); ++k) {
+          const auto& a = loop.corners[k];
+          const auto& b = loop.corners[(k + 1) % loop.corners.size()];
+          least = std::min(least, segmentDistance(point, a, b));
+          footOnBoundary = std::min(footOnBoundary, segmentDistance(nearest.point, a, b));
+        }
+      }
+      ASSERT_NEAR(nearest.distance, least, 1e-12 * (1 + least)) << corners << " corners, sample " << sample;
+      ASSERT_LT(footOnBoundary, 1e-12) << corners << " corners, sample " << sample;
+      ASSERT_NEAR(std::hypot(point[0] - nearest.point[0], point[1] - nearest.point[1]), nearest.distance,
+                  1e-12 * (1 + least));
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledFacePaths,

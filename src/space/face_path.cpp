@@ -4,6 +4,9 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 
+#include <boost/geometry.hpp>
+#include <boost/geometry/index/rtree.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -207,29 +210,87 @@ std::optional<std::vector<std::array<double, 2>>> pathInFace(const SliceFace& fa
   return FaceTriangulation(face, {from, to}).path(from, to);
 }
 
+namespace {
+
+/// Keeps the point of the edge from `a` to `b` nearest to `point` when it is nearer
+/// than `nearestSquared` (the squared distance kept so far).
+void keepNearerOnEdge(const std::array<double, 2>& a, const std::array<double, 2>& b,
+                      const std::array<double, 2>& point, double& nearestSquared, std::array<double, 2>& nearestPoint) {
+  // An edge whose box lies farther than the nearest point so far is skipped.
+  const double gapX = std::max({0.0, std::min(a[0], b[0]) - point[0], point[0] - std::max(a[0], b[0])});
+  const double gapY = std::max({0.0, std::min(a[1], b[1]) - point[1], point[1] - std::max(a[1], b[1])});
+  if (gapX * gapX + gapY * gapY > nearestSquared) return;
+  const double ex = b[0] - a[0], ey = b[1] - a[1], length2 = ex * ex + ey * ey;
+  const double along = length2 > 0 ? ((point[0] - a[0]) * ex + (point[1] - a[1]) * ey) / length2 : 0;
+  const double t = std::clamp(along, 0.0, 1.0);
+  const std::array<double, 2> foot{a[0] + t * ex, a[1] + t * ey};
+  const double dx = point[0] - foot[0], dy = point[1] - foot[1], squared = dx * dx + dy * dy;
+  if (squared < nearestSquared) {
+    nearestSquared = squared;
+    nearestPoint = foot;
+  }
+}
+
+/// The end of edge k of a loop (the start of the next).
+const std::array<double, 2>& edgeEnd(const SliceLoop& loop, std::size_t k) {
+  return loop.corners[k + 1 < loop.corners.size() ? k + 1 : 0];
+}
+
+/// Faces with at least this many edges get an R-tree (BoundaryDistances): at 72, one
+/// took 10 us to build and answered in 135 ns where each edge in turn took 230-290 ns,
+/// about as many points as a walk asks of such a face.
+constexpr std::size_t kIndexedEdges = 128;
+
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+using TreePoint = bg::model::point<double, 2, bg::cs::cartesian>;
+using TreeEdge = std::pair<bg::model::segment<TreePoint>, std::pair<std::uint32_t, std::uint32_t>>;  // loop, edge
+
+}  // namespace
+
 BoundaryPoint nearestOnBoundary(const SliceFace& face, const std::array<double, 2>& point) {
   // Squared distances compared; one square root at the end.
   double nearestSquared = HUGE_VAL;
   std::array<double, 2> nearestPoint{};
   for (const SliceLoop& loop : face.loops) {
     for (std::size_t k = 0; k < loop.corners.size(); ++k) {
-      const std::array<double, 2>& a = loop.corners[k];
-      const std::array<double, 2>& b = loop.corners[k + 1 < loop.corners.size() ? k + 1 : 0];
-      // An edge whose box lies farther than the nearest point so far is skipped.
-      const double gapX = std::max({0.0, std::min(a[0], b[0]) - point[0], point[0] - std::max(a[0], b[0])});
-      const double gapY = std::max({0.0, std::min(a[1], b[1]) - point[1], point[1] - std::max(a[1], b[1])});
-      if (gapX * gapX + gapY * gapY > nearestSquared) continue;
-      const double ex = b[0] - a[0], ey = b[1] - a[1], length2 = ex * ex + ey * ey;
-      const double along = length2 > 0 ? ((point[0] - a[0]) * ex + (point[1] - a[1]) * ey) / length2 : 0;
-      const double t = std::clamp(along, 0.0, 1.0);
-      const std::array<double, 2> foot{a[0] + t * ex, a[1] + t * ey};
-      const double dx = point[0] - foot[0], dy = point[1] - foot[1], squared = dx * dx + dy * dy;
-      if (squared < nearestSquared) {
-        nearestSquared = squared;
-        nearestPoint = foot;
-      }
+      keepNearerOnEdge(loop.corners[k], edgeEnd(loop, k), point, nearestSquared, nearestPoint);
     }
   }
+  return {std::sqrt(nearestSquared), nearestPoint};
+}
+
+struct BoundaryDistances::Impl {
+  explicit Impl(const std::vector<TreeEdge>& all) : edges(all) {}  // packed
+  bgi::rtree<TreeEdge, bgi::rstar<8>> edges;
+};
+
+BoundaryDistances::BoundaryDistances(const SliceFace& face) : face_(face) {
+  std::size_t count = 0;
+  for (const SliceLoop& loop : face.loops) count += loop.corners.size();
+  if (count < kIndexedEdges) return;
+  std::vector<TreeEdge> edges;
+  edges.reserve(count);
+  for (std::uint32_t l = 0; l < face.loops.size(); ++l) {
+    const SliceLoop& loop = face.loops[l];
+    for (std::uint32_t k = 0; k < loop.corners.size(); ++k) {
+      const std::array<double, 2>&a = loop.corners[k], &b = edgeEnd(loop, k);
+      edges.push_back({{TreePoint(a[0], a[1]), TreePoint(b[0], b[1])}, {l, k}});
+    }
+  }
+  impl_ = std::make_unique<Impl>(edges);
+}
+
+BoundaryDistances::~BoundaryDistances() = default;
+
+BoundaryPoint BoundaryDistances::nearest(const std::array<double, 2>& point) const {
+  if (!impl_) return nearestOnBoundary(face_, point);
+  TreeEdge found;
+  if (impl_->edges.query(bgi::nearest(TreePoint(point[0], point[1]), 1), &found) == 0) return {};
+  const auto [l, k] = found.second;
+  double nearestSquared = HUGE_VAL;
+  std::array<double, 2> nearestPoint{};
+  keepNearerOnEdge(face_.loops[l].corners[k], edgeEnd(face_.loops[l], k), point, nearestSquared, nearestPoint);
   return {std::sqrt(nearestSquared), nearestPoint};
 }
 

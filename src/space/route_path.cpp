@@ -12,6 +12,7 @@
 #include "freespace/space/face_path.h"
 #include "freespace/space/motion_checker.h"
 #include "freespace/topology/slice_faces.h"
+#include "every_core.h"
 #include "lazy_ranking.h"
 
 namespace freespace {
@@ -34,6 +35,13 @@ constexpr std::size_t kTriangulationsKept = 64;
 /// The relative width of the certified clearances the walk asks for.
 constexpr double kWidth = MotionChecker::kClearanceWidth;
 
+/// A face of the walk, with the distances to its loops (the walk asks the clearance
+/// at thousands of points of some faces).
+struct WalkFace : SliceFace {
+  explicit WalkFace(SliceFace&& face) : SliceFace(std::move(face)), boundary(*this) {}
+  BoundaryDistances boundary;
+};
+
 class RouteWalker {
  public:
   RouteWalker(const FreeSpace& space, std::chrono::steady_clock::time_point deadline, const Cancellation& cancellation)
@@ -45,17 +53,16 @@ class RouteWalker {
         deadline_(deadline),
         cancellation_(cancellation) {}
 
-  std::optional<RoutedPath> walk(const Pose2& from, const Pose2& to) {
-    const std::optional<std::uint32_t> first = space_.nodeOf(from), last = space_.nodeOf(to);
-    if (!first || !last) return std::nullopt;
+  /// The walk from `from`, in node `first`, to `to`, in node `last`.
+  std::optional<RoutedPath> walk(const Pose2& from, std::uint32_t first, const Pose2& to, std::uint32_t last) {
     waypoints_ = {from};
     certified_.clear();
     // Where a crossing fails, the route is planned again from the node reached,
     // without that edge.
     std::set<std::pair<std::uint32_t, std::uint32_t>> failed;
     const auto usable = [&](std::uint32_t a, std::uint32_t b) { return !failed.count(std::minmax(a, b)); };
-    for (std::uint32_t node = *first; failed.size() < kMostFailedCrossings;) {
-      const std::optional<std::vector<std::uint32_t>> route = graph_.route(node, *last, usable);
+    for (std::uint32_t node = first; failed.size() < kMostFailedCrossings;) {
+      const std::optional<std::vector<std::uint32_t>> route = graph_.route(node, last, usable);
       if (!route) return std::nullopt;
       std::size_t at = 0;
       for (std::optional<std::size_t> reached; at + 1 < route->size(); at = *reached) {
@@ -89,16 +96,20 @@ class RouteWalker {
 
   /// The node's face in the slice at theta (none at a critical angle, or outside the
   /// node's angles). Faces are kept (up to kFacesKept): a travel estimates an angle's
-  /// translation, then makes it.
-  std::shared_ptr<const SliceFace> faceAt(std::uint32_t node, double theta) const {
+  /// translation, then makes it. Each is made with an AngleAlgebra of its own: a walk's
+  /// angles are all different, and one kept for the walk, whose memo grew, was 10-15%
+  /// slower.
+  std::shared_ptr<const WalkFace> faceAt(std::uint32_t node, double theta) const {
     auto kept = faces_.find({theta, node});
     if (kept == faces_.end()) {
       if (faces_.size() >= kFacesKept) faces_.clear();
-      std::shared_ptr<const SliceFace> face;
+      std::shared_ptr<const WalkFace> face;
       try {
+        PredicateStatistics statistics;
+        AngleAlgebra algebra(statistics);
         std::optional<SliceFace> made =
-            sliceFaces_.faceOf(node, AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), algebra_);
-        if (made) face = std::make_shared<const SliceFace>(std::move(*made));
+            sliceFaces_.faceOf(node, AlgebraicAngle::rational(HalfAngle::fromRadians(theta)), algebra);
+        if (made) face = std::make_shared<const WalkFace>(std::move(*made));
       } catch (const std::invalid_argument&) {
         // A critical angle: no faces.
       }
@@ -124,18 +135,19 @@ class RouteWalker {
   }
 
   /// The clearance of a point inside the face (construction coordinates) at the face's
-  /// angle, estimated from the face's loops (nearestOnBoundary; in the input's units).
-  double estimatedClearance(const SliceFace& face, const std::array<double, 2>& point) const {
-    return nearestOnBoundary(face, point).distance / scale_;
+  /// angle, estimated from the face's loops (nearestOnBoundary, by the face's
+  /// BoundaryDistances; in the input's units).
+  double estimatedClearance(const WalkFace& face, const std::array<double, 2>& point) const {
+    return face.boundary.nearest(point).distance / scale_;
   }
-  double estimatedClearance(const SliceFace& face, const Pose2& pose) const {
+  double estimatedClearance(const WalkFace& face, const Pose2& pose) const {
     return estimatedClearance(face, scaled(pose));
   }
 
   /// Translations at the current angle to `target` (construction coordinates) inside
   /// the face (the current angle's) by its triangulation; with `keeping` (> 0), only
   /// when each keeps that much clearance (certified, with few clearances each).
-  bool translateTo(const SliceFace& face, const FaceTriangulation& triangulation, const std::array<double, 2>& target,
+  bool translateTo(const WalkFace& face, const FaceTriangulation& triangulation, const std::array<double, 2>& target,
                    double keeping = 0) {
     const std::optional<std::vector<std::array<double, 2>>> path = triangulation.path(scaled(current()), target);
     if (!path) return false;
@@ -175,7 +187,7 @@ class RouteWalker {
   /// bound in theta); none when they do not certify it.
   std::optional<double> certifiedTurn(std::uint32_t node, const Pose2& from, const Pose2& to) const {
     const auto clearanceAt = [&](const Pose2& pose) -> std::optional<double> {
-      const std::shared_ptr<const SliceFace> face = faceAt(node, pose.theta);
+      const std::shared_ptr<const WalkFace> face = faceAt(node, pose.theta);
       if (!face) return std::nullopt;
       const std::optional<double> at = certifiedClearanceAlong(*face, scaled(pose), scaled(pose));
       if (!at) return std::nullopt;
@@ -196,14 +208,14 @@ class RouteWalker {
   /// certified later); up to four times per leg (a retraction towards the medial
   /// axis). The ends' clearances are given (each point's is estimated once, from the
   /// face's loops).
-  void appendRoomier(const SliceFace& face, const FaceTriangulation& triangulation, const Pose2& from,
+  void appendRoomier(const WalkFace& face, const FaceTriangulation& triangulation, const Pose2& from,
                      double fromClearance, const Pose2& to, double toClearance, int depth,
                      std::vector<Pose2>& poses) const {
     const double wanted = std::min(fromClearance, toClearance);
     std::optional<std::pair<Pose2, BoundaryPoint>> tightest;
     for (int k = 1; depth < 4 && k < 8; ++k) {
       const Pose2 at{from.x + (to.x - from.x) * k / 8, from.y + (to.y - from.y) * k / 8, from.theta};
-      const BoundaryPoint nearest = nearestOnBoundary(face, scaled(at));
+      const BoundaryPoint nearest = face.boundary.nearest(scaled(at));
       if (!tightest || nearest.distance < tightest->second.distance) tightest = {at, nearest};
     }
     if (tightest && tightest->second.distance > 0 && tightest->second.distance / scale_ < 0.9 * wanted) {
@@ -230,7 +242,7 @@ class RouteWalker {
   /// holding the current point (a short move). Returns the clearance where it leaves
   /// the robot, estimated from the face's loops (none when the point lies outside it).
   std::optional<double> recentre(std::uint32_t node) {
-    const std::shared_ptr<const SliceFace> face = faceAt(node, current().theta);
+    const std::shared_ptr<const WalkFace> face = faceAt(node, current().theta);
     if (!face || face->loops.empty()) return std::nullopt;
     const std::shared_ptr<const FaceTriangulation> triangulation =
         triangulationAt(node, current().theta, *face, {scaled(current())});
@@ -265,7 +277,7 @@ class RouteWalker {
     const double turn = turnInside(graph_.nodes()[node], from, to);
     const int steps = static_cast<int>(std::ceil(std::fabs(turn) / (M_PI / 8)));
     for (int k = 1; k < steps; ++k) {
-      const std::shared_ptr<const SliceFace> face = faceAt(node, reducedAngle(from + turn * k / steps));
+      const std::shared_ptr<const WalkFace> face = faceAt(node, reducedAngle(from + turn * k / steps));
       if (face && !liesInside(*face, point)) return false;
     }
     return true;
@@ -275,7 +287,7 @@ class RouteWalker {
   /// (the exact one at a critical angle, where the node has no face, or where the point
   /// lies outside the face by its rounded loops).
   double clearanceHere(std::uint32_t node) const {
-    if (const std::shared_ptr<const SliceFace> face = faceAt(node, current().theta)) {
+    if (const std::shared_ptr<const WalkFace> face = faceAt(node, current().theta)) {
       if (liesInside(*face, scaled(current()))) return estimatedClearance(*face, current());
     }
     return space_.clearance(current(), kWidth).lower;
@@ -352,7 +364,7 @@ class RouteWalker {
   /// and the least clearance at its corners and the middles of its legs (an estimate,
   /// not certified); none when the face does not hold both.
   std::optional<double> estimatedTravel(std::uint32_t node, const std::array<double, 2>& point, double theta) const {
-    const std::shared_ptr<const SliceFace> face = faceAt(node, theta);
+    const std::shared_ptr<const WalkFace> face = faceAt(node, theta);
     if (!face) return std::nullopt;
     const std::array<double, 2> here = scaled(current());
     const std::optional<std::vector<std::array<double, 2>>> way =
@@ -371,7 +383,7 @@ class RouteWalker {
   /// An upper bound on estimatedTravel at theta (the estimated clearances at the
   /// travel's ends, without its way); none where the node has no face.
   std::optional<double> travelBound(std::uint32_t node, const std::array<double, 2>& point, double theta) const {
-    const std::shared_ptr<const SliceFace> face = faceAt(node, theta);
+    const std::shared_ptr<const WalkFace> face = faceAt(node, theta);
     if (!face) return std::nullopt;
     return std::min(estimatedClearance(*face, scaled(current())), estimatedClearance(*face, point));
   }
@@ -416,7 +428,7 @@ class RouteWalker {
   /// Translates at the current angle to `point` inside the node's face.
   bool translateInNode(std::uint32_t node, const std::array<double, 2>& point) {
     const double theta = current().theta;
-    const std::shared_ptr<const SliceFace> face = faceAt(node, theta);
+    const std::shared_ptr<const WalkFace> face = faceAt(node, theta);
     if (!face) return false;
     if (face->loops.empty()) {
       append({point[0] / scale_, point[1] / scale_, theta});
@@ -514,10 +526,10 @@ class RouteWalker {
   /// when a face has no loops; confirmed by them before a turn from there is tried).
   /// Those found before the deadline.
   std::vector<std::pair<double, std::array<double, 2>>> crossingPoints(std::uint32_t node, double exit,
-                                                                       const SliceFace& face, std::uint32_t next,
+                                                                       const WalkFace& face, std::uint32_t next,
                                                                        double entry) const {
     const std::array<double, 2> here = scaled(current());
-    const std::shared_ptr<const SliceFace> nextFace = faceAt(next, entry);
+    const std::shared_ptr<const WalkFace> nextFace = faceAt(next, entry);
     std::shared_ptr<const FaceTriangulation> exitTriangulation, entryTriangulation;  // faces with loops
     if (nextFace && !face.loops.empty() && !nextFace->loops.empty()) {
       exitTriangulation = triangulationAt(node, exit, face, {here});
@@ -557,7 +569,7 @@ class RouteWalker {
   /// first) where turning to `entry` is certified free and lands in `next`, and turns
   /// there.
   bool turnThroughAt(std::uint32_t node, double exit, double entry, std::uint32_t next) {
-    const std::shared_ptr<const SliceFace> face = faceAt(node, exit);
+    const std::shared_ptr<const WalkFace> face = faceAt(node, exit);
     if (!face) return false;
     const std::vector<std::pair<double, std::array<double, 2>>> usable = crossingPoints(node, exit, *face, next, entry);
     const std::array<double, 2> here = scaled(current());
@@ -589,7 +601,7 @@ class RouteWalker {
   /// translates to it, and turns onto its angle.
   bool arriveAt(std::uint32_t node, const Pose2& goal) {
     double theta = reducedAngle(goal.theta);
-    std::shared_ptr<const SliceFace> face = faceAt(node, theta);
+    std::shared_ptr<const WalkFace> face = faceAt(node, theta);
     for (double offset = 1e-9; !face && offset < 1e-3; offset *= 4) {
       theta = reducedAngle(goal.theta + offset);
       face = faceAt(node, theta);
@@ -611,18 +623,124 @@ class RouteWalker {
   std::vector<std::optional<double>> certified_;  // per motion between waypoints
   int steps_ = 0;
   // Kept faces (null: none) and triangulations, by angle and node.
-  mutable std::map<std::pair<double, std::uint32_t>, std::shared_ptr<const SliceFace>> faces_;
+  mutable std::map<std::pair<double, std::uint32_t>, std::shared_ptr<const WalkFace>> faces_;
   mutable std::map<std::pair<double, std::uint32_t>, std::shared_ptr<const FaceTriangulation>> triangulations_;
-  // The walk's own predicates (the free space's other queries may run meanwhile).
-  mutable PredicateStatistics statistics_;
-  mutable AngleAlgebra algebra_{statistics_};
 };
+
+/// A configuration well inside the node, where the parts of a split walk meet: the
+/// middle of the roomiest triangle of the node's face at the middle of its widest
+/// interval; none when the exact rays do not place it in the node.
+std::optional<Pose2> junctionIn(const FreeSpace& space, std::uint32_t node) {
+  const CellGraph& graph = space.cellGraph();
+  const CellGraphNode& run = graph.nodes()[node];
+  const std::uint32_t count = graph.intervalCount();
+  if (count == 0) return std::nullopt;
+  double widest = 0, middle = 0;
+  for (std::uint32_t interval = run.firstInterval;; interval = (interval + 1) % count) {
+    const auto [low, width] = graph.arc(interval, interval);
+    if (width > widest) {
+      widest = width;
+      middle = reducedAngle(low + width / 2);
+    }
+    if (interval == run.lastInterval) break;
+  }
+  if (widest < 1e-9) return std::nullopt;  // faces pinched to rounding (see nextToCritical)
+  PredicateStatistics statistics;
+  AngleAlgebra algebra(statistics);
+  const std::optional<SliceFace> face =
+      space.sliceFaces().faceOf(node, AlgebraicAngle::rational(HalfAngle::fromRadians(middle)), algebra);
+  if (!face || face->loops.empty()) return std::nullopt;
+  const std::vector<std::array<double, 2>> roomy = FaceTriangulation(*face).roomyPoints();
+  if (roomy.empty()) return std::nullopt;
+  const double scale = space.meshes().scale;
+  const Pose2 junction{roomy.front()[0] / scale, roomy.front()[1] / scale, middle};
+  if (space.nodeOf(junction) != node) return std::nullopt;
+  return junction;
+}
+
+/// A junction (junctionIn) in a node of the route near index `middle`, with its node:
+/// within a quarter of a part's nodes (of `parts`) of it, but neither end, the node
+/// with the widest arc first (routes pass nodes only a rounding wide, with faces
+/// pinched to rounding).
+std::optional<std::pair<Pose2, std::uint32_t>> junctionNear(const FreeSpace& space,
+                                                            const std::vector<std::uint32_t>& route, std::size_t middle,
+                                                            std::size_t parts) {
+  const std::size_t reach = std::max<std::size_t>(1, route.size() / (4 * parts));
+  std::vector<std::uint32_t> near(route.begin() + std::max<std::size_t>(1, middle - std::min(middle, reach)),
+                                  route.begin() + std::min(route.size() - 1, middle + reach + 1));
+  const CellGraph& graph = space.cellGraph();
+  std::stable_sort(near.begin(), near.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return graph.arcWidth(a) > graph.arcWidth(b); });
+  for (std::uint32_t node : near) {
+    if (const std::optional<Pose2> junction = junctionIn(space, node)) return std::pair(*junction, node);
+  }
+  return std::nullopt;
+}
+
+/// Routes of fewer nodes than this per part are walked whole.
+constexpr std::size_t kLeastNodesPerPart = 4;
+/// At most this many parts: cut in four, the maze had a part whose junction took 10.8
+/// ms to reach, more than the whole walk.
+constexpr std::size_t kMostParts = 2;
+
+/// The walk from `from` (in node `first`) to `to` (in node `last`) split in parts (up
+/// to kMostParts, one per core), walked at once (docs/design.md section 7): the cell
+/// graph's route is cut
+/// where the arcs of its nodes before make up a part's share of them all (a walk's
+/// time goes mostly to turning inside nodes), at a junction in a node near there
+/// (junctionNear), and each part is walked from one junction to the next. None when
+/// there is one core, the route is short, a junction is not found or a part's walk
+/// fails.
+std::optional<RoutedPath> walkInParts(const FreeSpace& space, const Pose2& from, std::uint32_t first, const Pose2& to,
+                                      std::uint32_t last, std::chrono::steady_clock::time_point deadline,
+                                      const Cancellation& cancellation) {
+  if (coreCount() < 2) return std::nullopt;
+  const CellGraph& graph = space.cellGraph();
+  const std::optional<std::vector<std::uint32_t>> route = graph.route(first, last);
+  if (!route) return std::nullopt;
+  const std::size_t parts = std::min({std::size_t{coreCount()}, kMostParts, route->size() / kLeastNodesPerPart});
+  if (parts < 2) return std::nullopt;
+  std::vector<double> arcsBefore{0};
+  for (std::uint32_t node : *route) arcsBefore.push_back(arcsBefore.back() + graph.arcWidth(node));
+  if (!(arcsBefore.back() > 0)) return std::nullopt;
+  std::vector<Pose2> ends{from};
+  std::vector<std::uint32_t> nodes{first};
+  for (std::size_t part = 1; part < parts; ++part) {
+    const double share = arcsBefore.back() * part / parts;
+    const std::size_t middle = std::lower_bound(arcsBefore.begin(), arcsBefore.end(), share) - arcsBefore.begin() - 1;
+    const std::optional<std::pair<Pose2, std::uint32_t>> junction = junctionNear(space, *route, middle, parts);
+    if (!junction) return std::nullopt;
+    ends.push_back(junction->first);
+    nodes.push_back(junction->second);
+  }
+  ends.push_back(to);
+  nodes.push_back(last);
+  std::vector<std::optional<RoutedPath>> walked(parts);
+  onEveryCore(
+      parts, [] { return true; },
+      [&](std::size_t part) {
+        walked[part] =
+            RouteWalker(space, deadline, cancellation).walk(ends[part], nodes[part], ends[part + 1], nodes[part + 1]);
+      });
+  RoutedPath joined{{from}, {}};
+  for (const std::optional<RoutedPath>& part : walked) {
+    if (!part) return std::nullopt;
+    joined.waypoints.insert(joined.waypoints.end(), part->waypoints.begin() + 1, part->waypoints.end());
+    joined.certified.insert(joined.certified.end(), part->certified.begin(), part->certified.end());
+  }
+  return joined;
+}
 
 }  // namespace
 
 std::optional<RoutedPath> routePath(const FreeSpace& space, const Pose2& from, const Pose2& to,
                                     std::chrono::steady_clock::time_point deadline, const Cancellation& cancellation) {
-  return RouteWalker(space, deadline, cancellation).walk(from, to);
+  const std::optional<std::uint32_t> first = space.nodeOf(from), last = space.nodeOf(to);
+  if (!first || !last) return std::nullopt;
+  if (std::optional<RoutedPath> split = walkInParts(space, from, *first, to, *last, deadline, cancellation)) {
+    return split;
+  }
+  return RouteWalker(space, deadline, cancellation).walk(from, *first, to, *last);
 }
 
 }  // namespace freespace

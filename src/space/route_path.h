@@ -21,8 +21,9 @@ struct RoutedPath {
 /// half the clearance's allowance, each followed by a translation (FaceTriangulation)
 /// to the middle of the node's face's triangle there; across each edge of the route,
 /// a turn through its critical angle at a point of both faces (where no such point is
-/// found, the route is planned again without that edge). None when a step fails or
-/// `deadline` passes (the caller certifies the motions not certified yet).
+/// found, the route is planned again without that edge). A long route is cut in parts
+/// walked at once, one per core. None when a step fails or `deadline` passes (the
+/// caller certifies the motions not certified yet).
 std::optional<RoutedPath> routePath(const FreeSpace& space, const Pose2& from, const Pose2& to,
                                     std::chrono::steady_clock::time_point deadline,
                                     const Cancellation& cancellation = {});

@@ -73,6 +73,26 @@ struct BoundaryPoint {
 /// face without loops.
 BoundaryPoint nearestOnBoundary(const SliceFace& face, const std::array<double, 2>& point);
 
+/// nearestOnBoundary for many points of one face: its loops' edges in an R-tree
+/// (Boost.Geometry) when they are many (a face of OMPL.app's Maze_planar has 685,
+/// where a walk asks thousands of points), each edge in turn otherwise (as fast for a
+/// hundred, and nothing to build). Keeps a reference to the face.
+class BoundaryDistances {
+ public:
+  explicit BoundaryDistances(const SliceFace& face);
+  ~BoundaryDistances();
+  BoundaryDistances(const BoundaryDistances&) = delete;
+  BoundaryDistances& operator=(const BoundaryDistances&) = delete;
+
+  /// nearestOnBoundary(face, point), up to the rounding of a tie between edges.
+  BoundaryPoint nearest(const std::array<double, 2>& point) const;
+
+ private:
+  struct Impl;
+  const SliceFace& face_;
+  std::unique_ptr<Impl> impl_;  // null: few edges
+};
+
 /// Whether a point lies inside the face: an odd number of crossings of a ray from it
 /// with a bounded face's loops as rounded, an even number with an unbounded face's
 /// (exact predicates on the rounded loops; nearer to them than their rounding, the
