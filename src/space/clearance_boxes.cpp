@@ -467,22 +467,57 @@ double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const Clear
   return *std::max_element(values.begin(), values.end());
 }
 
+double ClearanceBoxes::leastUpperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const {
+  const Pose2 middle = centre(box);
+  const double dx = middle.x - anchor.at[0], dy = middle.y - anchor.at[1];
+  double apart;  // from the centre to the anchor's point or segment
+  if (anchor.along[0] != 0 || anchor.along[1] != 0) {
+    const double length2 = anchor.along[0] * anchor.along[0] + anchor.along[1] * anchor.along[1];
+    const double t = std::clamp((dx * anchor.along[0] + dy * anchor.along[1]) / length2, 0.0, 1.0);
+    apart = std::hypot(dx - t * anchor.along[0], dy - t * anchor.along[1]);
+  } else {
+    apart = std::hypot(dx, dy);
+  }
+  // The distance to a point or a segment is convex, so at most the most of the
+  // corners'; rounded down by far more than its rounding.
+  return std::max(0.0, anchor.upper + apart) * (1 - 1e-9) - 1e-9 * std::fabs(anchor.upper);
+}
+
 void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates,
                            BoundScratch& scratch) const {
   constexpr std::size_t kAnchorsKept = 6;
   std::vector<CornerValues>& corners = scratch.corners;
   std::vector<std::pair<double, std::uint32_t>>& bounds = scratch.bounds;
-  corners.clear();
+  std::vector<std::pair<double, std::uint32_t>>& least = scratch.least;
+  corners.assign(candidates.size(), CornerValues{});
   bounds.clear();
-  for (std::uint32_t k = 0; k < candidates.size(); ++k) {
-    corners.push_back(cornerBounds(*candidates[k], box));
-    bounds.push_back({*std::max_element(corners.back().begin(), corners.back().end()), k});
-  }
-  // The best distinct ones (halves share their parent's contact segments), sorted a
-  // few more at a time while equal ones fill the places.
+  least.clear();
+  // Bounds are made the least possible first, until the kAnchorsKept-th best made
+  // lies below every least possible bound left: those cannot be among the best (a
+  // quarter of the cost for most candidates, where a box's neighbours bring dozens).
+  for (std::uint32_t k = 0; k < candidates.size(); ++k) least.push_back({leastUpperBoundFrom(*candidates[k], box), k});
+  std::sort(least.begin(), least.end());
+  // The best distinct ones (halves share their parent's contact segments: copies come
+  // one after another in this order, with equal least possible bounds).
   const auto same = [](const ClearanceAnchor& a, const ClearanceAnchor& b) {
     return a.at == b.at && a.along == b.along && a.upper == b.upper;
   };
+  std::array<double, kAnchorsKept> bestMade;  // the least bounds made of distinct ones, ascending
+  std::size_t made = 0;
+  for (std::size_t i = 0; i < least.size(); ++i) {
+    const auto [possible, k] = least[i];
+    if (made == kAnchorsKept && possible > bestMade.back()) break;
+    const std::uint32_t previous = i > 0 ? least[i - 1].second : k;
+    const bool copy = i > 0 && same(*candidates[k], *candidates[previous]);
+    corners[k] = copy ? corners[previous] : cornerBounds(*candidates[k], box);
+    const double value = *std::max_element(corners[k].begin(), corners[k].end());
+    bounds.push_back({value, k});
+    if (copy || (made == kAnchorsKept && value >= bestMade.back())) continue;
+    std::size_t at = made < kAnchorsKept ? made++ : kAnchorsKept - 1;
+    for (bestMade[at] = value; at > 0 && bestMade[at - 1] > bestMade[at]; --at)
+      std::swap(bestMade[at - 1], bestMade[at]);
+  }
+  // Sorted a few more at a time while equal ones fill the places.
   box.anchors.clear();
   box.anchors.reserve(std::min(kAnchorsKept, bounds.size()));
   std::array<std::uint32_t, kAnchorsKept> kept{};
