@@ -215,6 +215,37 @@ TEST(BoundaryDistances, FindTheNearestPointOfTheLoops) {
   }
 }
 
+// BoundaryDistances' certified clearance along a translation and its inside test
+// (from the edges near the motion and along the ray only, for a face of many edges)
+// against the same from every edge, at random points and translations: the same
+// answers.
+TEST(BoundaryDistances, CertifyAndLocateAsEveryEdgeDoes) {
+  std::mt19937 random(20261207);
+  for (const int corners : {12, 700}) {
+    SliceFace face = jaggedFace(corners, random);
+    face.cornerError = 1e-12;
+    const BoundaryDistances distances(face);
+    std::uniform_real_distribution<double> coordinate(-12, 12), step(-3, 3);
+    int inside = 0, certified = 0;
+    for (int sample = 0; sample < 2000; ++sample) {
+      const std::array<double, 2> from{coordinate(random), coordinate(random)};
+      const std::array<double, 2> to =
+          sample % 4 == 0 ? from : std::array<double, 2>{from[0] + step(random), from[1] + step(random)};
+      ASSERT_EQ(distances.liesInside(from), liesInside(face, from)) << corners << " corners, sample " << sample;
+      inside += liesInside(face, from);
+      const std::optional<double> near = distances.certifiedClearanceAlong(from, to);
+      const std::optional<double> every = certifiedClearanceAlong(face, from, to);
+      ASSERT_EQ(near.has_value(), every.has_value()) << corners << " corners, sample " << sample;
+      if (!every) continue;
+      ++certified;
+      ASSERT_NEAR(*near, *every, 1e-12 * *every) << corners << " corners, sample " << sample;
+    }
+    // Both answers met often enough to matter.
+    EXPECT_GT(inside, 500);
+    EXPECT_GT(certified, 200);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Scenes, BundledFacePaths,
                          ::testing::Values("keyhole", "keyhole_wide", "flip_window", "maze", "overhang", "table",
                                            "room_door", "random_polyhedra", "turn_around"));

@@ -244,6 +244,7 @@ constexpr std::size_t kIndexedEdges = 128;
 namespace bg = boost::geometry;
 namespace bgi = boost::geometry::index;
 using TreePoint = bg::model::point<double, 2, bg::cs::cartesian>;
+using TreeBox = bg::model::box<TreePoint>;
 using TreeEdge = std::pair<bg::model::segment<TreePoint>, std::pair<std::uint32_t, std::uint32_t>>;  // loop, edge
 
 }  // namespace
@@ -319,8 +320,24 @@ double leastBoxGap(const Point2& a, const Point2& b, const Point2& c, const Poin
 
 }  // namespace
 
-std::optional<double> certifiedClearanceAlong(const SliceFace& face, const std::array<double, 2>& from,
-                                              const std::array<double, 2>& to) {
+namespace {
+
+/// Calls visit(c, d) for each edge of the face's loops.
+struct EveryEdge {
+  const SliceFace& face;
+  template <class Visit>
+  void operator()(const Visit& visit) const {
+    for (const SliceLoop& loop : face.loops) {
+      for (std::size_t k = 0; k < loop.corners.size(); ++k) visit(loop.corners[k], edgeEnd(loop, k));
+    }
+  }
+};
+
+/// certifiedClearanceAlong from the edges `edges` visits: all that lie nearer the
+/// motion than the nearest of them (each the first time).
+template <class Edges>
+std::optional<double> certifiedAlongEdges(const SliceFace& face, const Point2& from, const Point2& to,
+                                          const Edges& edges) {
   if (face.loops.empty()) return face.unbounded ? std::optional<double>(HUGE_VAL) : std::nullopt;
   if (!std::isfinite(face.cornerError)) return std::nullopt;
   // The least distance, each loop edge's bounded by its box's gap first; edges whose
@@ -330,15 +347,12 @@ std::optional<double> certifiedClearanceAlong(const SliceFace& face, const std::
   std::vector<std::pair<Point2, Point2>> near;
   {
     const RoundingScope rounding;
-    for (const SliceLoop& loop : face.loops) {
-      for (std::size_t k = 0; k < loop.corners.size(); ++k) {
-        const Point2 &c = loop.corners[k], &d = loop.corners[(k + 1) % loop.corners.size()];
-        if (leastBoxGap(from, to, c, d) >= least) continue;
-        least = std::min({least, leastDistanceToSegment(from, c, d), leastDistanceToSegment(to, c, d),
-                          leastDistanceToSegment(c, from, to), leastDistanceToSegment(d, from, to)});
-        if (c != d) near.push_back({c, d});
-      }
-    }
+    edges([&](const Point2& c, const Point2& d) {
+      if (leastBoxGap(from, to, c, d) >= least) return;
+      least = std::min({least, leastDistanceToSegment(from, c, d), leastDistanceToSegment(to, c, d),
+                        leastDistanceToSegment(c, from, to), leastDistanceToSegment(d, from, to)});
+      if (c != d) near.push_back({c, d});
+    });
     least = (Interval(least) - face.cornerError).lower();
   }
   if (!(least > 0)) return std::nullopt;
@@ -348,23 +362,70 @@ std::optional<double> certifiedClearanceAlong(const SliceFace& face, const std::
       if (CGAL::do_intersect(motion, Kernel::Segment_2(pointOf(c), pointOf(d)))) return std::nullopt;
     }
   }
-  if (!liesInside(face, from)) return std::nullopt;
   return least;
 }
 
-bool liesInside(const SliceFace& face, const std::array<double, 2>& point) {
+/// liesInside from the edges `edges` visits: all that cross the ray from the point
+/// toward +x (each once).
+template <class Edges>
+bool insideByEdges(const SliceFace& face, const Point2& point, const Edges& edges) {
   // Crossings of the ray toward +x: an edge crossing the ray's line lies right of the
   // point when the point lies left of it walked upward.
   bool inside = face.unbounded;
-  for (const SliceLoop& loop : face.loops) {
-    for (std::size_t k = 0; k < loop.corners.size(); ++k) {
-      const Point2 &c = loop.corners[k], &d = loop.corners[(k + 1) % loop.corners.size()];
-      if ((c[1] > point[1]) == (d[1] > point[1])) continue;
-      const Point2 &low = c[1] < d[1] ? c : d, &high = c[1] < d[1] ? d : c;
-      if (CGAL::orientation(pointOf(low), pointOf(high), pointOf(point)) == CGAL::LEFT_TURN) inside = !inside;
+  edges([&](const Point2& c, const Point2& d) {
+    if ((c[1] > point[1]) == (d[1] > point[1])) return;
+    const Point2 &low = c[1] < d[1] ? c : d, &high = c[1] < d[1] ? d : c;
+    if (CGAL::orientation(pointOf(low), pointOf(high), pointOf(point)) == CGAL::LEFT_TURN) inside = !inside;
+  });
+  return inside;
+}
+
+}  // namespace
+
+std::optional<double> certifiedClearanceAlong(const SliceFace& face, const std::array<double, 2>& from,
+                                              const std::array<double, 2>& to) {
+  const std::optional<double> along = certifiedAlongEdges(face, from, to, EveryEdge{face});
+  return along && liesInside(face, from) ? along : std::nullopt;
+}
+
+bool liesInside(const SliceFace& face, const std::array<double, 2>& point) {
+  return insideByEdges(face, point, EveryEdge{face});
+}
+
+/// The edges of an R-tree's face whose boxes meet a box.
+struct BoundaryDistances::EdgesMeeting {
+  const BoundaryDistances& distances;
+  TreeBox box;
+  template <class Visit>
+  void operator()(const Visit& visit) const {
+    const SliceFace& face = distances.face_;
+    for (auto it = distances.impl_->edges.qbegin(bgi::intersects(box)); it != distances.impl_->edges.qend(); ++it) {
+      const auto [l, k] = it->second;
+      visit(face.loops[l].corners[k], edgeEnd(face.loops[l], k));
     }
   }
-  return inside;
+};
+
+std::optional<double> BoundaryDistances::certifiedClearanceAlong(const std::array<double, 2>& from,
+                                                                 const std::array<double, 2>& to) const {
+  if (!impl_) return freespace::certifiedClearanceAlong(face_, from, to);
+  // Only edges within the distance from `from` to the boundary (padded by far more
+  // than its rounding) of the motion's box can be nearest to the motion, or meet it.
+  const double nearestFrom = nearest(from).distance;
+  const double reach = nearestFrom * (1 + 1e-9) +
+                       1e-12 * (std::fabs(from[0]) + std::fabs(from[1]) + std::fabs(to[0]) + std::fabs(to[1]));
+  const TreeBox around(TreePoint(std::min(from[0], to[0]) - reach, std::min(from[1], to[1]) - reach),
+                       TreePoint(std::max(from[0], to[0]) + reach, std::max(from[1], to[1]) + reach));
+  const std::optional<double> along = certifiedAlongEdges(face_, from, to, EdgesMeeting{*this, around});
+  return along && liesInside(from) ? along : std::nullopt;
+}
+
+bool BoundaryDistances::liesInside(const std::array<double, 2>& point) const {
+  if (!impl_) return freespace::liesInside(face_, point);
+  const double farthest = impl_->edges.bounds().max_corner().get<0>();
+  if (point[0] > farthest) return face_.unbounded;  // no edge meets the ray
+  const TreeBox ray(TreePoint(point[0], point[1]), TreePoint(farthest, point[1]));
+  return insideByEdges(face_, point, EdgesMeeting{*this, ray});
 }
 
 }  // namespace freespace

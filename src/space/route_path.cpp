@@ -175,8 +175,8 @@ class RouteWalker {
   /// A certified lower bound on the clearance along a translation inside the face (at
   /// its angle), from the face's loops (certifiedClearanceAlong); none when they do not
   /// certify it.
-  std::optional<double> certifiedTranslation(const SliceFace& face, const Pose2& from, const Pose2& to) const {
-    const std::optional<double> along = certifiedClearanceAlong(face, scaled(from), scaled(to));
+  std::optional<double> certifiedTranslation(const WalkFace& face, const Pose2& from, const Pose2& to) const {
+    const std::optional<double> along = face.boundary.certifiedClearanceAlong(scaled(from), scaled(to));
     if (!along) return std::nullopt;
     const double least = *along / scale_ - MotionChecker::interpolationRounding(from, to);
     return least > 0 ? std::optional<double>(least) : std::nullopt;
@@ -189,7 +189,7 @@ class RouteWalker {
     const auto clearanceAt = [&](const Pose2& pose) -> std::optional<double> {
       const std::shared_ptr<const WalkFace> face = faceAt(node, pose.theta);
       if (!face) return std::nullopt;
-      const std::optional<double> at = certifiedClearanceAlong(*face, scaled(pose), scaled(pose));
+      const std::optional<double> at = face->boundary.certifiedClearanceAlong(scaled(pose), scaled(pose));
       if (!at) return std::nullopt;
       return *at / scale_;
     };
@@ -278,7 +278,7 @@ class RouteWalker {
     const int steps = static_cast<int>(std::ceil(std::fabs(turn) / (M_PI / 8)));
     for (int k = 1; k < steps; ++k) {
       const std::shared_ptr<const WalkFace> face = faceAt(node, reducedAngle(from + turn * k / steps));
-      if (face && !liesInside(*face, point)) return false;
+      if (face && !face->boundary.liesInside(point)) return false;
     }
     return true;
   }
@@ -288,7 +288,7 @@ class RouteWalker {
   /// lies outside the face by its rounded loops).
   double clearanceHere(std::uint32_t node) const {
     if (const std::shared_ptr<const WalkFace> face = faceAt(node, current().theta)) {
-      if (liesInside(*face, scaled(current()))) return estimatedClearance(*face, current());
+      if (face->boundary.liesInside(scaled(current()))) return estimatedClearance(*face, current());
     }
     return space_.clearance(current(), kWidth).lower;
   }

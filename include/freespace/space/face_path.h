@@ -73,7 +73,8 @@ struct BoundaryPoint {
 /// face without loops.
 BoundaryPoint nearestOnBoundary(const SliceFace& face, const std::array<double, 2>& point);
 
-/// nearestOnBoundary for many points of one face: its loops' edges in an R-tree
+/// nearestOnBoundary, certifiedClearanceAlong and liesInside (below) for many points
+/// of one face: its loops' edges in an R-tree
 /// (Boost.Geometry) when they are many (a face of OMPL.app's Maze_planar has 685,
 /// where a walk asks thousands of points), each edge in turn otherwise (as fast for a
 /// hundred, and nothing to build). Keeps a reference to the face.
@@ -86,9 +87,15 @@ class BoundaryDistances {
 
   /// nearestOnBoundary(face, point), up to the rounding of a tie between edges.
   BoundaryPoint nearest(const std::array<double, 2>& point) const;
+  /// certifiedClearanceAlong(face, from, to), from the edges near the motion only.
+  std::optional<double> certifiedClearanceAlong(const std::array<double, 2>& from,
+                                                const std::array<double, 2>& to) const;
+  /// liesInside(face, point), from the edges that meet the ray only.
+  bool liesInside(const std::array<double, 2>& point) const;
 
  private:
   struct Impl;
+  struct EdgesMeeting;
   const SliceFace& face_;
   std::unique_ptr<Impl> impl_;  // null: few edges
 };
