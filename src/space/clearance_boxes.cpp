@@ -430,26 +430,41 @@ std::optional<ClearanceAnchor> ClearanceBoxes::contactSegment(const Clearance& c
                          {contacts[1][0] - contacts[0][0], contacts[1][1] - contacts[0][1]}};
 }
 
-CornerValues ClearanceBoxes::cornerBounds(const ClearanceAnchor& anchor, const ClearanceBox& box) const {
-  // Along theta, the farthest point of the box's range from the anchor's angle round
-  // the circle: half a turn when the range holds the opposite angle.
+namespace {
+
+/// What an anchor's bound over a box adds to its distance in (x, y): the turn from
+/// the anchor's angle to the farthest of the box's round the circle (half a turn when
+/// the box's range holds the opposite angle), padded, and the bound's rounding.
+struct TurnAndRounding {
+  double turn, rounding;
+};
+
+TurnAndRounding turnAndRounding(const ClearanceAnchor& anchor, const ClearanceBox& box) {
   const double opposite = anchor.at[2] > 0 ? anchor.at[2] - M_PI : anchor.at[2] + M_PI;
   double turn = M_PI;
   if (opposite < box.low[2] || opposite > box.high[2]) {
     turn = std::max(turnBetween(anchor.at[2], box.low[2]), turnBetween(anchor.at[2], box.high[2]));
   }
-  // A blocked anchor (upper < 0) bounds the slice at its angle by the signed
-  // clearance's Lipschitz bound, but only down to 0: across angles only the free side
-  // is Lipschitz (docs/design.md section 7).
   const double rounding = 1e-13 * (1 + std::fabs(anchor.upper) + std::fabs(anchor.at[0]) + std::fabs(anchor.at[1]) +
                                    std::fabs(anchor.along[0]) + std::fabs(anchor.along[1]));
-  const double paddedTurn = turn * (1 + 1e-12) + 1e-15;
-  if (anchor.along[0] != 0 || anchor.along[1] != 0) {
+  return {turn * (1 + 1e-12) + 1e-15, rounding};
+}
+
+bool isSegment(const ClearanceAnchor& anchor) { return anchor.along[0] != 0 || anchor.along[1] != 0; }
+
+}  // namespace
+
+CornerValues ClearanceBoxes::cornerBounds(const ClearanceAnchor& anchor, const ClearanceBox& box) const {
+  const auto [paddedTurn, rounding] = turnAndRounding(anchor, box);
+  if (isSegment(anchor)) {
     // A contact's segment: clearance at most 0 but for its rounding, in `upper`.
     CornerValues values = segmentBounds(anchor, box, paddedTurn);
     for (double& value : values) value = anchor.upper + value * (1 + 1e-12) + rounding;
     return values;
   }
+  // A blocked anchor (upper < 0) bounds the slice at its angle by the signed
+  // clearance's Lipschitz bound, but only down to 0: across angles only the free side
+  // is Lipschitz (docs/design.md section 7).
   CornerValues values{};
   int corner = 0;
   for (const double x : {box.low[0], box.high[0]}) {
@@ -468,19 +483,32 @@ double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const Clear
 }
 
 double ClearanceBoxes::leastUpperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const {
+  // The bound at the box's centre: the distance to a point or a segment is convex, so
+  // at most the most of the corners'; the turn's term as at the corners (for a
+  // segment, with the lever nearest 0 along it).
+  const auto [paddedTurn, rounding] = turnAndRounding(anchor, box);
   const Pose2 middle = centre(box);
   const double dx = middle.x - anchor.at[0], dy = middle.y - anchor.at[1];
-  double apart;  // from the centre to the anchor's point or segment
-  if (anchor.along[0] != 0 || anchor.along[1] != 0) {
+  double least;
+  if (isSegment(anchor)) {
     const double length2 = anchor.along[0] * anchor.along[0] + anchor.along[1] * anchor.along[1];
     const double t = std::clamp((dx * anchor.along[0] + dy * anchor.along[1]) / length2, 0.0, 1.0);
-    apart = std::hypot(dx - t * anchor.along[0], dy - t * anchor.along[1]);
+    const double apart = std::hypot(dx - t * anchor.along[0], dy - t * anchor.along[1]);
+    const double leverLength2 =
+        anchor.contactAlong[0] * anchor.contactAlong[0] + anchor.contactAlong[1] * anchor.contactAlong[1];
+    const double s = leverLength2 > 0 ? std::clamp(-(anchor.contactFrom[0] * anchor.contactAlong[0] +
+                                                     anchor.contactFrom[1] * anchor.contactAlong[1]) /
+                                                       leverLength2,
+                                                   0.0, 1.0)
+                                      : 0.0;
+    const double leastLever = std::hypot(anchor.contactFrom[0] + s * anchor.contactAlong[0],
+                                         anchor.contactFrom[1] + s * anchor.contactAlong[1]);
+    least = anchor.upper + (apart + leastLever * paddedTurn) + rounding;
   } else {
-    apart = std::hypot(dx, dy);
+    least = std::max(0.0, anchor.upper + std::hypot(dx, dy)) + anchor.lever * paddedTurn + rounding;
   }
-  // The distance to a point or a segment is convex, so at most the most of the
-  // corners'; rounded down by far more than its rounding.
-  return std::max(0.0, anchor.upper + apart) * (1 - 1e-9) - 1e-9 * std::fabs(anchor.upper);
+  // Rounded down by far more than its rounding.
+  return least - 1e-9 * (std::fabs(least) + std::fabs(anchor.upper));
 }
 
 void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates,
@@ -496,7 +524,8 @@ void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceA
   // lies below every least possible bound left: those cannot be among the best (a
   // quarter of the cost for most candidates, where a box's neighbours bring dozens).
   for (std::uint32_t k = 0; k < candidates.size(); ++k) least.push_back({leastUpperBoundFrom(*candidates[k], box), k});
-  std::sort(least.begin(), least.end());
+  // Taken least first from a heap: most are never taken.
+  std::make_heap(least.begin(), least.end(), std::greater<>());
   // The best distinct ones (halves share their parent's contact segments: copies come
   // one after another in this order, with equal least possible bounds).
   const auto same = [](const ClearanceAnchor& a, const ClearanceAnchor& b) {
@@ -504,12 +533,14 @@ void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceA
   };
   std::array<double, kAnchorsKept> bestMade;  // the least bounds made of distinct ones, ascending
   std::size_t made = 0;
-  for (std::size_t i = 0; i < least.size(); ++i) {
-    const auto [possible, k] = least[i];
+  std::optional<std::uint32_t> previous;
+  for (auto end = least.end(); end != least.begin(); --end) {
+    const auto [possible, k] = least.front();
     if (made == kAnchorsKept && possible > bestMade.back()) break;
-    const std::uint32_t previous = i > 0 ? least[i - 1].second : k;
-    const bool copy = i > 0 && same(*candidates[k], *candidates[previous]);
-    corners[k] = copy ? corners[previous] : cornerBounds(*candidates[k], box);
+    std::pop_heap(least.begin(), end, std::greater<>());
+    const bool copy = previous && same(*candidates[k], *candidates[*previous]);
+    corners[k] = copy ? corners[*previous] : cornerBounds(*candidates[k], box);
+    previous = k;
     const double value = *std::max_element(corners[k].begin(), corners[k].end());
     bounds.push_back({value, k});
     if (copy || (made == kAnchorsKept && value >= bestMade.back())) continue;
