@@ -524,8 +524,6 @@ void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceA
   // lies below every least possible bound left: those cannot be among the best (a
   // quarter of the cost for most candidates, where a box's neighbours bring dozens).
   for (std::uint32_t k = 0; k < candidates.size(); ++k) least.push_back({leastUpperBoundFrom(*candidates[k], box), k});
-  // Taken least first from a heap: most are never taken.
-  std::make_heap(least.begin(), least.end(), std::greater<>());
   // The best distinct ones (halves share their parent's contact segments: copies come
   // one after another in this order, with equal least possible bounds).
   const auto same = [](const ClearanceAnchor& a, const ClearanceAnchor& b) {
@@ -533,14 +531,22 @@ void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceA
   };
   std::array<double, kAnchorsKept> bestMade;  // the least bounds made of distinct ones, ascending
   std::size_t made = 0;
-  std::optional<std::uint32_t> previous;
-  for (auto end = least.end(); end != least.begin(); --end) {
-    const auto [possible, k] = least.front();
+  // Taken least first, sorted a few at a time (most are never taken): heaps and
+  // partial sorts took longer than the corner bounds they spared.
+  constexpr std::size_t kTakenAtOnce = 16;
+  for (std::size_t i = 0, sorted = 0; i < least.size(); ++i) {
+    if (i == sorted) {
+      sorted = std::min(least.size(), i + kTakenAtOnce);
+      const auto from = least.begin() + static_cast<std::ptrdiff_t>(i);
+      const auto to = least.begin() + static_cast<std::ptrdiff_t>(sorted);
+      if (to != least.end()) std::nth_element(from, to, least.end());
+      std::sort(from, to);
+    }
+    const auto [possible, k] = least[i];
     if (made == kAnchorsKept && possible > bestMade.back()) break;
-    std::pop_heap(least.begin(), end, std::greater<>());
-    const bool copy = previous && same(*candidates[k], *candidates[*previous]);
-    corners[k] = copy ? corners[*previous] : cornerBounds(*candidates[k], box);
-    previous = k;
+    const std::uint32_t previous = i > 0 ? least[i - 1].second : k;
+    const bool copy = i > 0 && same(*candidates[k], *candidates[previous]);
+    corners[k] = copy ? corners[previous] : cornerBounds(*candidates[k], box);
     const double value = *std::max_element(corners[k].begin(), corners[k].end());
     bounds.push_back({value, k});
     if (copy || (made == kAnchorsKept && value >= bestMade.back())) continue;
@@ -548,16 +554,11 @@ void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceA
     for (bestMade[at] = value; at > 0 && bestMade[at - 1] > bestMade[at]; --at)
       std::swap(bestMade[at - 1], bestMade[at]);
   }
-  // Sorted a few more at a time while equal ones fill the places.
+  std::sort(bounds.begin(), bounds.end());
   box.anchors.clear();
   box.anchors.reserve(std::min(kAnchorsKept, bounds.size()));
   std::array<std::uint32_t, kAnchorsKept> kept{};
-  for (std::size_t k = 0, sorted = 0; k < bounds.size() && box.anchors.size() < kAnchorsKept; ++k) {
-    if (k == sorted) {
-      sorted = std::min(bounds.size(), k + 2 * kAnchorsKept);
-      std::partial_sort(bounds.begin() + static_cast<std::ptrdiff_t>(k),
-                        bounds.begin() + static_cast<std::ptrdiff_t>(sorted), bounds.end());
-    }
+  for (std::size_t k = 0; k < bounds.size() && box.anchors.size() < kAnchorsKept; ++k) {
     const ClearanceAnchor& candidate = *candidates[bounds[k].second];
     if (!box.anchors.empty() && same(box.anchors.back(), candidate)) continue;
     kept[box.anchors.size()] = bounds[k].second;
