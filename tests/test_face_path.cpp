@@ -221,7 +221,7 @@ TEST(BoundaryDistances, FindTheNearestPointOfTheLoops) {
 // answers.
 TEST(BoundaryDistances, CertifyAndLocateAsEveryEdgeDoes) {
   std::mt19937 random(20261207);
-  for (const int corners : {12, 700}) {
+  for (const int corners : {200, 700}) {
     SliceFace face = jaggedFace(corners, random);
     face.cornerError = 1e-12;
     const BoundaryDistances distances(face);

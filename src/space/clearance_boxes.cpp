@@ -507,8 +507,11 @@ double ClearanceBoxes::leastUpperBoundFrom(const ClearanceAnchor& anchor, const 
   } else {
     least = std::max(0.0, anchor.upper + std::hypot(dx, dy)) + anchor.lever * paddedTurn + rounding;
   }
-  // Rounded down by far more than its rounding.
-  return least - 1e-9 * (std::fabs(least) + std::fabs(anchor.upper));
+  // Rounded down by far more than its rounding (relative to the coordinates for the
+  // differences, to the values for the sums).
+  const double coordinates = std::fabs(middle.x) + std::fabs(middle.y) + std::fabs(anchor.at[0]) +
+                             std::fabs(anchor.at[1]) + std::fabs(anchor.along[0]) + std::fabs(anchor.along[1]);
+  return least - 1e-9 * (std::fabs(least) + std::fabs(anchor.upper)) - 1e-12 * coordinates;
 }
 
 void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates,
@@ -524,10 +527,22 @@ void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceA
   // lies below every least possible bound left: those cannot be among the best (a
   // quarter of the cost for most candidates, where a box's neighbours bring dozens).
   for (std::uint32_t k = 0; k < candidates.size(); ++k) least.push_back({leastUpperBoundFrom(*candidates[k], box), k});
-  // The best distinct ones (halves share their parent's contact segments: copies come
-  // one after another in this order, with equal least possible bounds).
+  // The best distinct ones (halves share their parent's contact segments: a copy has
+  // the least possible bound of the one it copies, so it comes among those of equal
+  // least possible bounds, and takes its corner bounds).
   const auto same = [](const ClearanceAnchor& a, const ClearanceAnchor& b) {
     return a.at == b.at && a.along == b.along && a.upper == b.upper;
+  };
+  const auto copied = [&](std::size_t i) -> std::optional<std::uint32_t> {
+    const ClearanceAnchor& anchor = *candidates[least[i].second];
+    for (std::size_t j = i; j > 0 && least[j - 1].first == least[i].first; --j) {
+      const ClearanceAnchor& other = *candidates[least[j - 1].second];
+      if (same(anchor, other) && anchor.lever == other.lever && anchor.contactFrom == other.contactFrom &&
+          anchor.contactAlong == other.contactAlong) {
+        return least[j - 1].second;
+      }
+    }
+    return std::nullopt;
   };
   std::array<double, kAnchorsKept> bestMade;  // the least bounds made of distinct ones, ascending
   std::size_t made = 0;
@@ -544,9 +559,9 @@ void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceA
     }
     const auto [possible, k] = least[i];
     if (made == kAnchorsKept && possible > bestMade.back()) break;
-    const std::uint32_t previous = i > 0 ? least[i - 1].second : k;
-    const bool copy = i > 0 && same(*candidates[k], *candidates[previous]);
-    corners[k] = copy ? corners[previous] : cornerBounds(*candidates[k], box);
+    const std::optional<std::uint32_t> original = copied(i);
+    const bool copy = original.has_value();
+    corners[k] = copy ? corners[*original] : cornerBounds(*candidates[k], box);
     const double value = *std::max_element(corners[k].begin(), corners[k].end());
     bounds.push_back({value, k});
     if (copy || (made == kAnchorsKept && value >= bestMade.back())) continue;

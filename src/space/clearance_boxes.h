@@ -206,7 +206,8 @@ class ClearanceBoxes {
   /// The bound an anchor gives on the clearance in a box.
   double upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
   /// At most upperBoundFrom(anchor, box), for a quarter of its cost: the anchor's
-  /// bound at the box's centre without the turn (at most the most of its corners').
+  /// bound at the box's centre (at most the most of its corners'), a segment's turn
+  /// taken with its lever nearest 0.
   double leastUpperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
   /// Room bound() reuses between calls: the candidates' bounds at a box's corners, the
   /// most of each with its candidate, and their least possible bounds with theirs.

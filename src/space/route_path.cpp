@@ -633,10 +633,9 @@ class RouteWalker {
 std::optional<Pose2> junctionIn(const FreeSpace& space, std::uint32_t node) {
   const CellGraph& graph = space.cellGraph();
   const CellGraphNode& run = graph.nodes()[node];
-  const std::uint32_t count = graph.intervalCount();
-  if (count == 0) return std::nullopt;
+  const std::size_t count = graph.intervalCount();
   double widest = 0, middle = 0;
-  for (std::uint32_t interval = run.firstInterval;; interval = (interval + 1) % count) {
+  for (std::uint32_t interval = run.firstInterval;; interval = static_cast<std::uint32_t>((interval + 1) % count)) {
     const auto [low, width] = graph.arc(interval, interval);
     if (width > widest) {
       widest = width;
@@ -647,8 +646,12 @@ std::optional<Pose2> junctionIn(const FreeSpace& space, std::uint32_t node) {
   if (widest < 1e-9) return std::nullopt;  // faces pinched to rounding (see nextToCritical)
   PredicateStatistics statistics;
   AngleAlgebra algebra(statistics);
-  const std::optional<SliceFace> face =
-      space.sliceFaces().faceOf(node, AlgebraicAngle::rational(HalfAngle::fromRadians(middle)), algebra);
+  std::optional<SliceFace> face;
+  try {
+    face = space.sliceFaces().faceOf(node, AlgebraicAngle::rational(HalfAngle::fromRadians(middle)), algebra);
+  } catch (const std::invalid_argument&) {
+    return std::nullopt;  // a critical angle after all
+  }
   if (!face || face->loops.empty()) return std::nullopt;
   const std::vector<std::array<double, 2>> roomy = FaceTriangulation(*face).roomyPoints();
   if (roomy.empty()) return std::nullopt;
@@ -658,10 +661,14 @@ std::optional<Pose2> junctionIn(const FreeSpace& space, std::uint32_t node) {
   return junction;
 }
 
+/// At most this many nodes are tried for a junction (each costs a face and its
+/// triangulation).
+constexpr std::size_t kJunctionTries = 4;
+
 /// A junction (junctionIn) in a node of the route near index `middle`, with its node:
 /// within a quarter of a part's nodes (of `parts`) of it, but neither end, the node
 /// with the widest arc first (routes pass nodes only a rounding wide, with faces
-/// pinched to rounding).
+/// pinched to rounding), of the kJunctionTries widest.
 std::optional<std::pair<Pose2, std::uint32_t>> junctionNear(const FreeSpace& space,
                                                             const std::vector<std::uint32_t>& route, std::size_t middle,
                                                             std::size_t parts) {
@@ -671,6 +678,7 @@ std::optional<std::pair<Pose2, std::uint32_t>> junctionNear(const FreeSpace& spa
   const CellGraph& graph = space.cellGraph();
   std::stable_sort(near.begin(), near.end(),
                    [&](std::uint32_t a, std::uint32_t b) { return graph.arcWidth(a) > graph.arcWidth(b); });
+  near.resize(std::min(near.size(), kJunctionTries));
   for (std::uint32_t node : near) {
     if (const std::optional<Pose2> junction = junctionIn(space, node)) return std::pair(*junction, node);
   }
@@ -685,12 +693,11 @@ constexpr std::size_t kMostParts = 2;
 
 /// The walk from `from` (in node `first`) to `to` (in node `last`) split in parts (up
 /// to kMostParts, one per core), walked at once (docs/design.md section 7): the cell
-/// graph's route is cut
-/// where the arcs of its nodes before make up a part's share of them all (a walk's
-/// time goes mostly to turning inside nodes), at a junction in a node near there
-/// (junctionNear), and each part is walked from one junction to the next. None when
-/// there is one core, the route is short, a junction is not found or a part's walk
-/// fails.
+/// graph's route is cut where the arcs of its nodes before make up a part's share of
+/// them all (a walk's time goes mostly to turning inside nodes), at a junction in a
+/// node near there (junctionNear), and each part is walked from one junction to the
+/// next. None when there is one core, the route is short, a junction is not found or
+/// a part's walk fails.
 std::optional<RoutedPath> walkInParts(const FreeSpace& space, const Pose2& from, std::uint32_t first, const Pose2& to,
                                       std::uint32_t last, std::chrono::steady_clock::time_point deadline,
                                       const Cancellation& cancellation) {
@@ -741,6 +748,14 @@ std::optional<RoutedPath> routePath(const FreeSpace& space, const Pose2& from, c
     return split;
   }
   return RouteWalker(space, deadline, cancellation).walk(from, *first, to, *last);
+}
+
+std::optional<RoutedPath> routePathInParts(const FreeSpace& space, const Pose2& from, const Pose2& to,
+                                           std::chrono::steady_clock::time_point deadline,
+                                           const Cancellation& cancellation) {
+  const std::optional<std::uint32_t> first = space.nodeOf(from), last = space.nodeOf(to);
+  if (!first || !last) return std::nullopt;
+  return walkInParts(space, from, *first, to, *last, deadline, cancellation);
 }
 
 }  // namespace freespace

@@ -28,4 +28,12 @@ std::optional<RoutedPath> routePath(const FreeSpace& space, const Pose2& from, c
                                     std::chrono::steady_clock::time_point deadline,
                                     const Cancellation& cancellation = {});
 
+/// routePath's walk in parts alone: none where routePath walks the route whole (one
+/// core, a route shorter than four nodes a part, no junction found, a part's walk
+/// failed). While another call has the helper threads (onEveryThread), the parts are
+/// walked one after the other.
+std::optional<RoutedPath> routePathInParts(const FreeSpace& space, const Pose2& from, const Pose2& to,
+                                           std::chrono::steady_clock::time_point deadline,
+                                           const Cancellation& cancellation = {});
+
 }  // namespace freespace

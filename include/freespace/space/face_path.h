@@ -74,10 +74,10 @@ struct BoundaryPoint {
 BoundaryPoint nearestOnBoundary(const SliceFace& face, const std::array<double, 2>& point);
 
 /// nearestOnBoundary, certifiedClearanceAlong and liesInside (below) for many points
-/// of one face: its loops' edges in an R-tree
-/// (Boost.Geometry) when they are many (a face of OMPL.app's Maze_planar has 685,
-/// where a walk asks thousands of points), each edge in turn otherwise (as fast for a
-/// hundred, and nothing to build). Keeps a reference to the face.
+/// of one face: its loops' edges in an R-tree (Boost.Geometry) when they are many (a
+/// face of OMPL.app's Maze_planar has 685, where a walk asks thousands of points),
+/// each edge in turn otherwise (nothing to build, where a walk asks too few points to
+/// repay a tree). Keeps a reference to the face.
 class BoundaryDistances {
  public:
   explicit BoundaryDistances(const SliceFace& face);
@@ -96,6 +96,8 @@ class BoundaryDistances {
  private:
   struct Impl;
   struct EdgesMeeting;
+  /// Far more than the rounding of a distance between the face's edges and a point.
+  double rounding(const std::array<double, 2>& point) const;
   const SliceFace& face_;
   std::unique_ptr<Impl> impl_;  // null: few edges
 };
