@@ -430,41 +430,26 @@ std::optional<ClearanceAnchor> ClearanceBoxes::contactSegment(const Clearance& c
                          {contacts[1][0] - contacts[0][0], contacts[1][1] - contacts[0][1]}};
 }
 
-namespace {
-
-/// What an anchor's bound over a box adds to its distance in (x, y): the turn from
-/// the anchor's angle to the farthest of the box's round the circle (half a turn when
-/// the box's range holds the opposite angle), padded, and the bound's rounding.
-struct TurnAndRounding {
-  double turn, rounding;
-};
-
-TurnAndRounding turnAndRounding(const ClearanceAnchor& anchor, const ClearanceBox& box) {
+CornerValues ClearanceBoxes::cornerBounds(const ClearanceAnchor& anchor, const ClearanceBox& box) const {
+  // Along theta, the farthest point of the box's range from the anchor's angle round
+  // the circle: half a turn when the range holds the opposite angle.
   const double opposite = anchor.at[2] > 0 ? anchor.at[2] - M_PI : anchor.at[2] + M_PI;
   double turn = M_PI;
   if (opposite < box.low[2] || opposite > box.high[2]) {
     turn = std::max(turnBetween(anchor.at[2], box.low[2]), turnBetween(anchor.at[2], box.high[2]));
   }
+  // A blocked anchor (upper < 0) bounds the slice at its angle by the signed
+  // clearance's Lipschitz bound, but only down to 0: across angles only the free side
+  // is Lipschitz (docs/design.md section 7).
   const double rounding = 1e-13 * (1 + std::fabs(anchor.upper) + std::fabs(anchor.at[0]) + std::fabs(anchor.at[1]) +
                                    std::fabs(anchor.along[0]) + std::fabs(anchor.along[1]));
-  return {turn * (1 + 1e-12) + 1e-15, rounding};
-}
-
-bool isSegment(const ClearanceAnchor& anchor) { return anchor.along[0] != 0 || anchor.along[1] != 0; }
-
-}  // namespace
-
-CornerValues ClearanceBoxes::cornerBounds(const ClearanceAnchor& anchor, const ClearanceBox& box) const {
-  const auto [paddedTurn, rounding] = turnAndRounding(anchor, box);
-  if (isSegment(anchor)) {
+  const double paddedTurn = turn * (1 + 1e-12) + 1e-15;
+  if (anchor.along[0] != 0 || anchor.along[1] != 0) {
     // A contact's segment: clearance at most 0 but for its rounding, in `upper`.
     CornerValues values = segmentBounds(anchor, box, paddedTurn);
     for (double& value : values) value = anchor.upper + value * (1 + 1e-12) + rounding;
     return values;
   }
-  // A blocked anchor (upper < 0) bounds the slice at its angle by the signed
-  // clearance's Lipschitz bound, but only down to 0: across angles only the free side
-  // is Lipschitz (docs/design.md section 7).
   CornerValues values{};
   int corner = 0;
   for (const double x : {box.low[0], box.high[0]}) {
@@ -482,98 +467,31 @@ double ClearanceBoxes::upperBoundFrom(const ClearanceAnchor& anchor, const Clear
   return *std::max_element(values.begin(), values.end());
 }
 
-double ClearanceBoxes::leastUpperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const {
-  // The bound at the box's centre: the distance to a point or a segment is convex, so
-  // at most the most of the corners'; the turn's term as at the corners (for a
-  // segment, with the lever nearest 0 along it).
-  const auto [paddedTurn, rounding] = turnAndRounding(anchor, box);
-  const Pose2 middle = centre(box);
-  const double dx = middle.x - anchor.at[0], dy = middle.y - anchor.at[1];
-  double least;
-  if (isSegment(anchor)) {
-    const double length2 = anchor.along[0] * anchor.along[0] + anchor.along[1] * anchor.along[1];
-    const double t = std::clamp((dx * anchor.along[0] + dy * anchor.along[1]) / length2, 0.0, 1.0);
-    const double apart = std::hypot(dx - t * anchor.along[0], dy - t * anchor.along[1]);
-    const double leverLength2 =
-        anchor.contactAlong[0] * anchor.contactAlong[0] + anchor.contactAlong[1] * anchor.contactAlong[1];
-    const double s = leverLength2 > 0 ? std::clamp(-(anchor.contactFrom[0] * anchor.contactAlong[0] +
-                                                     anchor.contactFrom[1] * anchor.contactAlong[1]) /
-                                                       leverLength2,
-                                                   0.0, 1.0)
-                                      : 0.0;
-    const double leastLever = std::hypot(anchor.contactFrom[0] + s * anchor.contactAlong[0],
-                                         anchor.contactFrom[1] + s * anchor.contactAlong[1]);
-    least = anchor.upper + (apart + leastLever * paddedTurn) + rounding;
-  } else {
-    least = std::max(0.0, anchor.upper + std::hypot(dx, dy)) + anchor.lever * paddedTurn + rounding;
-  }
-  // Rounded down by far more than its rounding (relative to the coordinates for the
-  // differences, to the values for the sums).
-  const double coordinates = std::fabs(middle.x) + std::fabs(middle.y) + std::fabs(anchor.at[0]) +
-                             std::fabs(anchor.at[1]) + std::fabs(anchor.along[0]) + std::fabs(anchor.along[1]);
-  return least - 1e-9 * (std::fabs(least) + std::fabs(anchor.upper)) - 1e-12 * coordinates;
-}
-
 void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates,
                            BoundScratch& scratch) const {
   constexpr std::size_t kAnchorsKept = 6;
   std::vector<CornerValues>& corners = scratch.corners;
   std::vector<std::pair<double, std::uint32_t>>& bounds = scratch.bounds;
-  std::vector<std::pair<double, std::uint32_t>>& least = scratch.least;
-  corners.assign(candidates.size(), CornerValues{});
+  corners.clear();
   bounds.clear();
-  least.clear();
-  // Bounds are made the least possible first, until the kAnchorsKept-th best made
-  // lies below every least possible bound left: those cannot be among the best (a
-  // quarter of the cost for most candidates, where a box's neighbours bring dozens).
-  for (std::uint32_t k = 0; k < candidates.size(); ++k) least.push_back({leastUpperBoundFrom(*candidates[k], box), k});
-  // The best distinct ones (halves share their parent's contact segments: a copy has
-  // the least possible bound of the one it copies, so it comes among those of equal
-  // least possible bounds, and takes its corner bounds).
+  for (std::uint32_t k = 0; k < candidates.size(); ++k) {
+    corners.push_back(cornerBounds(*candidates[k], box));
+    bounds.push_back({*std::max_element(corners.back().begin(), corners.back().end()), k});
+  }
+  // The best distinct ones (halves share their parent's contact segments), sorted a
+  // few more at a time while equal ones fill the places.
   const auto same = [](const ClearanceAnchor& a, const ClearanceAnchor& b) {
     return a.at == b.at && a.along == b.along && a.upper == b.upper;
   };
-  const auto copied = [&](std::size_t i) -> std::optional<std::uint32_t> {
-    const ClearanceAnchor& anchor = *candidates[least[i].second];
-    for (std::size_t j = i; j > 0 && least[j - 1].first == least[i].first; --j) {
-      const ClearanceAnchor& other = *candidates[least[j - 1].second];
-      if (same(anchor, other) && anchor.lever == other.lever && anchor.contactFrom == other.contactFrom &&
-          anchor.contactAlong == other.contactAlong) {
-        return least[j - 1].second;
-      }
-    }
-    return std::nullopt;
-  };
-  std::array<double, kAnchorsKept> bestMade;  // the least bounds made of distinct ones, ascending
-  std::size_t made = 0;
-  // Taken least first, sorted a few at a time (most are never taken): heaps and
-  // partial sorts took longer than the corner bounds they spared.
-  constexpr std::size_t kTakenAtOnce = 16;
-  for (std::size_t i = 0, sorted = 0; i < least.size(); ++i) {
-    if (i == sorted) {
-      sorted = std::min(least.size(), i + kTakenAtOnce);
-      const auto from = least.begin() + static_cast<std::ptrdiff_t>(i);
-      const auto to = least.begin() + static_cast<std::ptrdiff_t>(sorted);
-      if (to != least.end()) std::nth_element(from, to, least.end());
-      std::sort(from, to);
-    }
-    const auto [possible, k] = least[i];
-    if (made == kAnchorsKept && possible > bestMade.back()) break;
-    const std::optional<std::uint32_t> original = copied(i);
-    const bool copy = original.has_value();
-    corners[k] = copy ? corners[*original] : cornerBounds(*candidates[k], box);
-    const double value = *std::max_element(corners[k].begin(), corners[k].end());
-    bounds.push_back({value, k});
-    if (copy || (made == kAnchorsKept && value >= bestMade.back())) continue;
-    std::size_t at = made < kAnchorsKept ? made++ : kAnchorsKept - 1;
-    for (bestMade[at] = value; at > 0 && bestMade[at - 1] > bestMade[at]; --at)
-      std::swap(bestMade[at - 1], bestMade[at]);
-  }
-  std::sort(bounds.begin(), bounds.end());
   box.anchors.clear();
   box.anchors.reserve(std::min(kAnchorsKept, bounds.size()));
   std::array<std::uint32_t, kAnchorsKept> kept{};
-  for (std::size_t k = 0; k < bounds.size() && box.anchors.size() < kAnchorsKept; ++k) {
+  for (std::size_t k = 0, sorted = 0; k < bounds.size() && box.anchors.size() < kAnchorsKept; ++k) {
+    if (k == sorted) {
+      sorted = std::min(bounds.size(), k + 2 * kAnchorsKept);
+      std::partial_sort(bounds.begin() + static_cast<std::ptrdiff_t>(k),
+                        bounds.begin() + static_cast<std::ptrdiff_t>(sorted), bounds.end());
+    }
     const ClearanceAnchor& candidate = *candidates[bounds[k].second];
     if (!box.anchors.empty() && same(box.anchors.back(), candidate)) continue;
     kept[box.anchors.size()] = bounds[k].second;

@@ -205,16 +205,11 @@ class ClearanceBoxes {
   std::array<double, 4> cornerBounds(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
   /// The bound an anchor gives on the clearance in a box.
   double upperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
-  /// At most upperBoundFrom(anchor, box), for a quarter of its cost: the anchor's
-  /// bound at the box's centre (at most the most of its corners'), a segment's turn
-  /// taken with its lever nearest 0.
-  double leastUpperBoundFrom(const ClearanceAnchor& anchor, const ClearanceBox& box) const;
-  /// Room bound() reuses between calls: the candidates' bounds at a box's corners, the
-  /// most of each with its candidate, and their least possible bounds with theirs.
+  /// Room bound() reuses between calls: the candidates' bounds at a box's corners, and
+  /// the most of each with its candidate.
   struct BoundScratch {
     std::vector<std::array<double, 4>> corners;
     std::vector<std::pair<double, std::uint32_t>> bounds;
-    std::vector<std::pair<double, std::uint32_t>> least;
   };
   /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.
   void bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates, BoundScratch& scratch) const;
