@@ -320,10 +320,6 @@ double leastBoxGap(const Point2& a, const Point2& b, const Point2& c, const Poin
   return sqrt(squared).lower();
 }
 
-}  // namespace
-
-namespace {
-
 /// Calls visit(c, d) for each edge of the face's loops.
 struct EveryEdge {
   const SliceFace& face;
