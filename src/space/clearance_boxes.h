@@ -45,7 +45,7 @@ struct ClearanceBox {
   /// and that contact's whole patch at its angle, then the distinct anchors that bound
   /// it best among its own, its siblings', its parent's neighbours' (their own) and its
   /// parent's (upper is the least of their bounds and of the best one's mixes with
-  /// each other: ClearanceBoxes::bound); both forgotten once it is split.
+  /// each other: ClearanceBoxes::bound); both forgotten once it is split or dropped.
   std::vector<ClearanceAnchor> own, anchors;
   /// Once split, its parts are boxes firstChild on: halved along the axes of
   /// `splitAxes` (bit k for axis k), 2 to the number of those axes of them, part i
@@ -214,7 +214,7 @@ class ClearanceBoxes {
   /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.
   void bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates, BoundScratch& scratch) const;
   bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
-  /// Marks a box dropped (and logs it for the searches).
+  /// Marks a box dropped (and logs it for the searches), and forgets its anchors.
   void drop(std::uint32_t index);
   /// Frees a split box's anchors: once its halves are bounded, nothing reads them.
   void forgetAnchors(std::uint32_t index);
