@@ -59,7 +59,8 @@ struct ClearanceBox {
   std::optional<std::uint32_t> centreCell;
   /// No patch of the free space's boundary meets the box (as when its lower bound is
   /// above 0): all of it lies where its centre does (blocked, or in centreCell). Known
-  /// once measured for a box blocked at its centre; for one free there, false until
+  /// once bounded for a box blocked at its centre, unless its bound lies below the
+  /// level boxes are dropped below (see settleBlocked); for one free there, false until
   /// dropOutside asks it of another cell than the box's.
   bool unbroken = false;
   /// Boxes it touches (closed boxes, theta wrapping around); some may be split since.
@@ -216,7 +217,8 @@ class ClearanceBoxes {
   bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
   /// Marks a box dropped (and logs it for the searches), and forgets its anchors.
   void drop(std::uint32_t index);
-  /// Frees a split box's anchors: once its halves are bounded, nothing reads them.
+  /// Frees a box's anchors: once it is split and its halves bounded, or dropped,
+  /// nothing reads them.
   void forgetAnchors(std::uint32_t index);
   /// Drops the boxes from `seen` on, neither split nor dropped, that `droppable`
   /// accepts; `seen` becomes the number of boxes (dropBelow, dropOutside).
@@ -226,6 +228,10 @@ class ClearanceBoxes {
   /// halved or dropped since its last, every box whose chain passed them, and the
   /// boxes added since; all for a new one.
   std::vector<char> toReset(const UpperSearch& search) const;
+  /// Looks whether a box blocked at its centre, once bounded, is unbroken (then its
+  /// upper bound falls to 0), unless its bound lies below the level dropBelow last
+  /// dropped by: it goes either way. It writes that box alone.
+  void settleBlocked(ClearanceBox& box) const;
   /// Whether a sub-face that bounds a free cell may meet the box: the patches whose
   /// boxes meet it (their boxes hold their segments), and of each, its slabs with such
   /// sub-faces, each over its own part of the box's angles (slabMayMeet).
