@@ -482,16 +482,22 @@ void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceA
   std::vector<std::pair<double, std::uint32_t>>& bounds = scratch.bounds;
   corners.clear();
   bounds.clear();
+  box.anchors.clear();
   for (std::uint32_t k = 0; k < candidates.size(); ++k) {
     corners.push_back(cornerBounds(*candidates[k], box));
     bounds.push_back({*std::max_element(corners.back().begin(), corners.back().end()), k});
+    // Below the level boxes are dropped below, the box is dropped (with its anchors):
+    // its least bound changes nothing.
+    if (bounds.back().first < droppedBelow_) {
+      box.upper = std::min(box.upper, bounds.back().first);
+      return;
+    }
   }
   // The best distinct ones (halves share their parent's contact segments), sorted a
   // few more at a time while equal ones fill the places.
   const auto same = [](const ClearanceAnchor& a, const ClearanceAnchor& b) {
     return a.at == b.at && a.along == b.along && a.upper == b.upper;
   };
-  box.anchors.clear();
   box.anchors.reserve(std::min(kAnchorsKept, bounds.size()));
   std::array<std::uint32_t, kAnchorsKept> kept{};
   for (std::size_t k = 0, sorted = 0; k < bounds.size() && box.anchors.size() < kAnchorsKept; ++k) {

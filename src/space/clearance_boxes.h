@@ -212,7 +212,9 @@ class ClearanceBoxes {
     std::vector<std::array<double, 4>> corners;
     std::vector<std::pair<double, std::uint32_t>> bounds;
   };
-  /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound.
+  /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound;
+  /// none, and the first bound found below the level dropBelow last dropped by, when
+  /// there is one (the box is dropped next).
   void bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates, BoundScratch& scratch) const;
   bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
   /// Marks a box dropped (and logs it for the searches), and forgets its anchors.
