@@ -258,7 +258,8 @@ ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 
                 edgesBetween(-M_PI, M_PI, countTheta)};
   // Column by column in theta (on every core), each box's contact looked for near its
   // neighbour's in the column.
-  boxes_.resize(static_cast<std::size_t>(countX) * countY * countTheta);
+  const std::size_t count = static_cast<std::size_t>(countX) * countY * countTheta;
+  for (std::size_t box = 0; box < count; ++box) boxes_.push_back({});
   const auto measureColumn = [&](std::size_t column) {
     const int i = static_cast<int>(column) / countY, j = static_cast<int>(column) % countY;
     for (int k = 0; k < countTheta; ++k) {
@@ -293,7 +294,8 @@ ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 
   }
   std::vector<const ClearanceAnchor*> candidates;
   BoundScratch scratch;
-  for (ClearanceBox& box : boxes_) {
+  for (std::size_t index = 0; index < boxes_.size(); ++index) {
+    ClearanceBox& box = boxes_[index];
     candidates.clear();
     addAnchors(box.own, candidates);
     for (std::uint32_t neighbour : box.neighbours) addAnchors(boxes_[neighbour].own, candidates);
@@ -587,6 +589,11 @@ bool ClearanceBoxes::slabMayMeet(std::uint32_t patch, const FreeSlab& free, cons
          slabMayMeet(patch, free, {middle, angles[1]}, query, halvings - 1);
 }
 
+void ClearanceBoxes::BoxStore::push_back(ClearanceBox box) {
+  if ((size_ & kChunkMask) == 0) chunks_.push_back(std::make_unique<ClearanceBox[]>(kChunkMask + 1));
+  (*this)[size_++] = std::move(box);
+}
+
 bool ClearanceBoxes::touch(const ClearanceBox& a, const ClearanceBox& b) const {
   if (!closedOverlap(a.low[0], a.high[0], b.low[0], b.high[0])) return false;
   if (!closedOverlap(a.low[1], a.high[1], b.low[1], b.high[1])) return false;
@@ -770,8 +777,8 @@ using BoxQueue = std::priority_queue<BoxReached>;
 /// bottleneck, where every box ties, chains keep to the widest boxes instead of
 /// wandering along walls): each box's bottleneck and predecessor, final (and marked
 /// so) for the boxes reached before.
-template <typename BoundOf, typename Usable, typename Stop>
-void widestChains(const std::vector<ClearanceBox>& boxes, BoxQueue& open, BoundOf boundOf, Usable usable, Stop stop,
+template <typename Boxes, typename BoundOf, typename Usable, typename Stop>
+void widestChains(const Boxes& boxes, BoxQueue& open, BoundOf boundOf, Usable usable, Stop stop,
                   std::vector<double>& widest, std::vector<std::uint32_t>& previous, std::vector<char>& final) {
   while (!open.empty()) {
     const auto [width, own, index] = open.top();
