@@ -650,6 +650,7 @@ std::size_t ClearanceBoxes::splitEach(const std::vector<std::uint32_t>& boxes, c
 std::vector<ClearanceBox> ClearanceBoxes::halves(std::uint32_t index, std::uint8_t axes) const {
   const ClearanceBox& box = boxes_[index];
   std::vector<ClearanceBox> parts;
+  parts.reserve(partCount(axes));
   for (std::uint32_t part = 0; part < partCount(axes); ++part) {
     std::array<double, 3> low = box.low, high = box.high;
     for (int axis = 0, bit = 0; axis < 3; ++axis) {
