@@ -292,16 +292,17 @@ ClearanceBoxes::ClearanceBoxes(const FreeSpace& space, const std::array<double, 
       }
     }
   }
-  std::vector<const ClearanceAnchor*> candidates;
-  BoundScratch scratch;
-  for (std::size_t index = 0; index < boxes_.size(); ++index) {
+  // Each box bounded from its own anchors and its neighbours' (on every core: a box's
+  // bound is written to it alone).
+  onEveryCore(boxes_.size(), always, [&](std::size_t index) {
     ClearanceBox& box = boxes_[index];
-    candidates.clear();
+    std::vector<const ClearanceAnchor*> candidates;
     addAnchors(box.own, candidates);
     for (std::uint32_t neighbour : box.neighbours) addAnchors(boxes_[neighbour].own, candidates);
+    BoundScratch scratch;
     bound(box, candidates, scratch);
-  }
-  onEveryCore(boxes_.size(), always, [&](std::size_t index) { settleBlocked(boxes_[index]); });
+    settleBlocked(box);
+  });
 }
 
 double ClearanceBoxes::moveBetween(const ClearanceAnchor& centre, const std::array<double, 3>& low,
