@@ -815,12 +815,22 @@ ClearanceBoxes::Chain chainAlong(const std::vector<double>& widest, const std::v
 
 ClearanceBoxes::Chain ClearanceBoxes::widestChain(std::uint32_t from, std::uint32_t to, Bound bound,
                                                   double upperAtLeast, std::optional<std::uint32_t> centreCell) const {
+  ChainRoom room;
+  return widestChain(from, to, bound, upperAtLeast, centreCell, room);
+}
+
+ClearanceBoxes::Chain ClearanceBoxes::widestChain(std::uint32_t from, std::uint32_t to, Bound bound,
+                                                  double upperAtLeast, std::optional<std::uint32_t> centreCell,
+                                                  ChainRoom& room) const {
   const auto boundOf = [&](std::uint32_t index) {
     return bound == Bound::Lower ? boxes_[index].lower : boxes_[index].upper;
   };
-  std::vector<double> widest(boxes_.size(), -HUGE_VAL);
-  std::vector<std::uint32_t> previous(boxes_.size(), UINT32_MAX);
-  std::vector<char> final(boxes_.size(), 0);
+  std::vector<double>& widest = room.widest;
+  std::vector<std::uint32_t>& previous = room.previous;
+  std::vector<char>& final = room.final;
+  widest.assign(boxes_.size(), -HUGE_VAL);
+  previous.assign(boxes_.size(), UINT32_MAX);
+  final.assign(boxes_.size(), 0);
   widest[from] = boundOf(from);
   BoxQueue open;
   open.push({widest[from], widest[from], from});
@@ -840,10 +850,11 @@ std::vector<double> ClearanceBoxes::widestUpperFrom(std::uint32_t from, std::uin
   return widestUpperFrom(from, to, ratio, cap, search);
 }
 
-std::vector<char> ClearanceBoxes::toReset(const UpperSearch& search) const {
+void ClearanceBoxes::markReset(UpperSearch& search) const {
   const std::size_t known = search.widest.size();
-  std::vector<char> reset(boxes_.size(), 1);
-  if (search.from == UINT32_MAX) return reset;
+  std::vector<char>& reset = search.reset;
+  reset.assign(boxes_.size(), 1);
+  if (search.from == UINT32_MAX) return;
   std::fill(reset.begin(), reset.begin() + static_cast<std::ptrdiff_t>(known), 0);
   // Boxes added since the last search have no place in its tree.
   std::vector<std::uint32_t> stack;
@@ -852,33 +863,37 @@ std::vector<char> ClearanceBoxes::toReset(const UpperSearch& search) const {
   }
   for (std::uint32_t index : stack) reset[index] = 1;
   // And every box whose chain passes one of those: down the tree of predecessors.
-  std::vector<std::uint32_t> firstChild(known + 1, 0);
+  std::vector<std::uint32_t>& firstSuccessor = search.firstSuccessor;
+  firstSuccessor.assign(known + 1, 0);
   for (std::size_t index = 0; index < known; ++index) {
-    if (search.previous[index] != UINT32_MAX) ++firstChild[search.previous[index] + 1];
+    if (search.previous[index] != UINT32_MAX) ++firstSuccessor[search.previous[index] + 1];
   }
-  for (std::size_t index = 0; index < known; ++index) firstChild[index + 1] += firstChild[index];
-  std::vector<std::uint32_t> children(firstChild[known]), next(firstChild.begin(), firstChild.end() - 1);
+  for (std::size_t index = 0; index < known; ++index) firstSuccessor[index + 1] += firstSuccessor[index];
+  std::vector<std::uint32_t>& successors = search.successors;
+  std::vector<std::uint32_t>& nextSuccessor = search.nextSuccessor;
+  successors.resize(firstSuccessor[known]);
+  nextSuccessor.assign(firstSuccessor.begin(), firstSuccessor.end() - 1);
   for (std::size_t index = 0; index < known; ++index) {
-    if (search.previous[index] != UINT32_MAX) children[next[search.previous[index]]++] = index;
+    if (search.previous[index] != UINT32_MAX) successors[nextSuccessor[search.previous[index]]++] = index;
   }
   while (!stack.empty()) {
     const std::uint32_t parent = stack.back();
     stack.pop_back();
-    for (std::uint32_t k = firstChild[parent]; k < firstChild[parent + 1]; ++k) {
-      if (!reset[children[k]]) {
-        reset[children[k]] = 1;
-        stack.push_back(children[k]);
+    for (std::uint32_t k = firstSuccessor[parent]; k < firstSuccessor[parent + 1]; ++k) {
+      if (!reset[successors[k]]) {
+        reset[successors[k]] = 1;
+        stack.push_back(successors[k]);
       }
     }
   }
-  return reset;
 }
 
 const std::vector<double>& ClearanceBoxes::widestUpperFrom(std::uint32_t from, std::uint32_t to, double ratio,
                                                            double cap, UpperSearch& search) const {
   const bool fresh = search.from != from;
   if (fresh) search = UpperSearch{};
-  const std::vector<char> reset = toReset(search);
+  markReset(search);
+  const std::vector<char>& reset = search.reset;
   search.from = from;
   search.changesSeen = changed_.size();
   search.widest.resize(boxes_.size(), -HUGE_VAL);

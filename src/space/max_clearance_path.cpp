@@ -388,6 +388,7 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
   ClearanceBoxes::Chain lowerChain;
   // Each round's search goes on from the last round's (ClearanceBoxes::UpperSearch).
   ClearanceBoxes::UpperSearch startSearch;
+  ClearanceBoxes::ChainRoom lowerRoom;
   double raisedChain = 0;  // the bottleneck of the last chain raised
   for (;;) {
     options.cancellation.check();
@@ -405,7 +406,7 @@ MaxClearancePath maxClearancePath(const FreeSpace& space, const Pose2& start, co
     }
     path.passage.upper = std::min({fromStart[to], passageStartUpper, passageEndUpper});
     const double target = options.clearanceRatio * path.passage.upper;
-    lowerChain = boxes.widestChain(from, to, ClearanceBoxes::Bound::Lower, target, path.startCell);
+    lowerChain = boxes.widestChain(from, to, ClearanceBoxes::Bound::Lower, target, path.startCell, lowerRoom);
     if (lowerChain.bottleneck > 0 && path.secondsToFirstPath == 0) path.secondsToFirstPath = secondsSince(began);
     // A chain wider than the best path is raised (its bounds lose about a box's size
     // where the path's motions lose little): the path may then carry c_lo.
