@@ -38,8 +38,28 @@ struct AngleArc {
 /// A box of configurations [low, high] in (x, y, theta), with bounds on the clearance
 /// at every configuration in it.
 struct ClearanceBox {
-  std::array<double, 3> low, high;
+  // First what the searches over chains read of each box they pass, in one cache line
+  // at most two: those reads were most of OMPL.app's Maze_planar searches.
   double lower = 0, upper = 0;
+  bool split = false;
+  /// Never useful again: its clearance is below a bottleneck already reached.
+  bool dropped = false;
+  std::uint8_t splitAxes = 0;
+  /// No patch of the free space's boundary meets the box (as when its lower bound is
+  /// above 0): all of it lies where its centre does (blocked, or in centreCell). Known
+  /// once bounded for a box blocked at its centre, unless its bound lies below the
+  /// level boxes are dropped below (see settleBlocked); for one free there, false until
+  /// dropOutside asks it of another cell than the box's.
+  bool unbroken = false;
+  /// Once split, its parts are boxes firstChild on: halved along the axes of
+  /// `splitAxes` (bit k for axis k), 2 to the number of those axes of them, part i
+  /// on the upper side of the j-th of those axes when bit j of i is set.
+  std::uint32_t firstChild = 0;
+  /// The free cell holding the box's centre (none when it is blocked).
+  std::optional<std::uint32_t> centreCell;
+  /// Boxes it touches (closed boxes, theta wrapping around); some may be split since.
+  std::vector<std::uint32_t> neighbours;
+  std::array<double, 3> low, high;
   /// The certified lower bound on its centre's clearance.
   double centreLower = -HUGE_VAL;
   /// Its centre, the contact its clearance reaches there (the witness, clearance 0)
@@ -48,24 +68,6 @@ struct ClearanceBox {
   /// parent's (upper is the least of their bounds and of the best one's mixes with
   /// each other: ClearanceBoxes::bound); both forgotten once it is split or dropped.
   std::vector<ClearanceAnchor> own, anchors;
-  /// Once split, its parts are boxes firstChild on: halved along the axes of
-  /// `splitAxes` (bit k for axis k), 2 to the number of those axes of them, part i
-  /// on the upper side of the j-th of those axes when bit j of i is set.
-  std::uint32_t firstChild = 0;
-  bool split = false;
-  std::uint8_t splitAxes = 0;
-  /// Never useful again: its clearance is below a bottleneck already reached.
-  bool dropped = false;
-  /// The free cell holding the box's centre (none when it is blocked).
-  std::optional<std::uint32_t> centreCell;
-  /// No patch of the free space's boundary meets the box (as when its lower bound is
-  /// above 0): all of it lies where its centre does (blocked, or in centreCell). Known
-  /// once bounded for a box blocked at its centre, unless its bound lies below the
-  /// level boxes are dropped below (see settleBlocked); for one free there, false until
-  /// dropOutside asks it of another cell than the box's.
-  bool unbroken = false;
-  /// Boxes it touches (closed boxes, theta wrapping around); some may be split since.
-  std::vector<std::uint32_t> neighbours;
 };
 
 /// The free space's clearance over a domain of (x, y, theta) bounded by boxes that are
