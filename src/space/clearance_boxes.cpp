@@ -372,8 +372,8 @@ ClearanceBox ClearanceBoxes::measured(const std::array<double, 3>& low, const st
 }
 
 void ClearanceBoxes::settleBlocked(ClearanceBox& box) const {
-  // Below the level, the box is dropped whether or not a boundary meets it (42,000
-  // tests on the maze otherwise, 40% of them unbroken).
+  // Below the level, the next drop takes the box whether or not a boundary meets it
+  // (42,000 tests on the maze otherwise, 40% of them unbroken).
   if (box.centreCell || box.unbroken || box.upper < droppedBelow_) return;
   box.unbroken = !meetsFreeBoundary(box);
   // Blocked throughout: no clearance above 0 anywhere in it (the Lipschitz bound
@@ -489,8 +489,8 @@ void ClearanceBoxes::bound(ClearanceBox& box, const std::vector<const ClearanceA
   for (std::uint32_t k = 0; k < candidates.size(); ++k) {
     corners.push_back(cornerBounds(*candidates[k], box));
     bounds.push_back({*std::max_element(corners.back().begin(), corners.back().end()), k});
-    // Below the level boxes are dropped below, the box is dropped (with its anchors):
-    // its least bound changes nothing.
+    // Below the level boxes are dropped below, the next drop takes the box (the level
+    // only rises in a path query): its least bound changes nothing.
     if (bounds.back().first < droppedBelow_) {
       box.upper = std::min(box.upper, bounds.back().first);
       return;

@@ -66,7 +66,8 @@ struct ClearanceBox {
   /// and that contact's whole patch at its angle, then the distinct anchors that bound
   /// it best among its own, its siblings', its parent's neighbours' (their own) and its
   /// parent's (upper is the least of their bounds and of the best one's mixes with
-  /// each other: ClearanceBoxes::bound); both forgotten once it is split or dropped.
+  /// each other: ClearanceBoxes::bound); both forgotten once it is split or dropped,
+  /// and no anchors kept by a box bounded below the drop level (see dropBelow).
   std::vector<ClearanceAnchor> own, anchors;
 };
 
@@ -125,7 +126,7 @@ class ClearanceBoxes {
     std::vector<char> final;
     std::size_t changesSeen = 0;
     /// Room the next search reuses: the boxes it starts again, and the tree of
-    /// predecessors turned into each box's successors (ClearanceBoxes::toReset).
+    /// predecessors turned into each box's successors (ClearanceBoxes::markReset).
     std::vector<char> reset;
     std::vector<std::uint32_t> firstSuccessor, successors, nextSuccessor;
   };
@@ -167,7 +168,10 @@ class ClearanceBoxes {
   std::uint8_t axesToSplit(std::uint32_t box) const;
   /// Drops every box whose upper bound is below `level`. A box's bounds and cell never
   /// change once bounded, so a call looks only at the boxes added since the last one
-  /// (at every box when the level rose).
+  /// (at every box when the level rose). The level is meant to rise only (a path
+  /// query's: the best path's clearance): the boxes halved until the next call are
+  /// bounded only as far as it (see bound and settleBlocked). Should a lower level
+  /// come, those below the last one stay live with certified, looser, bounds.
   void dropBelow(double level);
   /// Drops every box that lies in another free cell than `cell`: unbroken (free
   /// throughout or not, all of it in its centre's cell), its centre in another (at the
@@ -232,7 +236,7 @@ class ClearanceBoxes {
   };
   /// Keeps the anchors (of `candidates`) that bound the box best, and its upper bound;
   /// none, and the first bound found below the level dropBelow last dropped by, when
-  /// there is one (the box is dropped next).
+  /// there is one (the next call drops the box, unless its level is lower).
   void bound(ClearanceBox& box, const std::vector<const ClearanceAnchor*>& candidates, BoundScratch& scratch) const;
   bool touch(const ClearanceBox& a, const ClearanceBox& b) const;
   /// Marks a box dropped (and logs it for the searches), and forgets its anchors.
@@ -250,7 +254,8 @@ class ClearanceBoxes {
   void markReset(UpperSearch& search) const;
   /// Looks whether a box blocked at its centre, once bounded, is unbroken (then its
   /// upper bound falls to 0), unless its bound lies below the level dropBelow last
-  /// dropped by: it goes either way. It writes that box alone.
+  /// dropped by: the next call drops it either way (unless its level is lower). It
+  /// writes that box alone.
   void settleBlocked(ClearanceBox& box) const;
   /// Whether a sub-face that bounds a free cell may meet the box: the patches whose
   /// boxes meet it (their boxes hold their segments), and of each, its slabs with such
