@@ -10,7 +10,7 @@ packages=(
   libeigen3-dev
   libboost-dev libboost-serialization-dev libboost-graph-dev libboost-program-options-dev
   libcgal-dev
-  libassimp-dev libpugixml-dev zlib1g-dev
+  libassimp-dev libpugixml-dev libxxhash-dev
   libgmp-dev libmpfr-dev libmpfi-dev
   libcli11-dev nlohmann-json3-dev
   libgtest-dev libgmock-dev libbenchmark-dev librapidcheck-dev

@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // The saved-space target's input is a payload (tests/fuzz/fuzz_saved_space.cpp): the
-// file it stands for, with the header line, the length and a valid CRC-32.
+// file it stands for, with the header line, the length and a valid checksum.
 std::string savedSpaceOf(const fs::path& payloadFile, const TempDir& dir) {
   return dir.write(payloadFile.filename().string() + ".fspace",
                    savedSpaceFileAround(freespace::testing::readWholeFile(payloadFile.string())));

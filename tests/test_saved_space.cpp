@@ -55,7 +55,8 @@ std::string loadError(const std::string& path) {
   return {};
 }
 
-std::size_t payloadStartOf(const std::string& bytes) { return bytes.find('\n') + 1 + 12; }  // header line, size, CRC-32
+/// Where the payload starts: after the header line, its size and its checksum.
+std::size_t payloadStartOf(const std::string& bytes) { return bytes.find('\n') + 1 + 16; }
 
 /// The bytes of builtSpace() saved in `dir`.
 std::string savedBytes(const TempDir& dir) {
@@ -74,7 +75,8 @@ void putUint64(std::string& bytes, std::size_t at, std::uint64_t value) {
 std::size_t firstNumberLength(const std::string& bytes, std::size_t from) {
   const auto littleEndian = [&](std::size_t at, int width) {
     std::uint64_t value = 0;
-    for (int i = 0; i < width; ++i) value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+    for (int i = 0; i < width; ++i)
+      value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
     return value;
   };
   // A text holding a sign byte, then a numerator and a denominator of at least one
@@ -161,7 +163,7 @@ TEST(SavedSpace, BadFilesAreClearErrors) {
   std::string version = bytes;
   version.replace(bytes.find('\n') - 1, 1, "9");
   write(other, version);
-  EXPECT_NE(loadError(other).find("format 9; this build reads format 7"), std::string::npos);
+  EXPECT_NE(loadError(other).find("format 9; this build reads format 8"), std::string::npos);
   write(other, bytes.substr(0, bytes.size() / 2));
   EXPECT_NE(loadError(other).find("damaged"), std::string::npos);
   std::string altered = bytes;
@@ -243,7 +245,8 @@ TEST(SavedSpace, AlteredLengthsAreRefusedWithPlainMessages) {
   int altered = 0;
   for (std::size_t at = payloadStart; at + 8 <= bytes.size() && altered < 300; ++at) {
     std::uint64_t value = 0;
-    for (int i = 0; i < 8; ++i) value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
+    for (int i = 0; i < 8; ++i)
+      value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
     if (value == 0 || value > 100000) continue;
     std::string changed = bytes;
     putUint64(changed, at, value + (std::uint64_t(1) << 26));
@@ -253,7 +256,8 @@ TEST(SavedSpace, AlteredLengthsAreRefusedWithPlainMessages) {
       FreeSpace::load(other);
     } catch (const InputError& error) {
       const std::string problem = error.problem();
-      const bool plain = problem.rfind("damaged: ", 0) == 0 || problem.rfind("inconsistent saved free space at ", 0) == 0;
+      const bool plain =
+          problem.rfind("damaged: ", 0) == 0 || problem.rfind("inconsistent saved free space at ", 0) == 0;
       EXPECT_TRUE(plain) << "at byte " << at << ": " << problem;
       for (const char* libraryText : {"std::", "::_M_", "stream error", "bad_alloc", "basic_string"}) {
         EXPECT_EQ(problem.find(libraryText), std::string::npos) << "at byte " << at << ": " << problem;
@@ -320,6 +324,31 @@ TEST(SavedSpace, ADamagedGraphIsRefusedNamingThePart) {
   }
 }
 
+// Lists of a part that do not fit together (an item's entry missing from one list)
+// are refused naming the part, before any item is built from them.
+TEST(SavedSpace, ListsOfAPartThatDoNotFitAreRefusedNamingThePart) {
+  TempDir dir;
+  const std::string bytes = savedBytes(dir);
+  const std::vector<std::pair<std::function<void(saved::Space&)>, std::string>> cases{
+      {[](saved::Space& space) { space.functions.keyed.pop_back(); }, "the functions"},
+      {[](saved::Space& space) { space.functions.enclosures.pop_back(); }, "the functions"},
+      {[](saved::Space& space) { space.functions.exactEnds.back() += 1; }, "the functions"},
+      {[](saved::Space& space) { space.angles.charts.pop_back(); }, "the angles"},
+      {[](saved::Space& space) { space.angles.charts.back() = 2; }, "an angle"},
+      {[](saved::Space& space) { space.angles.functions.back() = 1 << 30; }, "an angle's function"},
+      {[](saved::Space& space) { space.patches.linePoints.pop_back(); }, "the patches"},
+      {[](saved::Space& space) { space.patches.ranges.arcCounts.back() += 1; }, "an angle set's arcs"},
+      {[](saved::Space& space) { space.patches.ranges.fullCircle.back() = 7; }, "an angle set"},
+      {[](saved::Space& space) { space.curves.ends.pop_back(); }, "the curves"},
+      {[](saved::Space& space) { space.subdivisions.faces.pop_back(); }, "the subdivisions"},
+      {[](saved::Space& space) { space.subdivisions.slabAngles.back() = 1u << 30; }, "an angle's index"},
+  };
+  for (const auto& [alter, part] : cases) {
+    const std::string error = loadError(fileWithSpaceAltered(dir, bytes, alter));
+    EXPECT_EQ(error, "inconsistent saved free space at " + part);
+  }
+}
+
 // A function's exact coefficients are decoded when first needed: a coefficient
 // altered behind a valid checksum (its most significant byte changed, so that it
 // leaves its stored double enclosure) loads with the structure checked, and is refused
@@ -332,10 +361,12 @@ TEST(SavedSpace, AnAlteredExactCoefficientIsRefusedWhenDecoded) {
   EXPECT_NO_THROW(FreeSpace::load(intact, FreeSpace::LoadCheck::Everything));
   bool altered = false;
   const std::string file = fileWithSpaceAltered(dir, bytes, [&](saved::Space& space) {
-    for (saved::Function& function : space.functions) {
-      // The first coefficient: a sign byte, the numerator's 4-byte length, its bytes.
-      if (function.exact.size() < 6 || function.exact[1] == 0) continue;
-      char& mostSignificant = function.exact[5];
+    const saved::Functions& functions = space.functions;
+    for (std::size_t i = 0; i < functions.exactEnds.size(); ++i) {
+      // A function's first coefficient: a sign byte, the numerator's 4-byte length, its bytes.
+      const std::size_t begin = i == 0 ? 0 : functions.exactEnds[i - 1];
+      if (functions.exactEnds[i] - begin < 6 || functions.exact[begin + 1] == 0) continue;
+      char& mostSignificant = space.functions.exact[begin + 5];
       mostSignificant ^= static_cast<char>(mostSignificant == 0x40 ? 0x20 : 0x40);
       altered = true;
       return;
@@ -356,8 +387,7 @@ TEST(SavedSpace, AnAlteredExactCoefficientIsRefusedWhenDecoded) {
 // shells set memory aside for it (a fuzzer's input claimed hundreds of millions).
 TEST(SavedSpace, AFaceCountBeyondTheSlabsIsRefused) {
   TempDir dir;
-  const std::string file = fileWithSpaceAltered(dir, savedBytes(dir), [](saved::Space& space) {
-    space.subdivisions.front().faceCount = 1u << 28;
-  });
+  const std::string file = fileWithSpaceAltered(
+      dir, savedBytes(dir), [](saved::Space& space) { space.subdivisions.faceCounts.front() = 1u << 28; });
   EXPECT_EQ(loadError(file), "inconsistent saved free space at a subdivision's face count");
 }

@@ -5,6 +5,8 @@
 // table of angles (each distinct angle once, by its double enclosure where that
 // isolates it, a rational angle by its t where that is a double) whose functions are
 // stored by the double enclosures of their exact coefficients and those coefficients.
+// Each kind of part is a few lists of numbers for all its items (the archive reads
+// a list of numbers as one block), not a record per item.
 
 #include <cstdint>
 #include <string>
@@ -17,43 +19,51 @@
 
 namespace freespace::saved {
 
-/// A function by the double enclosures of its exact coefficients and, decoded only
-/// when first needed, the exact coefficients themselves.
-struct Function {
-  std::vector<std::uint32_t> key;  // empty: no key
-  std::uint32_t chart0Coefficients = 0;
-  std::vector<double> enclosures;  // lower, upper per coefficient: chart 0's, then chart 1's
-  std::string exact;               // the coefficients as rationals one after another, in the same order
+/// The functions, one after another: the double enclosures of their exact
+/// coefficients and, decoded only when first needed, the exact coefficients
+/// themselves.
+struct Functions {
+  std::vector<std::uint32_t> coefficientCounts;  // per function: chart 0's, chart 1's
+  std::vector<double> enclosures;                // lower, upper per coefficient, in the same order
+  std::vector<std::uint8_t> keyed;               // per function: 1 when it has a key
+  std::vector<std::uint32_t> keys;               // nine per keyed function
+  std::vector<std::uint64_t> exactEnds;          // per function: where its coefficients end in `exact`
+  std::string exact;                             // the coefficients as rationals one after another
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & key & chart0Coefficients & enclosures & exact;
+    archive& coefficientCounts& enclosures& keyed& keys& exactEnds& exact;
   }
 };
 
-struct Angle {
-  std::int32_t function = -1;  // -1: a rational angle
-  std::int32_t chart = 0;
-  /// The root's double enclosure, which isolates it; an exact isolating interval
-  /// (lo, hi) only when it is narrower than the doubles can say (else both empty).
-  /// A rational angle's t in lower and upper when it is a double, else in lo.
-  double lower = 0, upper = 0;
-  std::string lo, hi;
-  std::int32_t index = -1;
+/// The table of angles: each angle's function (-1: a rational angle), chart, place
+/// among the function's roots and root's double enclosure, which isolates it; an
+/// exact isolating interval only where that is narrower than the doubles can say. A
+/// rational angle's t is its enclosure's two ends when it is a double, else its exact
+/// interval's.
+struct Angles {
+  std::vector<std::int32_t> functions;
+  std::vector<std::uint8_t> charts;
+  std::vector<std::int32_t> indices;
+  std::vector<double> enclosures;          // lower, upper per angle
+  std::vector<std::uint32_t> exactAngles;  // the angles with an exact interval, increasing
+  std::vector<std::string> exactLower, exactUpper;
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & function & chart & lower & upper & lo & hi & index;
+    archive& functions& charts& indices& enclosures& exactAngles& exactLower& exactUpper;
   }
 };
 
-struct AngleSet {
-  bool fullCircle = false;
-  std::vector<std::uint32_t> arcs;  // from, to, wraps: three per arc
+/// Sets of arcs of angles, one after another.
+struct AngleSets {
+  std::vector<std::uint8_t> fullCircle;  // per set
+  std::vector<std::uint32_t> arcCounts;  // per set
+  std::vector<std::uint32_t> arcs;       // from, to, wraps per arc
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & fullCircle & arcs;
+    archive& fullCircle& arcCounts& arcs;
   }
 };
 
@@ -63,75 +73,70 @@ struct Mesh {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & vertices & triangles;
+    archive& vertices& triangles;
   }
 };
 
-struct Patch {
-  std::vector<std::int32_t> contact;   // kind, robot, world, side
-  AngleSet range;
-  std::vector<std::uint32_t> segment;  // per end: robotVertex, vertex, edge[0], edge[1]
-  std::vector<std::int32_t> lineTags;  // kind, side, vertices[4]
-  std::vector<double> linePoints;      // points[4], xyz
-  std::vector<std::uint8_t> spiralRobotVertex;
-  std::vector<double> spiralPoints;    // per end: points[3], xyz
+struct Patches {
+  std::vector<std::int32_t> contacts;  // per patch: kind, robot, world, side
+  AngleSets ranges;
+  std::vector<std::uint32_t> segments;            // per patch and end: robotVertex, vertex, edge[0], edge[1]
+  std::vector<std::int32_t> lineTags;             // per patch: kind, side, vertices[4]
+  std::vector<double> linePoints;                 // per patch: points[4], xyz
+  std::vector<std::uint8_t> spiralRobotVertices;  // per patch: one per end
+  std::vector<double> spiralPoints;               // per patch and end: points[3], xyz
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & contact & range & segment & lineTags & linePoints & spiralRobotVertex & spiralPoints;
+    archive& contacts& ranges& segments& lineTags& linePoints& spiralRobotVertices& spiralPoints;
   }
 };
 
-struct Curve {
-  std::uint32_t first = 0, second = 0;
-  AngleSet angles;
+struct Curves {
+  std::vector<std::uint32_t> patches;  // per curve: first, second
+  AngleSets angles;
   std::vector<std::uint8_t> ends;  // per arc and end: endOnOtherLine[2][2], rangeEnd[2]
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & first & second & angles & ends;
+    archive& patches& angles& ends;
   }
 };
 
-struct Overlap {
-  std::vector<std::uint32_t> patches;
-  std::uint32_t angle = 0;
-  std::vector<std::uint8_t> reachesEnd;
+struct Overlaps {
+  std::vector<std::uint32_t> patches;    // two per overlap
+  std::vector<std::uint32_t> angles;     // one per overlap
+  std::vector<std::uint8_t> reachesEnd;  // four per overlap
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & patches & angle & reachesEnd;
+    archive& patches& angles& reachesEnd;
   }
 };
 
-struct Vertex {
-  std::vector<std::uint32_t> patches;
-  std::uint32_t angle = 0;
-  std::int32_t crossing = -1;
+struct Vertices {
+  std::vector<std::uint32_t> patches;   // three per vertex
+  std::vector<std::uint32_t> angles;    // one per vertex
+  std::vector<std::int32_t> crossings;  // one per vertex
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & patches & angle & crossing;
+    archive& patches& angles& crossings;
   }
 };
 
-struct Slab {
-  std::uint32_t from = 0, to = 0, sample = 0;
-  std::vector<std::uint32_t> curves, faces;
+/// Every patch's subdivision, patch after patch and slab after slab.
+struct Subdivisions {
+  std::vector<std::uint32_t> faceCounts;   // per patch
+  std::vector<std::uint32_t> slabCounts;   // per patch
+  std::vector<std::uint32_t> slabAngles;   // per slab: from, to, sample
+  std::vector<std::uint32_t> curveCounts;  // per slab
+  std::vector<std::uint32_t> curves;       // curveCounts[i] per slab
+  std::vector<std::uint32_t> faces;        // curveCounts[i] + 1 per slab
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & from & to & sample & curves & faces;
-  }
-};
-
-struct Subdivision {
-  std::vector<Slab> slabs;
-  std::uint32_t faceCount = 0;
-
-  template <class Archive>
-  void serialize(Archive& archive, unsigned) {
-    archive & slabs & faceCount;
+    archive& faceCounts& slabCounts& slabAngles& curveCounts& curves& faces;
   }
 };
 
@@ -141,7 +146,7 @@ struct Gluing {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & glues & unmatched;
+    archive& glues& unmatched;
   }
 };
 
@@ -157,7 +162,7 @@ struct Graph {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & criticalAngles & nodes & nodeGeometry & edges & runCounts & runs & unboundedRuns;
+    archive& criticalAngles& nodes& nodeGeometry& edges& runCounts& runs& unboundedRuns;
   }
 };
 
@@ -167,16 +172,16 @@ struct Space {
   std::uint64_t seed = 1;
   double relativeSize = 0, absoluteSize = 0;
   double scale = 1;
-  std::vector<Function> functions;
-  std::vector<Angle> angles;
-  std::vector<Patch> patches;
-  std::vector<Curve> curves;
-  std::vector<Overlap> overlaps;
-  std::vector<Vertex> vertices;
-  std::vector<Subdivision> subdivisions;
-  std::vector<Gluing> gluings;             // across curves, around spirals, across horizontal edges
-  std::vector<std::uint8_t> shellSides;    // ShellSide per shell
-  std::vector<std::int32_t> cellOfShell;   // -1: none
+  Functions functions;
+  Angles angles;
+  Patches patches;
+  Curves curves;
+  Overlaps overlaps;
+  Vertices vertices;
+  Subdivisions subdivisions;
+  std::vector<Gluing> gluings;            // across curves, around spirals, across horizontal edges
+  std::vector<std::uint8_t> shellSides;   // ShellSide per shell
+  std::vector<std::int32_t> cellOfShell;  // -1: none
   std::uint32_t cellCount = 0;
   std::vector<std::string> stageNames;
   std::vector<double> stageSeconds;
@@ -184,9 +189,8 @@ struct Space {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive & robot & world & perturbed & seed & relativeSize & absoluteSize & scale & functions & angles & patches &
-        curves & overlaps & vertices & subdivisions & gluings & shellSides & cellOfShell & cellCount & stageNames &
-        stageSeconds & graph;
+    archive& robot& world& perturbed& seed& relativeSize& absoluteSize& scale& functions& angles& patches& curves&
+        overlaps& vertices& subdivisions& gluings& shellSides& cellOfShell& cellCount& stageNames& stageSeconds& graph;
   }
 };
 
@@ -194,19 +198,18 @@ struct Space {
 
 // Plain records: no class information or object tracking in the archive (Boost would
 // otherwise look each record's type up by name as it reads it).
-#define FREESPACE_SAVED_RECORD(T)                                                 \
+#define FREESPACE_SAVED_RECORD(T)                                                            \
   BOOST_CLASS_IMPLEMENTATION(freespace::saved::T, boost::serialization::object_serializable) \
   BOOST_CLASS_TRACKING(freespace::saved::T, boost::serialization::track_never)
-FREESPACE_SAVED_RECORD(Function)
-FREESPACE_SAVED_RECORD(Angle)
-FREESPACE_SAVED_RECORD(AngleSet)
+FREESPACE_SAVED_RECORD(Functions)
+FREESPACE_SAVED_RECORD(Angles)
+FREESPACE_SAVED_RECORD(AngleSets)
 FREESPACE_SAVED_RECORD(Mesh)
-FREESPACE_SAVED_RECORD(Patch)
-FREESPACE_SAVED_RECORD(Curve)
-FREESPACE_SAVED_RECORD(Overlap)
-FREESPACE_SAVED_RECORD(Vertex)
-FREESPACE_SAVED_RECORD(Slab)
-FREESPACE_SAVED_RECORD(Subdivision)
+FREESPACE_SAVED_RECORD(Patches)
+FREESPACE_SAVED_RECORD(Curves)
+FREESPACE_SAVED_RECORD(Overlaps)
+FREESPACE_SAVED_RECORD(Vertices)
+FREESPACE_SAVED_RECORD(Subdivisions)
 FREESPACE_SAVED_RECORD(Gluing)
 FREESPACE_SAVED_RECORD(Graph)
 FREESPACE_SAVED_RECORD(Space)

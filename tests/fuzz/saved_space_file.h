@@ -1,19 +1,18 @@
 #pragma once
 
 // A saved free space's file around a payload: the header line, the payload's length
-// and a valid CRC-32 (the layout src/space/free_space_file.cpp writes, format 7), for
-// the saved-space fuzz target and the test that replays its findings.
+// and a valid checksum (XXH3, 64 bits; the layout src/space/free_space_file.cpp
+// writes, format 8), for the saved-space fuzz target and the tests that alter payloads.
 
-#include <boost/crc.hpp>
+#include <xxhash.h>
 
 #include <cstdint>
 #include <string>
 
 inline std::string savedSpaceFileAround(const std::string& payload) {
-  boost::crc_32_type crc;
-  crc.process_bytes(payload.data(), payload.size());
-  std::string file = "freespace saved free space, format 7\n";
+  const std::uint64_t sum = XXH3_64bits(payload.data(), payload.size());
+  std::string file = "freespace saved free space, format 8\n";
   for (int i = 0; i < 8; ++i) file.push_back(static_cast<char>((std::uint64_t(payload.size()) >> (8 * i)) & 0xff));
-  for (int i = 0; i < 4; ++i) file.push_back(static_cast<char>((crc.checksum() >> (8 * i)) & 0xff));
+  for (int i = 0; i < 8; ++i) file.push_back(static_cast<char>((sum >> (8 * i)) & 0xff));
   return file + payload;
 }
