@@ -583,3 +583,23 @@ TEST(AlgebraicAngle, DoubleDoubleParametersOfRationalAnglesAreExact) {
   EXPECT_LE(Rational(third.high()) + Rational(third.low()) - Rational(third.radius()), Rational(1, 3));
   EXPECT_GE(Rational(third.high()) + Rational(third.low()) + Rational(third.radius()), Rational(1, 3));
 }
+
+// exactOnce gives the chart's exact polynomial, the one exact keeps: in chart 0, its
+// sign at t is the sign of the forms' product at theta = 2 atan t.
+TEST(AlgebraicAngle, ExactOnceIsTheExactPolynomial) {
+  const std::vector<Form> forms{{3, 4, -5 + 1e-3}, {1, -2, 0.5}};
+  const auto function = productOf(forms);
+  const RationalPolynomial once = function->exactOnce(0);
+  for (const double t : {-2.0, -0.75, -0.125, 0.0, 0.3, 0.9, 4.0}) {
+    const long double theta = 2 * std::atan(static_cast<long double>(t));
+    long double product = 1;
+    for (const Form& form : forms) product *= form.at(theta);
+    const Rational value = once.evaluate(Rational(t));
+    EXPECT_EQ(value > 0, product > 0) << "t = " << t;
+    EXPECT_EQ(value < 0, product < 0) << "t = " << t;
+  }
+  for (int chart = 0; chart < 2; ++chart) {
+    EXPECT_EQ(function->exactOnce(chart).coefficients(), function->exact(chart).coefficients());
+    EXPECT_EQ(function->exactOnce(chart).coefficients(), function->exact(chart).coefficients());  // kept now
+  }
+}

@@ -320,6 +320,14 @@ const RationalPolynomial& AngleFunction::exact(int chart) const {
   return *exact;
 }
 
+RationalPolynomial AngleFunction::exactOnce(int chart) const {
+  {
+    const std::lock_guard lock(firstUseMutex());
+    if (escalation_ && escalation_->exact[chart]) return *escalation_->exact[chart];
+  }
+  return trimmed(source_ ? source_->polynomial(chart, approximate_[chart]) : evaluator_->exact(chart));
+}
+
 bool AngleFunction::isIdenticallyZero() const {
   // A coefficient certainly nonzero in double intervals, else in the tight ones
   // (a nonzero function can be as small as the perturbation squared), else exactly.

@@ -17,11 +17,12 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <map>
+#include <unordered_map>
 #include <new>
 #include <sstream>
 #include <string_view>
 
+#include "every_core.h"
 #include "free_space_impl.h"
 #include "freespace/input_error.h"
 #include "freespace/io/output_file.h"
@@ -282,6 +283,34 @@ class AngleTable {
       sets.arcs.insert(sets.arcs.end(), {add(arc.from), add(arc.to), arc.wraps});
   }
 
+  /// Writes the coefficients of the functions of the angles added: most were never
+  /// needed exactly by the construction, and making them is most of a save, so they
+  /// are made and written into bytes on every core, a batch at a time.
+  void writeFunctionCoefficients() {
+    constexpr std::size_t kBatch = 4096;
+    std::vector<saved::Functions> batch(kBatch);
+    for (std::size_t first = 0; first < functionsToWrite_.size(); first += kBatch) {
+      const std::size_t count = std::min(kBatch, functionsToWrite_.size() - first);
+      onEveryCore(
+          count, [] { return true; },
+          [&](std::size_t k) {
+            const AngleFunction& function = *functionsToWrite_[first + k];
+            writeCoefficients({function.exactOnce(0), function.exactOnce(1)}, batch[k]);
+          });
+      saved::Functions& functions = space_.functions;
+      for (std::size_t k = 0; k < count; ++k) {
+        const saved::Functions& written = batch[k];
+        functions.coefficientCounts.insert(functions.coefficientCounts.end(), written.coefficientCounts.begin(),
+                                           written.coefficientCounts.end());
+        functions.enclosures.insert(functions.enclosures.end(), written.enclosures.begin(), written.enclosures.end());
+        functions.exact += written.exact;
+        functions.exactEnds.push_back(functions.exact.size());
+        release(batch[k]);
+      }
+    }
+    release(functionsToWrite_);
+  }
+
   /// Reads every angle of the loaded table in the table's order (the structures then
   /// look them up at random), and frees the stored ones; the functions' exact
   /// coefficients are kept, undecoded, for the functions to decode when needed.
@@ -325,20 +354,23 @@ class AngleTable {
     saved::Functions& functions = space_.functions;
     const auto [found, inserted] = indexOf_.try_emplace(&function, functions.keyed.size());
     if (inserted) {
-      functions.coefficientCounts.push_back(static_cast<std::uint32_t>(function.exact(0).coefficients().size()));
-      functions.coefficientCounts.push_back(static_cast<std::uint32_t>(function.exact(1).coefficients().size()));
-      for (int chart = 0; chart < 2; ++chart) {
-        for (const Rational& c : function.exact(chart).coefficients()) {
-          const Interval enclosure = enclosingInterval(c);
-          functions.enclosures.insert(functions.enclosures.end(), {enclosure.lower(), enclosure.upper()});
-          functions.exact += bytesOf(c);
-        }
-      }
-      functions.exactEnds.push_back(functions.exact.size());
       functions.keyed.push_back(function.key() ? 1 : 0);
       if (function.key()) functions.keys.insert(functions.keys.end(), function.key()->begin(), function.key()->end());
+      functionsToWrite_.push_back(&function);
     }
     return found->second;
+  }
+
+  /// One function's coefficient counts, enclosures and exact bytes into `out`.
+  static void writeCoefficients(const std::array<RationalPolynomial, 2>& charts, saved::Functions& out) {
+    for (const RationalPolynomial& chart : charts) {
+      out.coefficientCounts.push_back(static_cast<std::uint32_t>(chart.coefficients().size()));
+      for (const Rational& c : chart.coefficients()) {
+        const Interval enclosure = enclosingInterval(c);
+        out.enclosures.insert(out.enclosures.end(), {enclosure.lower(), enclosure.upper()});
+        out.exact += bytesOf(c);
+      }
+    }
   }
 
   /// Checks that the stored functions' lists fit together, and notes where each
@@ -429,18 +461,26 @@ class AngleTable {
     int chart;
     int index;
     Rational t;  // a rational angle's t, or the lower end of a root of unknown place
-    bool operator<(const AngleKey& other) const {
-      if (function != other.function) return std::less<>()(function, other.function);
-      if (chart != other.chart) return chart < other.chart;
-      if (index != other.index) return index < other.index;
-      return t < other.t;
+    bool operator==(const AngleKey& other) const {
+      return function == other.function && chart == other.chart && index == other.index && t == other.t;
+    }
+  };
+  struct HashOfAngleKey {
+    std::size_t operator()(const AngleKey& key) const {
+      std::size_t hash = std::hash<const void*>()(key.function);
+      for (const std::size_t part : {std::hash<int>()(key.chart), std::hash<int>()(key.index),
+                                     std::hash<double>()(mpq_get_d(key.t.backend().data()))}) {
+        hash ^= part + 0x9e3779b97f4a7c15 + (hash << 6) + (hash >> 2);
+      }
+      return hash;
     }
   };
 
   saved::Space& space_;
   std::shared_ptr<const std::string> file_;
-  std::map<const AngleFunction*, std::size_t> indexOf_;
-  std::map<AngleKey, std::uint32_t> indexOfAngle_;
+  std::unordered_map<const AngleFunction*, std::size_t> indexOf_;
+  std::unordered_map<AngleKey, std::uint32_t, HashOfAngleKey> indexOfAngle_;
+  std::vector<const AngleFunction*> functionsToWrite_;
   std::vector<std::uint64_t> firstCoefficient_, firstKey_;
   std::shared_ptr<const std::string> exact_;
   std::vector<std::shared_ptr<const AngleFunction>> loaded_;
@@ -802,6 +842,7 @@ saved::Space savedSpace(const PerturbedMeshes& meshes, const Arrangement& arrang
     space.stageSeconds.push_back(stage.seconds);
   }
   space.graph = savedGraph(graph.parts(), angles);
+  angles.writeFunctionCoefficients();
   return space;
 }
 

@@ -101,6 +101,10 @@ class AngleFunction {
   /// The same in MPFI at about 108 bits, for bisection at that precision.
   const Polynomial<PreciseInterval>& precise(int chart) const;
   const RationalPolynomial& exact(int chart) const;
+  /// The same, but made without keeping it when it was not made yet: for a caller
+  /// that needs every function's once (saving a free space), on several threads at
+  /// once (exact makes one function's at a time).
+  RationalPolynomial exactOnce(int chart) const;
   const RationalPolynomial& squareFree(int chart) const;
   /// True when the function vanishes at every angle (decided from the double
   /// interval or else the tight coefficients when one is certainly not zero,
