@@ -48,8 +48,8 @@ savedSpacePayloads() {
   if [ ! -d "$folder" ]; then
     mkdir -p "$folder"
     build/bin/freespace build "$cube" "$cube" --save "$folder/cube.fspace" > /dev/null
-    # The payload follows the header line, its 8-byte length and 8-byte checksum.
-    tail -c +$(( $(head -n 1 "$folder/cube.fspace" | wc -c) + 17 )) "$folder/cube.fspace" > "$folder/cube.payload"
+    # The payload follows the header line; its 8-byte length and 8-byte checksum follow it.
+    tail -c +$(( $(head -n 1 "$folder/cube.fspace" | wc -c) + 1 )) "$folder/cube.fspace" | head -c -16 > "$folder/cube.payload"
   fi
   echo "$folder/cube.payload"
 }

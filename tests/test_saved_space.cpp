@@ -55,8 +55,13 @@ std::string loadError(const std::string& path) {
   return {};
 }
 
-/// Where the payload starts: after the header line, its size and its checksum.
-std::size_t payloadStartOf(const std::string& bytes) { return bytes.find('\n') + 1 + 16; }
+/// Where the payload starts: after the header line.
+std::size_t payloadStartOf(const std::string& bytes) { return bytes.find('\n') + 1; }
+
+/// The payload of a saved file's bytes: after the header line, before its size and checksum.
+std::string payloadOf(const std::string& bytes) {
+  return bytes.substr(payloadStartOf(bytes), bytes.size() - 16 - payloadStartOf(bytes));
+}
 
 /// The bytes of builtSpace() saved in `dir`.
 std::string savedBytes(const TempDir& dir) {
@@ -181,13 +186,13 @@ TEST(SavedSpace, AlteredPayloadsWithAValidChecksumLoadOrFailCleanly) {
   const std::string bytes = contents(file);
   const std::size_t payloadStart = payloadStartOf(bytes);
   std::mt19937 random(17);
-  std::uniform_int_distribution<std::size_t> position(payloadStart, bytes.size() - 1);
+  std::uniform_int_distribution<std::size_t> position(payloadStart, bytes.size() - 17);
   int loaded = 0, rejected = 0;
   for (int trial = 0; trial < 40; ++trial) {
     std::string altered = bytes;
     for (int flip = 0; flip < 4; ++flip) altered[position(random)] ^= static_cast<char>(1 + trial % 255);
     const std::string other = dir.file("altered.fspace");
-    write(other, savedSpaceFileAround(altered.substr(payloadStart)));
+    write(other, savedSpaceFileAround(payloadOf(altered)));
     try {
       FreeSpace::load(other);
       ++loaded;
@@ -210,7 +215,7 @@ TEST(SavedSpace, AHugeTextLengthIsAClearErrorWithoutAllocating) {
   std::string altered = number.bytes;
   putUint64(altered, number.at, std::uint64_t(1) << 34);
   const std::string other = dir.file("huge.fspace");
-  write(other, savedSpaceFileAround(altered.substr(number.payloadStart)));
+  write(other, savedSpaceFileAround(payloadOf(altered)));
   const auto start = std::chrono::steady_clock::now();
   EXPECT_NE(loadError(other).find("longer than the rest of the file"), std::string::npos);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -229,7 +234,7 @@ TEST(SavedSpace, AnUnreducedFractionIsRefused) {
   altered[text + 5 + numeratorLength - 1] = 2;
   altered[textEnd - 1] = 4;
   const std::string other = dir.file("unreduced.fspace");
-  write(other, savedSpaceFileAround(altered.substr(number.payloadStart)));
+  write(other, savedSpaceFileAround(payloadOf(altered)));
   EXPECT_NE(loadError(other).find("inconsistent saved free space at a number"), std::string::npos) << loadError(other);
 }
 
@@ -243,14 +248,14 @@ TEST(SavedSpace, AlteredLengthsAreRefusedWithPlainMessages) {
   const std::size_t payloadStart = payloadStartOf(bytes);
   const std::string other = dir.file("altered.fspace");
   int altered = 0;
-  for (std::size_t at = payloadStart; at + 8 <= bytes.size() && altered < 300; ++at) {
+  for (std::size_t at = payloadStart; at + 8 <= bytes.size() - 16 && altered < 300; ++at) {
     std::uint64_t value = 0;
     for (int i = 0; i < 8; ++i)
       value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
     if (value == 0 || value > 100000) continue;
     std::string changed = bytes;
     putUint64(changed, at, value + (std::uint64_t(1) << 26));
-    write(other, savedSpaceFileAround(changed.substr(payloadStart)));
+    write(other, savedSpaceFileAround(payloadOf(changed)));
     ++altered;
     try {
       FreeSpace::load(other);
@@ -275,7 +280,7 @@ std::string fileWithSpaceAltered(const TempDir& dir, const std::string& bytes,
                                  const std::function<void(saved::Space&)>& alter) {
   saved::Space space;
   {
-    std::istringstream in(bytes.substr(payloadStartOf(bytes)));
+    std::istringstream in(payloadOf(bytes));
     boost::archive::binary_iarchive archive(in);
     archive >> space;
   }

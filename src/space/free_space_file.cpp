@@ -1,6 +1,7 @@
 // Saving and loading a built free space (docs/design.md section 6). The file is a
-// header line naming the format and its version, the payload's size and checksum
-// (XXH3, 64 bits), then the payload: a Boost binary archive of saved::Space. Algebraic angles are stored by
+// header line naming the format and its version, the payload (a Boost binary archive
+// of saved::Space), then the payload's size and checksum (XXH3, 64 bits): written
+// after it, so that the payload goes to the file as it is made. Algebraic angles are stored by
 // their functions (double enclosures of the exact coefficients, and those
 // coefficients as bytes, decoded when first needed), their isolating intervals and
 // root indices, so that every predicate on the loaded structure decides as on the
@@ -9,6 +10,7 @@
 #include <xxhash.h>
 
 #include <algorithm>
+#include <array>
 #include <boost/archive/binary_iarchive_impl.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 #include <boost/archive/impl/archive_serializer_map.ipp>
@@ -16,11 +18,10 @@
 #include <boost/archive/impl/basic_binary_iprimitive.ipp>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <unordered_map>
+#include <memory>
 #include <new>
-#include <sstream>
 #include <string_view>
+#include <unordered_map>
 
 #include "every_core.h"
 #include "free_space_impl.h"
@@ -862,7 +863,8 @@ std::uint64_t readLittleEndian(const char* bytes, int count) {
 /// house_mixed_160; XXH3 reads memory about as fast as it comes).
 std::uint64_t checksum(std::string_view payload) { return XXH3_64bits(payload.data(), payload.size()); }
 
-/// The payload of a saved free space file (read in place), checked against its header.
+/// The payload of a saved free space file (read in place), checked against its
+/// header and its trailer.
 std::string_view checkedPayload(const MappedInputFile& file, const std::string& path) {
   const std::string_view bytes(file.data(), file.size());
   const std::size_t lineEnd = bytes.find('\n');
@@ -874,14 +876,60 @@ std::string_view checkedPayload(const MappedInputFile& file, const std::string& 
     throw InputError(path, "saved free space of format " + std::string(version) + "; this build reads format " +
                                std::to_string(kFormatVersion));
   }
-  if (bytes.size() - (lineEnd + 1) < 16) throw InputError(path, "damaged: truncated header");
-  const std::uint64_t size = readLittleEndian(bytes.data() + lineEnd + 1, 8);
-  const std::uint64_t sum = readLittleEndian(bytes.data() + lineEnd + 9, 8);
-  const std::string_view payload = bytes.substr(lineEnd + 17);
-  if (payload.size() != size) throw InputError(path, "damaged: wrong length");
-  if (checksum(payload) != sum) throw InputError(path, "damaged: checksum mismatch");
+  constexpr std::size_t kTrailer = 16;
+  if (bytes.size() - (lineEnd + 1) < kTrailer) throw InputError(path, "damaged: wrong length");
+  const char* trailer = bytes.data() + bytes.size() - kTrailer;
+  const std::string_view payload = bytes.substr(lineEnd + 1, bytes.size() - kTrailer - (lineEnd + 1));
+  if (payload.size() != readLittleEndian(trailer, 8)) throw InputError(path, "damaged: wrong length");
+  if (checksum(payload) != readLittleEndian(trailer + 8, 8)) throw InputError(path, "damaged: checksum mismatch");
   return payload;
 }
+
+/// An output buffer that passes what is written to `out` a block at a time, counting
+/// and hashing it on the way (XXH3, 64 bits). A failed write of `out` is left in
+/// `out`'s state for its writer to find.
+class HashingBuffer : public std::streambuf {
+ public:
+  explicit HashingBuffer(std::ostream& out) : out_(out), state_(XXH3_createState(), XXH3_freeState) {
+    if (!state_ || XXH3_64bits_reset(state_.get()) != XXH_OK) throw std::bad_alloc();
+    setp(block_.data(), block_.data() + block_.size());
+  }
+
+  std::uint64_t size() const { return size_ + static_cast<std::uint64_t>(pptr() - pbase()); }
+  /// The hash of everything written so far (the block held is passed on first).
+  std::uint64_t hash() {
+    pass();
+    return XXH3_64bits_digest(state_.get());
+  }
+
+ protected:
+  int_type overflow(int_type c) override {
+    pass();
+    if (!traits_type::eq_int_type(c, traits_type::eof())) {
+      *pptr() = traits_type::to_char_type(c);
+      pbump(1);
+    }
+    return traits_type::not_eof(c);
+  }
+  int sync() override {
+    pass();
+    return 0;
+  }
+
+ private:
+  void pass() {
+    const std::size_t held = static_cast<std::size_t>(pptr() - pbase());
+    XXH3_64bits_update(state_.get(), pbase(), held);
+    out_.write(pbase(), static_cast<std::streamsize>(held));
+    size_ += held;
+    setp(block_.data(), block_.data() + block_.size());
+  }
+
+  std::ostream& out_;
+  std::unique_ptr<XXH3_state_t, XXH_errorcode (*)(XXH3_state_t*)> state_;
+  std::array<char, 1 << 20> block_;
+  std::uint64_t size_ = 0;
+};
 
 /// Indices that must be in range for the structure to be used safely.
 void checkConsistency(const Arrangement& arrangement, const std::vector<ShellSide>& sides,
@@ -944,19 +992,17 @@ void checkConsistency(const Arrangement& arrangement, const std::vector<ShellSid
 void FreeSpace::save(const std::string& path, bool overwrite) const {
   const saved::Space space =
       savedSpace(impl_->meshes, impl_->arrangement, impl_->sides, *impl_->cells, cellGraph(), impl_->stageTimes);
-  std::ostringstream payloadStream;
-  {
-    boost::archive::binary_oarchive archive(payloadStream);
-    archive << space;
-  }
-  const std::string payload = payloadStream.str();
-  const std::uint64_t size = payload.size();
-  const std::uint64_t sum = checksum(payload);
   writeFile(path, overwrite, [&](std::ostream& out) {
     out << kHeader << kFormatVersion << '\n';
+    const auto buffer = std::make_unique<HashingBuffer>(out);
+    {
+      std::ostream payload(buffer.get());
+      boost::archive::binary_oarchive archive(payload);
+      archive << space;
+    }
+    const std::uint64_t size = buffer->size(), sum = buffer->hash();
     writeLittleEndian(out, size, 8);
     writeLittleEndian(out, sum, 8);
-    out.write(payload.data(), static_cast<std::streamsize>(payload.size()));
   });
 }
 
