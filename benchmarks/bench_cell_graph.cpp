@@ -1,13 +1,16 @@
 // The free cell graph (docs/design.md section 7) on the bundled scenes: its size and
-// the time it takes against the construction's (target: at most half), and whether
-// its edges join the start's and the goal's nodes (they must exactly when both lie in
-// one cell).
+// the time it takes against the construction's (target: at most half; the medians of
+// five fresh spaces), and whether its edges join the start's and the goal's nodes
+// (they must exactly when both lie in one cell).
 //
 // Usage: bench_cell_graph [PROBLEM.cfg ...]   (default: every benchmarks/problems/*.cfg)
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <string>
+#include <vector>
 
 #include "benchmark_arguments.h"
 #include "freespace/problem/planar_problem.h"
@@ -27,20 +30,34 @@ std::string startAndGoal(const FreeSpace& space, const PlanarProblem& problem) {
          (sameCell ? "one cell" : "two cells") + ")";
 }
 
-void measure(const std::string& cfg) {
+/// The middle of the values (the upper one of an even count).
+double median(std::vector<double> values) {
+  std::nth_element(values.begin(), values.begin() + values.size() / 2, values.end());
+  return values[values.size() / 2];
+}
+
+/// The problem's construction and graph, each timed in `runs` fresh spaces (the
+/// median of each is printed: on a small scene one run moves by half).
+void measure(const std::string& cfg, int runs) {
   const LoadedProblem loaded = loadProblem(cfg);
-  auto start = std::chrono::steady_clock::now();
-  const FreeSpace space(loaded.robot, loaded.world);
-  const double build = benchmarks::secondsSince(start);
-  // The graph with its slices' faces: what every path query walks, built once.
-  start = std::chrono::steady_clock::now();
-  const CellGraph& graph = space.cellGraph();
-  space.sliceFaces();
-  const double graphSeconds = benchmarks::secondsSince(start);
-  std::cout << "| " << std::filesystem::path(cfg).stem().string() << " | " << space.cellCount() << " | "
+  std::vector<double> builds, graphs;
+  std::unique_ptr<FreeSpace> space;
+  for (int run = 0; run < runs; ++run) {
+    auto start = std::chrono::steady_clock::now();
+    space = std::make_unique<FreeSpace>(loaded.robot, loaded.world);
+    builds.push_back(benchmarks::secondsSince(start));
+    // The graph with its slices' faces: what every path query walks, built once.
+    start = std::chrono::steady_clock::now();
+    space->cellGraph();
+    space->sliceFaces();
+    graphs.push_back(benchmarks::secondsSince(start));
+  }
+  const CellGraph& graph = space->cellGraph();
+  const double build = median(builds), graphSeconds = median(graphs);
+  std::cout << "| " << std::filesystem::path(cfg).stem().string() << " | " << space->cellCount() << " | "
             << graph.criticalAngles().size() << " | " << graph.nodes().size() << " | " << graph.edges().size() << " | "
             << build << " | " << graphSeconds << " | " << graphSeconds / build << " | "
-            << startAndGoal(space, loaded.problem) << " |" << std::endl;
+            << startAndGoal(*space, loaded.problem) << " |" << std::endl;
 }
 
 int run(int argc, char** argv) {
@@ -55,7 +72,8 @@ int run(int argc, char** argv) {
                "start and goal joined |\n"
                "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
             << std::endl;
-  for (const std::string& problem : problems) measure(problem);
+  constexpr int kRuns = 5;
+  for (const std::string& problem : problems) measure(problem, kRuns);
   return 0;
 }
 
