@@ -124,6 +124,9 @@ void compare(const std::string& cfg, double seconds) {
   const LoadedProblem loaded = loadProblem(cfg);
   if (!loaded.problem.volume) throw std::invalid_argument(cfg + ": no volume.min/max: OMPL needs bounds");
   const FreeSpace space(loaded.robot, loaded.world);
+  // The graph and its slices' faces first, as `freespace plan` does: they serve every
+  // query, and the query's time limit is the query's.
+  space.sliceFaces();
   MaxClearancePathOptions options;
   options.volumeLow = std::array<double, 2>{loaded.problem.volume->min().x(), loaded.problem.volume->min().y()};
   options.volumeHigh = std::array<double, 2>{loaded.problem.volume->max().x(), loaded.problem.volume->max().y()};
