@@ -132,7 +132,8 @@ TEST_P(RoutedProblems, TheRoutesPathIsCertified) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, RoutedProblems,
-                         ::testing::Values(TimedProblem{"room_door", 0.5}, TimedProblem{"turn_around", 0.5},
+                         ::testing::Values(TimedProblem{"room_door", 0.5}, TimedProblem{"room_door_dae", 0.5},
+                                           TimedProblem{"turn_around", 0.5}, TimedProblem{"table", 0.5},
                                            TimedProblem{"tetra_floorplan", 0.5}, TimedProblem{"overhang", 0.5},
                                            TimedProblem{"keyhole", 2}, TimedProblem{"keyhole_wide", 2}),
                          [](const auto& info) { return std::string(info.param.name); });

@@ -7,7 +7,9 @@
 #include <boost/archive/binary_iarchive.hpp>
 #include <boost/archive/binary_oarchive.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <fstream>
 #include <random>
@@ -75,43 +77,36 @@ void putUint64(std::string& bytes, std::size_t at, std::uint64_t value) {
   for (int i = 0; i < 8; ++i) bytes[at + i] = static_cast<char>((value >> (8 * i)) & 0xff);
 }
 
-/// The offset of the first 8-byte little-endian length followed by that many bytes
-/// of a written rational, as the saved format stores numbers.
-std::size_t firstNumberLength(const std::string& bytes, std::size_t from) {
-  const auto littleEndian = [&](std::size_t at, int width) {
-    std::uint64_t value = 0;
-    for (int i = 0; i < width; ++i)
-      value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[at + i])) << (8 * i);
-    return value;
-  };
-  // A text holding a sign byte, then a numerator and a denominator of at least one
-  // byte, each after its 4-byte length, filling the text exactly.
-  for (std::size_t at = from; at + 8 < bytes.size(); ++at) {
-    const std::uint64_t length = littleEndian(at, 8);
-    if (length < 10 || length > 200 || at + 8 + length > bytes.size()) continue;
-    const std::size_t text = at + 8;
-    if (static_cast<unsigned char>(bytes[text]) > 1) continue;
-    const std::uint64_t numerator = littleEndian(text + 1, 4);
-    if (5 + numerator + 4 > length) continue;
-    const std::uint64_t denominator = littleEndian(text + 5 + numerator, 4);
-    if (denominator >= 1 && 9 + numerator + denominator == length) return at;
-  }
-  return std::string::npos;
+/// A saved file's payload decoded.
+saved::Space spaceOf(const std::string& bytes) {
+  saved::Space space;
+  std::istringstream in(payloadOf(bytes));
+  boost::archive::binary_iarchive archive(in);
+  archive >> space;
+  return space;
 }
 
-/// A saved file's bytes, where its payload starts, and where the length of its first
-/// written number is (npos when none is found).
-struct SavedNumber {
-  std::string bytes;
-  std::size_t payloadStart;
-  std::size_t at;
-};
+/// The payload of a saved file's `bytes` decoded, altered by `alter`, and written
+/// again into a file with a valid checksum; returns the file's path.
+std::string fileWithSpaceAltered(const TempDir& dir, const std::string& bytes,
+                                 const std::function<void(saved::Space&)>& alter) {
+  saved::Space space = spaceOf(bytes);
+  alter(space);
+  std::ostringstream out;
+  {
+    boost::archive::binary_oarchive archive(out);
+    archive << space;
+  }
+  const std::string file = dir.file("altered_space.fspace");
+  write(file, savedSpaceFileAround(out.str()));
+  return file;
+}
 
-SavedNumber firstSavedNumber(const TempDir& dir) {
-  SavedNumber number{savedBytes(dir), 0, 0};
-  number.payloadStart = payloadStartOf(number.bytes);
-  number.at = firstNumberLength(number.bytes, number.payloadStart);
-  return number;
+/// Where in `payload` the text `text` is written: its 8-byte length, then its bytes.
+std::size_t whereTextIs(const std::string& payload, const std::string& text) {
+  std::string written(8, '\0');
+  putUint64(written, 0, text.size());
+  return payload.find(written + text);
 }
 
 }  // namespace
@@ -205,37 +200,38 @@ TEST(SavedSpace, AlteredPayloadsWithAValidChecksumLoadOrFailCleanly) {
   std::cout << loaded << " altered files loaded, " << rejected << " rejected\n";
 }
 
-// A number's length altered to 16 GiB (the checksum made valid again) is damage found
-// before any memory is set aside for it: a clear error at once, not a loader that
-// fills the machine's memory.
+// A text's length altered to 16 GiB (the functions' exact coefficients; the checksum
+// made valid again) is damage found before any memory is set aside for it: a clear
+// error at once, not a loader that fills the machine's memory.
 TEST(SavedSpace, AHugeTextLengthIsAClearErrorWithoutAllocating) {
   TempDir dir;
-  const SavedNumber number = firstSavedNumber(dir);
-  ASSERT_NE(number.at, std::string::npos) << "no written number in the payload";
-  std::string altered = number.bytes;
-  putUint64(altered, number.at, std::uint64_t(1) << 34);
+  const std::string bytes = savedBytes(dir);
+  std::string payload = payloadOf(bytes);
+  const std::size_t at = whereTextIs(payload, spaceOf(bytes).functions.exact);
+  ASSERT_NE(at, std::string::npos) << "the functions' coefficients not found in the payload";
+  putUint64(payload, at, std::uint64_t(1) << 34);
   const std::string other = dir.file("huge.fspace");
-  write(other, savedSpaceFileAround(payloadOf(altered)));
+  write(other, savedSpaceFileAround(payload));
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_NE(loadError(other).find("longer than the rest of the file"), std::string::npos);
+  EXPECT_EQ(loadError(other), "damaged: a text longer than the rest of the file");
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::cout << "rejected in " << seconds << " s\n";
 }
 
-// A number made an unreduced fraction (numerator and denominator both even), the
-// checksum valid again, is refused as damage before GMP takes it.
+// An angle's exact interval made an unreduced fraction (its lower end's numerator and
+// denominator both even) is refused as damage before GMP takes it.
 TEST(SavedSpace, AnUnreducedFractionIsRefused) {
   TempDir dir;
-  const SavedNumber number = firstSavedNumber(dir);
-  ASSERT_NE(number.at, std::string::npos) << "no written number in the payload";
-  std::string altered = number.bytes;
-  const std::size_t text = number.at + 8, numeratorLength = static_cast<unsigned char>(altered[text + 1]);
-  const std::size_t textEnd = text + static_cast<unsigned char>(altered[number.at]);  // lengths below 256
-  altered[text + 5 + numeratorLength - 1] = 2;
-  altered[textEnd - 1] = 4;
-  const std::string other = dir.file("unreduced.fspace");
-  write(other, savedSpaceFileAround(payloadOf(altered)));
-  EXPECT_NE(loadError(other).find("inconsistent saved free space at a number"), std::string::npos) << loadError(other);
+  const std::string file = fileWithSpaceAltered(dir, savedBytes(dir), [](saved::Space& space) {
+    std::string& bytes = space.angles.exactIntervals;
+    ASSERT_GE(bytes.size(), 11u) << "no exact interval in the table";
+    // A sign byte, the numerator's 4-byte length and bytes, the denominator's.
+    const std::size_t numerator = static_cast<unsigned char>(bytes[1]);  // lengths below 256
+    const std::size_t denominator = static_cast<unsigned char>(bytes[5 + numerator]);
+    bytes[4 + numerator] = 2;
+    bytes[8 + numerator + denominator] = 4;
+  });
+  EXPECT_EQ(loadError(file), "inconsistent saved free space at a number");
 }
 
 // Every 8-byte value in the payload that could be a length (1 to 100,000) raised by
@@ -273,27 +269,6 @@ TEST(SavedSpace, AlteredLengthsAreRefusedWithPlainMessages) {
 }
 
 namespace {
-
-/// The payload of a saved file's `bytes` decoded, altered by `alter`, and written
-/// again into a file with a valid checksum; returns the file's path.
-std::string fileWithSpaceAltered(const TempDir& dir, const std::string& bytes,
-                                 const std::function<void(saved::Space&)>& alter) {
-  saved::Space space;
-  {
-    std::istringstream in(payloadOf(bytes));
-    boost::archive::binary_iarchive archive(in);
-    archive >> space;
-  }
-  alter(space);
-  std::ostringstream out;
-  {
-    boost::archive::binary_oarchive archive(out);
-    archive << space;
-  }
-  const std::string file = dir.file("altered_space.fspace");
-  write(file, savedSpaceFileAround(out.str()));
-  return file;
-}
 
 /// The loader's complaint about the saved `bytes` with their graph altered.
 std::string errorWithGraphAltered(const TempDir& dir, const std::string& bytes,
@@ -352,6 +327,51 @@ TEST(SavedSpace, ListsOfAPartThatDoNotFitAreRefusedNamingThePart) {
     const std::string error = loadError(fileWithSpaceAltered(dir, bytes, alter));
     EXPECT_EQ(error, "inconsistent saved free space at " + part);
   }
+}
+
+// Values that the structure would trip over later (an infinite enclosure a rational
+// is made from, a root's place that sizes a table, a vertex's crossing that indexes
+// its three patches, an undefined node box, a stage's time) are refused at loading.
+TEST(SavedSpace, ValuesUsedLaterAreCheckedAtLoading) {
+  TempDir dir;
+  const std::string bytes = savedBytes(dir);
+  const auto firstRoot = [](const saved::Space& space) {
+    const auto& functions = space.angles.functions;
+    const auto root = std::find_if(functions.begin(), functions.end(), [](std::int32_t f) { return f >= 0; });
+    EXPECT_NE(root, functions.end()) << "no root in the table";
+    return static_cast<std::size_t>(root - functions.begin());
+  };
+  const std::vector<std::pair<std::function<void(saved::Space&)>, std::string>> cases{
+      {[&](saved::Space& space) { space.angles.enclosures[2 * firstRoot(space)] = -HUGE_VAL; }, "an angle"},
+      {[&](saved::Space& space) { space.angles.indices[firstRoot(space)] = 1 << 30; }, "an angle"},
+      {[](saved::Space& space) {
+         ASSERT_FALSE(space.vertices.crossings.empty());
+         space.vertices.crossings.front() = 7;
+       },
+       "a vertex"},
+      {[](saved::Space& space) { space.graph.nodeGeometry[2] = NAN; }, "a node's box"},
+      {[](saved::Space& space) { space.stageSeconds.front() = NAN; }, "the stages' times"},
+  };
+  for (const auto& [alter, part] : cases) {
+    EXPECT_EQ(loadError(fileWithSpaceAltered(dir, bytes, alter)), "inconsistent saved free space at " + part);
+  }
+}
+
+// A list's length that the bytes left could hold as bytes but not as its numbers
+// (the last list, the graph's unbounded runs, claiming four times its numbers) is
+// refused before the list is made.
+TEST(SavedSpace, AListLongerThanItsNumbersIsRefused) {
+  TempDir dir;
+  const std::string bytes = savedBytes(dir);
+  std::string payload = payloadOf(bytes);
+  const std::size_t numbers = spaceOf(bytes).graph.unboundedRuns.size();
+  ASSERT_GT(numbers, 0u);
+  const std::size_t countAt = payload.size() - 4 * numbers - 8;
+  ASSERT_EQ(static_cast<unsigned char>(payload[countAt]), numbers & 0xff);
+  putUint64(payload, countAt, 4 * numbers);
+  const std::string file = dir.file("longer.fspace");
+  write(file, savedSpaceFileAround(payload));
+  EXPECT_EQ(loadError(file), "damaged: a list longer than the rest of the file");
 }
 
 // A function's exact coefficients are decoded when first needed: a coefficient

@@ -17,10 +17,11 @@
 #include <boost/archive/impl/basic_binary_iarchive.ipp>
 #include <boost/archive/impl/basic_binary_iprimitive.ipp>
 #include <cmath>
-#include <cstring>
 #include <memory>
 #include <new>
+#include <sstream>
 #include <string_view>
+#include <type_traits>
 #include <unordered_map>
 
 #include "every_core.h"
@@ -41,10 +42,10 @@ class DamagedPart : public std::runtime_error {
 };
 
 /// Boost's binary input archive (same format), except that the length of a text or
-/// a list is checked against the bytes left in the payload before any memory is set
-/// aside for it (every item takes at least a byte): a checksum can be valid for
-/// altered data, and a damaged length would have the loader allocate and fill up to
-/// the whole memory of the machine.
+/// a list of numbers is checked against the bytes left in the payload before any
+/// memory is set aside for it (the bytes it claims must be there): a checksum can be
+/// valid for altered data, and a damaged length would have the loader allocate and
+/// fill up to the whole memory of the machine.
 class CheckedBinaryIArchive
     : public boost::archive::binary_iarchive_impl<CheckedBinaryIArchive, char, std::char_traits<char>> {
   using Base = boost::archive::binary_iarchive_impl<CheckedBinaryIArchive, char, std::char_traits<char>>;
@@ -82,6 +83,21 @@ class CheckedBinaryIArchive
   void load_override(boost::serialization::collection_size_type& count) {
     Base::load_override(count);
     if (count > bytesLeft()) throw DamagedPart("a list longer than the rest of the file");
+  }
+  /// A list of numbers, read as Boost's serialization of a vector reads it (its
+  /// length, an item version in archives of library versions 4 and 5, then the
+  /// numbers as one block), its bytes checked before the list is made.
+  template <class T, std::enable_if_t<std::is_arithmetic_v<T>, int> = 0>
+  void load_override(std::vector<T>& list) {
+    boost::serialization::collection_size_type count;
+    load_override(count);
+    if (count > bytesLeft() / sizeof(T)) throw DamagedPart("a list longer than the rest of the file");
+    if (BOOST_SERIALIZATION_VECTOR_VERSIONED(get_library_version())) {
+      unsigned int itemVersion = 0;
+      load(itemVersion);
+    }
+    list.resize(count);
+    if (count > 0) load_binary(list.data(), count * sizeof(T));
   }
 
  private:
@@ -186,14 +202,6 @@ Rational rationalAt(std::string_view bytes, std::size_t& at) {
   return Rational(negative ? mpz_int(-numerator) : numerator, denominator);
 }
 
-/// A text holding exactly one rational.
-Rational rationalOf(const std::string& bytes) {
-  std::size_t at = 0;
-  const Rational value = rationalAt(bytes, at);
-  if (at != bytes.size()) throw DamagedPart("a number");
-  return value;
-}
-
 double finite(double value) {
   if (!std::isfinite(value)) throw DamagedPart("a coordinate");
   return value;
@@ -238,6 +246,17 @@ class SavedPolynomials final : public AngleFunction::ExactSource {
   std::uint32_t chart0Coefficients_;
 };
 
+/// The sum of `counts`, or `limit + 1` once it passes `limit` (a damaged count must
+/// not wrap the sum around to a size that fits).
+std::uint64_t sumUpTo(const std::vector<std::uint32_t>& counts, std::uint64_t limit) {
+  std::uint64_t sum = 0;
+  for (std::uint32_t count : counts) {
+    sum += count;
+    if (sum > limit) return limit + 1;
+  }
+  return sum;
+}
+
 /// Frees a part of the decoded payload once it is read, so that the memory is used
 /// again by what is built from the next parts (fresh pages cost the kernel's zeroing).
 template <class T>
@@ -271,8 +290,7 @@ class AngleTable {
     const bool doubleEnds = root.lo == Rational(angle.lower()) && root.hi == Rational(angle.upper());
     if (!doubleEnds || (angle.isRational() && angle.lower() != angle.upper())) {
       angles.exactAngles.push_back(found->second);
-      angles.exactLower.push_back(bytesOf(root.lo));
-      angles.exactUpper.push_back(bytesOf(root.hi));
+      angles.exactIntervals += bytesOf(root.lo) + bytesOf(root.hi);
     }
     return found->second;
   }
@@ -318,19 +336,23 @@ class AngleTable {
   void readEveryAngle() {
     const saved::Angles& stored = space_.angles;
     const std::size_t count = stored.functions.size();
-    if (stored.charts.size() != count || stored.indices.size() != count || stored.enclosures.size() != 2 * count ||
-        stored.exactLower.size() != stored.exactAngles.size() ||
-        stored.exactUpper.size() != stored.exactAngles.size()) {
+    if (stored.charts.size() != count || stored.indices.size() != count || stored.enclosures.size() != 2 * count) {
       throw DamagedPart("the angles");
     }
     prepareFunctions();
     read_.reserve(count);
-    std::size_t exact = 0;
+    std::size_t exact = 0, at = 0;  // the next angle with an exact interval, and where that interval starts
     for (std::size_t i = 0; i < count; ++i) {
-      const bool hasExact = exact < stored.exactAngles.size() && stored.exactAngles[exact] == i;
-      read_.push_back(readAngle(i, hasExact ? std::optional<std::size_t>(exact++) : std::nullopt));
+      std::optional<IsolatingInterval> root;
+      if (exact < stored.exactAngles.size() && stored.exactAngles[exact] == i) {
+        root = IsolatingInterval{rationalAt(stored.exactIntervals, at), rationalAt(stored.exactIntervals, at)};
+        ++exact;
+      }
+      read_.push_back(readAngle(i, root));
     }
-    if (exact != stored.exactAngles.size()) throw DamagedPart("an angle's exact interval");
+    if (exact != stored.exactAngles.size() || at != stored.exactIntervals.size()) {
+      throw DamagedPart("an angle's exact interval");
+    }
     release(space_.angles);
     release(space_.functions);
     release(firstCoefficient_);
@@ -389,6 +411,7 @@ class AngleTable {
       firstCoefficient_.push_back(coefficients);
       firstKey_.push_back(keys);
       coefficients += std::uint64_t(stored.coefficientCounts[2 * i]) + stored.coefficientCounts[2 * i + 1];
+      if (coefficients > stored.enclosures.size()) throw DamagedPart("the functions");  // before it could wrap
       if (stored.keyed[i] > 1) throw DamagedPart("a function's key");
       keys += stored.keyed[i] * AngleFunction::RootKey().size();
       if (stored.exactEnds[i] < exactEnd) throw DamagedPart("a function's coefficients");
@@ -435,25 +458,32 @@ class AngleTable {
         key, std::make_unique<SavedPolynomials>(file_, exact_, begin, end, chart0));
   }
 
-  /// The table's angle at `index`, with the exact interval at `exact` if any.
-  AlgebraicAngle readAngle(std::size_t index, std::optional<std::size_t> exact) {
+  /// The table's angle at `index`, with its exact isolating interval if it has one.
+  AlgebraicAngle readAngle(std::size_t index, const std::optional<IsolatingInterval>& exact) {
     const saved::Angles& stored = space_.angles;
     const std::int32_t function = stored.functions[index], rootIndex = stored.indices[index];
     const int chart = stored.charts[index];
     const double lower = stored.enclosures[2 * index], upper = stored.enclosures[2 * index + 1];
-    if (chart > 1 || rootIndex < -1 || !(lower <= upper) ||
-        (!exact && function < 0 && (lower != upper || !(std::abs(lower) <= 1)))) {
+    if (chart > 1 || !std::isfinite(lower) || !std::isfinite(upper) || !(lower <= upper)) {
       throw DamagedPart("an angle");
     }
-    if (!exact && function < 0) return AlgebraicAngle::rational(chart, lower);
-    if (!exact) return AlgebraicAngle(this->function(function), chart, lower, upper, rootIndex);
-    const IsolatingInterval root{rationalOf(stored.exactLower[*exact]), rationalOf(stored.exactUpper[*exact])};
-    if (root.hi < root.lo) throw DamagedPart("an angle");
     if (function < 0) {
-      if (root.lo != root.hi) throw DamagedPart("a rational angle with an interval");
-      return AlgebraicAngle::rational(chart, root.lo);
+      // A rational angle: t in [-1, 1], one value.
+      const bool oneDouble = lower == upper && std::abs(lower) <= 1;
+      if (!exact && !oneDouble) throw DamagedPart("an angle");
+      if (!exact) return AlgebraicAngle::rational(chart, lower);
+      if (exact->lo != exact->hi) throw DamagedPart("a rational angle with an interval");
+      if (exact->lo < -1 || exact->lo > 1) throw DamagedPart("an angle");
+      return AlgebraicAngle::rational(chart, exact->lo);
     }
-    return AlgebraicAngle(this->function(function), chart, root, rootIndex);
+    std::shared_ptr<const AngleFunction> of = this->function(function);
+    // A root's place among the chart's roots, fewer than its coefficients (or unknown).
+    if (rootIndex < -1 || rootIndex >= static_cast<std::int64_t>(of->approximate(chart).coefficients().size())) {
+      throw DamagedPart("an angle");
+    }
+    if (!exact) return AlgebraicAngle(std::move(of), chart, lower, upper, rootIndex);
+    if (exact->hi < exact->lo) throw DamagedPart("an angle");
+    return AlgebraicAngle(std::move(of), chart, *exact, rootIndex);
   }
 
   /// What identifies an angle of the table (see add).
@@ -492,8 +522,7 @@ class AngleTable {
 class AngleSetReader {
  public:
   AngleSetReader(const saved::AngleSets& sets, const AngleTable& angles) : sets_(sets), angles_(angles) {
-    std::uint64_t arcs = 0;
-    for (std::uint32_t count : sets.arcCounts) arcs += count;
+    const std::uint64_t arcs = sumUpTo(sets.arcCounts, sets.arcs.size() / 3);
     if (sets.fullCircle.size() != sets.arcCounts.size() || 3 * arcs != sets.arcs.size()) {
       throw DamagedPart("an angle set's arcs");
     }
@@ -661,6 +690,8 @@ std::vector<PatchVertex> verticesOf(const saved::Vertices& stored, const AngleTa
   std::vector<PatchVertex> vertices;
   vertices.reserve(count);
   for (std::size_t i = 0; i < count; ++i) {
+    // The place of the patch that crosses the other two's curve, if one does.
+    if (stored.crossings[i] < -1 || stored.crossings[i] > 2) throw DamagedPart("a vertex");
     vertices.push_back({{stored.patches[3 * i], stored.patches[3 * i + 1], stored.patches[3 * i + 2]},
                         angles.angle(stored.angles[i]),
                         stored.crossings[i]});
@@ -682,9 +713,8 @@ void addSubdivision(const PatchSubdivision& subdivision, AngleTable& angles, sav
 
 std::vector<PatchSubdivision> subdivisionsOf(const saved::Subdivisions& stored, const AngleTable& angles) {
   const std::size_t patches = stored.faceCounts.size();
-  std::uint64_t slabs = 0, curves = 0;
-  for (std::uint32_t count : stored.slabCounts) slabs += count;
-  for (std::uint32_t count : stored.curveCounts) curves += count;
+  const std::uint64_t slabs = sumUpTo(stored.slabCounts, stored.curveCounts.size());
+  const std::uint64_t curves = sumUpTo(stored.curveCounts, stored.curves.size());
   if (stored.slabCounts.size() != patches || stored.curveCounts.size() != slabs ||
       stored.slabAngles.size() != 3 * slabs || stored.curves.size() != curves ||
       stored.faces.size() != curves + slabs) {
@@ -783,7 +813,11 @@ CellGraph::Parts graphOf(const saved::Graph& stored, const AngleTable& angles) {
     node.lastInterval = stored.nodes[4 * i + 2];
     node.sample = angles.angle(stored.nodes[4 * i + 3]);
     node.point = {finite(stored.nodeGeometry[6 * i]), finite(stored.nodeGeometry[6 * i + 1])};
-    std::copy_n(stored.nodeGeometry.begin() + 6 * i + 2, 4, node.box.begin());
+    // A node of the unbounded cell may have an unbounded box, never an undefined one.
+    for (int k = 0; k < 4; ++k) {
+      node.box[k] = stored.nodeGeometry[6 * i + 2 + k];
+      if (std::isnan(node.box[k])) throw DamagedPart("a node's box");
+    }
     graph.nodes.push_back(node);
   }
   if (stored.edges.size() % 3 != 0) throw DamagedPart("the graph's edges");
@@ -828,10 +862,9 @@ saved::Space savedSpace(const PerturbedMeshes& meshes, const Arrangement& arrang
   for (const PatchSubdivision& subdivision : arrangement.subdivisions) {
     addSubdivision(subdivision, angles, space.subdivisions);
   }
-  for (const SubFaceGluing* gluing :
-       {&arrangement.acrossCurves, &arrangement.aroundSpirals, &arrangement.acrossHorizontalEdges}) {
-    space.gluings.push_back(savedGluing(*gluing, angles));
-  }
+  space.acrossCurves = savedGluing(arrangement.acrossCurves, angles);
+  space.aroundSpirals = savedGluing(arrangement.aroundSpirals, angles);
+  space.acrossHorizontalEdges = savedGluing(arrangement.acrossHorizontalEdges, angles);
   for (std::uint32_t shell = 0; shell < sides.size(); ++shell) {
     space.shellSides.push_back(static_cast<std::uint8_t>(sides[shell]));
     const std::optional<std::uint32_t> cell = cells.cellOfShell(shell);
@@ -839,7 +872,7 @@ saved::Space savedSpace(const PerturbedMeshes& meshes, const Arrangement& arrang
   }
   space.cellCount = static_cast<std::uint32_t>(cells.count());
   for (const StageTime& stage : stageTimes) {
-    space.stageNames.push_back(stage.stage);
+    space.stageNames += stage.stage + '\n';
     space.stageSeconds.push_back(stage.seconds);
   }
   space.graph = savedGraph(graph.parts(), angles);
@@ -1044,10 +1077,9 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path, LoadCheck ch
     arrangement.vertices = verticesOf(space.vertices, angles);
     arrangement.subdivisions = subdivisionsOf(space.subdivisions, angles);
     release(space.subdivisions);
-    if (space.gluings.size() != 3) throw DamagedPart("gluings");
-    arrangement.acrossCurves = gluingOf(space.gluings[0], angles);
-    arrangement.aroundSpirals = gluingOf(space.gluings[1], angles);
-    arrangement.acrossHorizontalEdges = gluingOf(space.gluings[2], angles);
+    arrangement.acrossCurves = gluingOf(space.acrossCurves, angles);
+    arrangement.aroundSpirals = gluingOf(space.aroundSpirals, angles);
+    arrangement.acrossHorizontalEdges = gluingOf(space.acrossHorizontalEdges, angles);
     std::vector<std::optional<std::uint32_t>> cellOfShell;
     for (std::size_t shell = 0; shell < space.shellSides.size(); ++shell) {
       if (space.shellSides[shell] > static_cast<std::uint8_t>(ShellSide::Open)) throw DamagedPart("a shell");
@@ -1060,8 +1092,12 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path, LoadCheck ch
                                                            &arrangement.acrossHorizontalEdges});
     if (arrangement.shells.count() != impl->sides.size()) throw DamagedPart("the shells' count");
     impl->cells = std::make_unique<FreeCells>(std::move(cellOfShell), space.cellCount);
-    for (std::size_t i = 0; i < space.stageNames.size() && i < space.stageSeconds.size(); ++i) {
-      impl->stageTimes.push_back({space.stageNames[i], space.stageSeconds[i]});
+    std::istringstream stageNames(space.stageNames);
+    for (std::string name; std::getline(stageNames, name);) {
+      if (impl->stageTimes.size() == space.stageSeconds.size()) throw DamagedPart("the stages' times");
+      const double seconds = space.stageSeconds[impl->stageTimes.size()];
+      if (!std::isfinite(seconds)) throw DamagedPart("the stages' times");
+      impl->stageTimes.push_back({name, seconds});
     }
     impl->finish();
     try {

@@ -5,8 +5,9 @@
 // table of angles (each distinct angle once, by its double enclosure where that
 // isolates it, a rational angle by its t where that is a double) whose functions are
 // stored by the double enclosures of their exact coefficients and those coefficients.
-// Each kind of part is a few lists of numbers for all its items (the archive reads
-// a list of numbers as one block), not a record per item.
+// Each kind of part is a few lists of numbers (or a text) for all its items, not a
+// record per item: the archive reads a list of numbers as one block, and the loader
+// checks each list's length against the bytes left before it sets memory aside.
 
 #include <cstdint>
 #include <string>
@@ -17,6 +18,8 @@
 #include <boost/serialization/tracking.hpp>
 #include <boost/serialization/vector.hpp>
 
+// clang-format would read `archive & a & b` as declarations.
+// clang-format off
 namespace freespace::saved {
 
 /// The functions, one after another: the double enclosures of their exact
@@ -32,7 +35,7 @@ struct Functions {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive& coefficientCounts& enclosures& keyed& keys& exactEnds& exact;
+    archive & coefficientCounts & enclosures & keyed & keys & exactEnds & exact;
   }
 };
 
@@ -47,11 +50,11 @@ struct Angles {
   std::vector<std::int32_t> indices;
   std::vector<double> enclosures;          // lower, upper per angle
   std::vector<std::uint32_t> exactAngles;  // the angles with an exact interval, increasing
-  std::vector<std::string> exactLower, exactUpper;
+  std::string exactIntervals;              // per such angle: its lower, then upper end, as rationals
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive& functions& charts& indices& enclosures& exactAngles& exactLower& exactUpper;
+    archive & functions & charts & indices & enclosures & exactAngles & exactIntervals;
   }
 };
 
@@ -63,7 +66,7 @@ struct AngleSets {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive& fullCircle& arcCounts& arcs;
+    archive & fullCircle & arcCounts & arcs;
   }
 };
 
@@ -73,7 +76,7 @@ struct Mesh {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive& vertices& triangles;
+    archive & vertices & triangles;
   }
 };
 
@@ -88,7 +91,7 @@ struct Patches {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive& contacts& ranges& segments& lineTags& linePoints& spiralRobotVertices& spiralPoints;
+    archive & contacts & ranges & segments & lineTags & linePoints & spiralRobotVertices & spiralPoints;
   }
 };
 
@@ -99,7 +102,7 @@ struct Curves {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive& patches& angles& ends;
+    archive & patches & angles & ends;
   }
 };
 
@@ -110,7 +113,7 @@ struct Overlaps {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive& patches& angles& reachesEnd;
+    archive & patches & angles & reachesEnd;
   }
 };
 
@@ -121,7 +124,7 @@ struct Vertices {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive& patches& angles& crossings;
+    archive & patches & angles & crossings;
   }
 };
 
@@ -136,7 +139,7 @@ struct Subdivisions {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive& faceCounts& slabCounts& slabAngles& curveCounts& curves& faces;
+    archive & faceCounts & slabCounts & slabAngles & curveCounts & curves & faces;
   }
 };
 
@@ -146,7 +149,7 @@ struct Gluing {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive& glues& unmatched;
+    archive & glues & unmatched;
   }
 };
 
@@ -162,7 +165,7 @@ struct Graph {
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive& criticalAngles& nodes& nodeGeometry& edges& runCounts& runs& unboundedRuns;
+    archive & criticalAngles & nodes & nodeGeometry & edges & runCounts & runs & unboundedRuns;
   }
 };
 
@@ -179,22 +182,24 @@ struct Space {
   Overlaps overlaps;
   Vertices vertices;
   Subdivisions subdivisions;
-  std::vector<Gluing> gluings;            // across curves, around spirals, across horizontal edges
+  Gluing acrossCurves, aroundSpirals, acrossHorizontalEdges;
   std::vector<std::uint8_t> shellSides;   // ShellSide per shell
   std::vector<std::int32_t> cellOfShell;  // -1: none
   std::uint32_t cellCount = 0;
-  std::vector<std::string> stageNames;
+  std::string stageNames;  // one per line
   std::vector<double> stageSeconds;
   Graph graph;
 
   template <class Archive>
   void serialize(Archive& archive, unsigned) {
-    archive& robot& world& perturbed& seed& relativeSize& absoluteSize& scale& functions& angles& patches& curves&
-        overlaps& vertices& subdivisions& gluings& shellSides& cellOfShell& cellCount& stageNames& stageSeconds& graph;
+    archive & robot & world & perturbed & seed & relativeSize & absoluteSize & scale & functions & angles & patches &
+        curves & overlaps & vertices & subdivisions & acrossCurves & aroundSpirals & acrossHorizontalEdges &
+        shellSides & cellOfShell & cellCount & stageNames & stageSeconds & graph;
   }
 };
 
 }  // namespace freespace::saved
+// clang-format on
 
 // Plain records: no class information or object tracking in the archive (Boost would
 // otherwise look each record's type up by name as it reads it).
