@@ -920,7 +920,7 @@ std::string_view checkedPayload(const MappedInputFile& file, const std::string& 
 
 /// An output buffer that passes what is written to `out` a block at a time, counting
 /// and hashing it on the way (XXH3, 64 bits). A failed write of `out` is left in
-/// `out`'s state for its writer to find.
+/// `out`'s state for its writer to find; nothing more is written to it then.
 class HashingBuffer : public std::streambuf {
  public:
   explicit HashingBuffer(std::ostream& out) : out_(out), state_(XXH3_createState(), XXH3_freeState) {
@@ -953,7 +953,7 @@ class HashingBuffer : public std::streambuf {
   void pass() {
     const std::size_t held = static_cast<std::size_t>(pptr() - pbase());
     XXH3_64bits_update(state_.get(), pbase(), held);
-    out_.write(pbase(), static_cast<std::streamsize>(held));
+    if (out_) out_.write(pbase(), static_cast<std::streamsize>(held));  // else no use writing on
     size_ += held;
     setp(block_.data(), block_.data() + block_.size());
   }
