@@ -55,9 +55,9 @@ inline void setRoundingMode(int mode) { std::fesetround(mode); }
 /// of x * y is -max((-x_i) * y_j). Multiplication and division take the extremes of
 /// the four end-point products branch-free; on predicate streams, whose operand
 /// signs are unpredictable, that is about twice as fast as a case analysis on signs
-/// (an FFF determinant: 63 ns against Boost.Interval's 138). Arithmetic is valid only while a RoundingScope
-/// is alive on the current thread. A NaN anywhere makes the whole interval NaN,
-/// whose sign is never certain.
+/// (an FFF determinant: 63 ns against Boost.Interval's 138). Arithmetic is valid only
+/// while a RoundingScope is alive on the current thread. A NaN anywhere makes the
+/// whole interval NaN, whose sign is never certain.
 class Interval {
  public:
   Interval() = default;
