@@ -161,9 +161,9 @@ TEST(SavedSpace, BadFilesAreClearErrors) {
   write(other, "v 0 0 0\n");
   EXPECT_NE(loadError(other).find("not a saved free space"), std::string::npos);
   std::string version = bytes;
-  version.replace(bytes.find('\n') - 1, 1, "9");
+  version.replace(bytes.find('\n') - 1, 1, "8");
   write(other, version);
-  EXPECT_NE(loadError(other).find("format 9; this build reads format 8"), std::string::npos);
+  EXPECT_NE(loadError(other).find("format 8; this build reads format 9"), std::string::npos);
   write(other, bytes.substr(0, bytes.size() / 2));
   EXPECT_NE(loadError(other).find("damaged"), std::string::npos);
   std::string altered = bytes;
@@ -330,8 +330,9 @@ TEST(SavedSpace, ListsOfAPartThatDoNotFitAreRefusedNamingThePart) {
 }
 
 // Values that the structure would trip over later (an infinite enclosure a rational
-// is made from, a root's place that sizes a table, a vertex's crossing that indexes
-// its three patches, an undefined node box, a stage's time) are refused at loading.
+// is made from, a root outside its chart, a root's place that sizes a table, a
+// vertex's crossing that indexes its three patches, an undefined node box, a stage's
+// time or one time too many) are refused at loading.
 TEST(SavedSpace, ValuesUsedLaterAreCheckedAtLoading) {
   TempDir dir;
   const std::string bytes = savedBytes(dir);
@@ -351,6 +352,8 @@ TEST(SavedSpace, ValuesUsedLaterAreCheckedAtLoading) {
        "a vertex"},
       {[](saved::Space& space) { space.graph.nodeGeometry[2] = NAN; }, "a node's box"},
       {[](saved::Space& space) { space.stageSeconds.front() = NAN; }, "the stages' times"},
+      {[](saved::Space& space) { space.stageSeconds.push_back(1); }, "the stages' times"},
+      {[&](saved::Space& space) { space.angles.enclosures[2 * firstRoot(space) + 1] = 2; }, "an angle"},
   };
   for (const auto& [alter, part] : cases) {
     EXPECT_EQ(loadError(fileWithSpaceAltered(dir, bytes, alter)), "inconsistent saved free space at " + part);

@@ -80,17 +80,14 @@ class CheckedBinaryIArchive
   void load_override(T& value) {
     Base::load_override(value);
   }
-  void load_override(boost::serialization::collection_size_type& count) {
-    Base::load_override(count);
-    if (count > bytesLeft()) throw DamagedPart("a list longer than the rest of the file");
-  }
-  /// A list of numbers, read as Boost's serialization of a vector reads it (its
-  /// length, an item version in archives of library versions 4 and 5, then the
-  /// numbers as one block), its bytes checked before the list is made.
-  template <class T, std::enable_if_t<std::is_arithmetic_v<T>, int> = 0>
+  /// A list of numbers (every list of a saved space), read as Boost's serialization
+  /// of a vector reads it (its length, an item version in archives of library
+  /// versions 4 and 5, then the numbers as one block), its bytes checked before the
+  /// list is made.
+  template <class T, std::enable_if_t<std::is_arithmetic_v<T> && !std::is_same_v<T, bool>, int> = 0>
   void load_override(std::vector<T>& list) {
     boost::serialization::collection_size_type count;
-    load_override(count);
+    Base::load_override(count);
     if (count > bytesLeft() / sizeof(T)) throw DamagedPart("a list longer than the rest of the file");
     if (BOOST_SERIALIZATION_VECTOR_VERSIONED(get_library_version())) {
       unsigned int itemVersion = 0;
@@ -122,9 +119,6 @@ class PayloadBuffer : public std::streambuf {
 
 }  // namespace freespace
 
-// Vectors of numbers are read as one block, as Boost's binary archive writes them.
-BOOST_SERIALIZATION_USE_ARRAY_OPTIMIZATION(freespace::CheckedBinaryIArchive)
-
 template class boost::archive::basic_binary_iprimitive<freespace::CheckedBinaryIArchive, char, std::char_traits<char>>;
 template class boost::archive::basic_binary_iarchive<freespace::CheckedBinaryIArchive>;
 template class boost::archive::binary_iarchive_impl<freespace::CheckedBinaryIArchive, char, std::char_traits<char>>;
@@ -135,7 +129,7 @@ namespace freespace {
 namespace {
 
 const std::string kHeader = "freespace saved free space, format ";
-constexpr int kFormatVersion = 8;
+constexpr int kFormatVersion = 9;
 
 // Rationals as bytes: a sign byte (0 or 1), then the numerator's magnitude and the
 // denominator, each as a 4-byte length (least significant byte first) and its bytes
@@ -476,6 +470,8 @@ class AngleTable {
       if (exact->lo < -1 || exact->lo > 1) throw DamagedPart("an angle");
       return AlgebraicAngle::rational(chart, exact->lo);
     }
+    // A root's enclosures lie in its chart's t in [-1, 1], where roots are isolated.
+    if (lower < -1 || upper > 1 || (exact && (exact->lo < -1 || exact->hi > 1))) throw DamagedPart("an angle");
     std::shared_ptr<const AngleFunction> of = this->function(function);
     // A root's place among the chart's roots, fewer than its coefficients (or unknown).
     if (rootIndex < -1 || rootIndex >= static_cast<std::int64_t>(of->approximate(chart).coefficients().size())) {
@@ -1099,6 +1095,7 @@ std::unique_ptr<FreeSpace> FreeSpace::load(const std::string& path, LoadCheck ch
       if (!std::isfinite(seconds)) throw DamagedPart("the stages' times");
       impl->stageTimes.push_back({name, seconds});
     }
+    if (impl->stageTimes.size() != space.stageSeconds.size()) throw DamagedPart("the stages' times");
     impl->finish();
     try {
       impl->graph =
