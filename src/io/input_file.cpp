@@ -6,18 +6,25 @@
 #include <system_error>
 
 #include "freespace/input_error.h"
+#include "regular_file.h"
 
 namespace freespace {
 
-std::ifstream openInputFile(const std::string& path, std::ios::openmode mode) {
-  struct stat info {};
-  if (::stat(path.c_str(), &info) != 0) {
-    throw InputError(path, "cannot open file: " + std::generic_category().message(errno));
-  }
+void throwCannotOpen(const std::string& path, int error) {
+  throw InputError(path, "cannot open file: " + std::generic_category().message(error));
+}
+
+void requireRegularFile(const std::string& path, const struct stat& info) {
   if (S_ISDIR(info.st_mode)) throw InputError(path, "cannot open file: it is a directory");
   if (!S_ISREG(info.st_mode)) throw InputError(path, "cannot open file: not a regular file (a pipe or a device)");
+}
+
+std::ifstream openInputFile(const std::string& path, std::ios::openmode mode) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) throwCannotOpen(path, errno);
+  requireRegularFile(path, info);
   std::ifstream file(path, mode);
-  if (!file) throw InputError(path, "cannot open file: " + std::generic_category().message(errno));
+  if (!file) throwCannotOpen(path, errno);
   return file;
 }
 

@@ -9,12 +9,11 @@
 #include <system_error>
 
 #include "freespace/input_error.h"
+#include "regular_file.h"
 
 namespace freespace {
 
 namespace {
-
-std::string reason(int error) { return "cannot open file: " + std::generic_category().message(error); }
 
 /// Closes the descriptor when the mapping is made or fails (the mapping outlives it).
 class Descriptor {
@@ -36,11 +35,10 @@ class Descriptor {
 MappedInputFile::MappedInputFile(const std::string& path) {
   // O_NONBLOCK: opening a FIFO must not wait for a writer before it is refused below.
   const Descriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK));
-  if (file.get() < 0) throw InputError(path, reason(errno));
+  if (file.get() < 0) throwCannotOpen(path, errno);
   struct stat info {};
-  if (::fstat(file.get(), &info) != 0) throw InputError(path, reason(errno));
-  if (S_ISDIR(info.st_mode)) throw InputError(path, "cannot open file: it is a directory");
-  if (!S_ISREG(info.st_mode)) throw InputError(path, "cannot open file: not a regular file (a pipe or a device)");
+  if (::fstat(file.get(), &info) != 0) throwCannotOpen(path, errno);
+  requireRegularFile(path, info);
   size_ = static_cast<std::size_t>(info.st_size);
   if (size_ == 0) return;  // nothing to map
   void* mapped = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, file.get(), 0);

@@ -458,27 +458,24 @@ class AngleTable {
     const std::int32_t function = stored.functions[index], rootIndex = stored.indices[index];
     const int chart = stored.charts[index];
     const double lower = stored.enclosures[2 * index], upper = stored.enclosures[2 * index + 1];
-    if (chart > 1 || !std::isfinite(lower) || !std::isfinite(upper) || !(lower <= upper)) {
+    // Every angle's enclosures lie in its chart's t in [-1, 1] (where roots are isolated),
+    // ordered: NaN, infinite or larger ends would reach GMP, which raises SIGFPE on them.
+    if (chart > 1 || !(-1 <= lower && lower <= upper && upper <= 1) ||
+        (exact && !(-1 <= exact->lo && exact->lo <= exact->hi && exact->hi <= 1))) {
       throw DamagedPart("an angle");
     }
-    if (function < 0) {
-      // A rational angle: t in [-1, 1], one value.
-      const bool oneDouble = lower == upper && std::abs(lower) <= 1;
-      if (!exact && !oneDouble) throw DamagedPart("an angle");
+    if (function < 0) {  // a rational angle: one value of t
+      if (!exact && lower != upper) throw DamagedPart("an angle");
       if (!exact) return AlgebraicAngle::rational(chart, lower);
       if (exact->lo != exact->hi) throw DamagedPart("a rational angle with an interval");
-      if (exact->lo < -1 || exact->lo > 1) throw DamagedPart("an angle");
       return AlgebraicAngle::rational(chart, exact->lo);
     }
-    // A root's enclosures lie in its chart's t in [-1, 1], where roots are isolated.
-    if (lower < -1 || upper > 1 || (exact && (exact->lo < -1 || exact->hi > 1))) throw DamagedPart("an angle");
     std::shared_ptr<const AngleFunction> of = this->function(function);
     // A root's place among the chart's roots, fewer than its coefficients (or unknown).
     if (rootIndex < -1 || rootIndex >= static_cast<std::int64_t>(of->approximate(chart).coefficients().size())) {
       throw DamagedPart("an angle");
     }
     if (!exact) return AlgebraicAngle(std::move(of), chart, lower, upper, rootIndex);
-    if (exact->hi < exact->lo) throw DamagedPart("an angle");
     return AlgebraicAngle(std::move(of), chart, *exact, rootIndex);
   }
 
